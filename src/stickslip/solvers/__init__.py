@@ -1,1 +1,24 @@
+"""Layer 2: integration methods behind one interface, ``solve(model, t_end, t_eval) -> Trajectory``."""
 
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
+from .exact import ExactSwitchSolver
+from .sign_rk import SignRungeKutta
+
+#: Method registry: config ``solver`` name -> class. Later methods register here.
+METHODS = {"exact": ExactSwitchSolver, "sign_rk": SignRungeKutta}
+
+
+def make_solver(name: str, **settings):
+    """Instantiate a method by its config name; unknown names/settings name the key in the error."""
+    from ..model.params import ParameterError
+
+    if name not in METHODS:
+        raise ParameterError(f"solver: {name!r} is not one of {sorted(METHODS)}")
+    try:
+        return METHODS[name](**settings)
+    except TypeError as exc:
+        raise ParameterError(f"solver settings for {name!r}: {exc}") from None
+
+
+__all__ = ["SLIP_BACKWARD", "SLIP_FORWARD", "STICK", "SolverError", "SolverStats", "Trajectory",
+           "ExactSwitchSolver", "SignRungeKutta", "METHODS", "make_solver"]

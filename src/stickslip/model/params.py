@@ -1,0 +1,129 @@
+"""Parameters of the mass-on-moving-belt scene (paper Section 2-7, Fig. 1).
+
+All lengths are in mm and times in s, as the paper states them. The paper's units are not mutually
+consistent (M in kg, K in N/mm, C in "N.mm/sec", N in N); see :func:`effective_mass` for the two
+readings this project supports.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import MISSING, asdict, dataclass, fields, replace
+
+#: How the paper's numbers are read. ``as_given``: every number is used as printed in one equation,
+#: as if the units were consistent (this is what reproduces the reported sub-hertz frequencies).
+#: ``si``: M [kg] is converted so that forces are in N and lengths in mm (mass coefficient M*1e-3
+#: N s^2/mm, C read as N s/mm), which puts the natural frequency at ~11 Hz.
+UNIT_READINGS = ("as_given", "si")
+
+
+class ParameterError(ValueError):
+    """A parameter is missing, non-finite or non-physical. The message names the key."""
+
+
+@dataclass(frozen=True)
+class BeltParams:
+    """Mass on a moving belt, the paper's 1-DOF stick-slip model."""
+
+    mass: float
+    """M, mass [kg] (paper: 1 kg)."""
+    stiffness: float
+    """K, spring stiffness [N/mm] (paper: 5 N/mm)."""
+    damping: float
+    """C, viscous damping [N s/mm] (paper prints "N.mm/sec"; 1.5)."""
+    mu_s: float
+    """Static friction coefficient [1] (paper: 0.5)."""
+    sigma: float
+    """Friction slope versus relative velocity [s/mm] (paper text 0.3, captions 0.5)."""
+    normal_force: float
+    """N, normal load [N] (paper: 10 N)."""
+    x0: float = 0.0
+    """Initial displacement [mm]."""
+    v0: float = 0.5
+    """Initial velocity [mm/s]."""
+    belt_velocity: float = 0.5
+    """Belt velocity V_b at t = 0 [mm/s]."""
+    belt_deceleration: float = 0.0
+    """Belt deceleration [mm/s^2]; the belt speed is max(V_b - d t, 0) (Section 6: 0.025)."""
+    units: str = "as_given"
+    """Unit reading, one of UNIT_READINGS."""
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name == "units":
+                if value not in UNIT_READINGS:
+                    raise ParameterError(f"units: {value!r} is not one of {UNIT_READINGS}")
+                continue
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                raise ParameterError(f"{f.name}: expected a number, got {type(value).__name__} {value!r}")
+            if not math.isfinite(value):
+                raise ParameterError(f"{f.name}: must be finite, got {value!r}")
+        for key in ("mass", "stiffness", "normal_force", "mu_s"):
+            if getattr(self, key) <= 0:
+                raise ParameterError(f"{key}: must be > 0, got {getattr(self, key)!r}")
+        for key in ("damping", "sigma", "belt_velocity", "belt_deceleration"):
+            if getattr(self, key) < 0:
+                raise ParameterError(f"{key}: must be >= 0, got {getattr(self, key)!r}")
+
+    @classmethod
+    def from_mapping(cls, values: dict) -> "BeltParams":
+        """Build from a config mapping; unknown keys are an error naming the key."""
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(values) - known)
+        if unknown:
+            raise ParameterError(f"{unknown[0]}: unknown parameter (known: {sorted(known)})")
+        missing = [f.name for f in fields(cls) if f.name not in values and f.default is MISSING]
+        if missing:
+            raise ParameterError(f"{missing[0]}: required parameter is missing")
+        return cls(**values)
+
+    def with_(self, **changes) -> "BeltParams":
+        return replace(self, **changes)
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+    @property
+    def effective_mass(self) -> float:
+        """Mass coefficient of the equation of motion in the chosen unit reading."""
+        return effective_mass(self.mass, self.units)
+
+    @property
+    def belt_stop_time(self) -> float:
+        """Time at which a decelerating belt comes to rest (inf for a constant belt)."""
+        if self.belt_deceleration == 0.0:
+            return math.inf
+        return self.belt_velocity / self.belt_deceleration
+
+    def belt_velocity_at(self, t):
+        """Belt speed V_b(t) [mm/s]: linear deceleration, then at rest."""
+        import numpy as np
+
+        return np.maximum(self.belt_velocity - self.belt_deceleration * np.asarray(t, dtype=float), 0.0)
+
+    def belt_acceleration_at(self, t):
+        """dV_b/dt [mm/s^2] (zero once the belt has stopped)."""
+        import numpy as np
+
+        t = np.asarray(t, dtype=float)
+        return np.where(t < self.belt_stop_time, -self.belt_deceleration, 0.0)
+
+
+def effective_mass(mass: float, units: str) -> float:
+    """Mass coefficient in an equation whose forces are in N and lengths in mm.
+
+    ``as_given`` uses the printed number; ``si`` converts kg to N s^2/mm (factor 1e-3).
+    """
+    if units == "as_given":
+        return mass
+    if units == "si":
+        return mass * 1e-3
+    raise ParameterError(f"units: {units!r} is not one of {UNIT_READINGS}")
+
+
+#: The paper's baseline (Section 3) with sigma as printed in the text.
+PAPER_BASELINE = BeltParams(
+    mass=1.0, stiffness=5.0, damping=1.5, mu_s=0.5, sigma=0.3, normal_force=10.0,
+    x0=0.0, v0=0.5, belt_velocity=0.5,
+)

@@ -1,0 +1,283 @@
+"""Exact event-driven (switch model) solver for the affine friction laws.
+
+Stick: the mass moves with the belt while the friction it needs stays inside the static limit
+(|D| <= |a|, see ``BeltModel.stick_demand``); D is quadratic in time during stick, so the release time is a
+closed-form root. Slip: a linear ODE with constant coefficients (``LinearSegment``); the return to
+v_r = 0 is bracketed on a grid of the closed form and refined with Brent's method to machine precision.
+Tangential returns (grazing) are caught at the local minima of |v_r|, so an orbit that touches the belt
+velocity without crossing it is not missed. The belt's stop (decelerating scene) is a scheduled event.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..model.equations import BeltModel
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
+from .linear import LinearSegment
+
+
+@dataclass(frozen=True)
+class StickMotion:
+    """The mass carried by the belt: x = x0 + vb0 tau + slope tau^2 / 2."""
+
+    x0: float
+    vb0: float
+    slope: float
+
+    def state(self, tau):
+        tau = np.asarray(tau, dtype=float)
+        return self.x0 + self.vb0 * tau + 0.5 * self.slope * tau * tau, self.vb0 + self.slope * tau + 0 * tau
+
+
+@dataclass(frozen=True)
+class Segment:
+    t0: float
+    t1: float
+    phase: int
+    motion: object  # LinearSegment | StickMotion
+
+    def state(self, t):
+        return self.motion.state(np.asarray(t, dtype=float) - self.t0)
+
+
+def first_exit_root(c0: float, c1: float, c2: float) -> float:
+    """First tau >= 0 at which g = c0 + c1 tau + c2 tau^2 (g(0) <= 0) becomes positive; inf if never."""
+    candidates = []
+    if c2 == 0.0:
+        if c1 != 0.0:
+            candidates.append(-c0 / c1)
+    else:
+        disc = c1 * c1 - 4.0 * c2 * c0
+        if disc >= 0.0:
+            sq = math.sqrt(disc)
+            q = -0.5 * (c1 + math.copysign(sq, c1)) if c1 != 0.0 else -0.5 * sq
+            roots = [q / c2] if q == 0.0 else [q / c2, c0 / q]
+            candidates.extend(roots)
+    exits = []
+    for r in candidates:
+        r = max(r, 0.0) if abs(r) <= 1e-300 else r
+        if r < 0.0:
+            continue
+        slope = c1 + 2.0 * c2 * r
+        if slope > 0.0 or (slope == 0.0 and c2 > 0.0):
+            exits.append(r)
+    if c0 == 0.0 and (c1 > 0.0 or (c1 == 0.0 and c2 > 0.0)):
+        exits.append(0.0)
+    return min(exits) if exits else math.inf
+
+
+@dataclass
+class ExactSwitchSolver:
+    """Reference solver; ``graze_tolerance`` is relative to the model's velocity scale."""
+
+    samples_per_period: int = 64
+    graze_tolerance: float = 1e-12
+    max_segments: int = 200_000
+    max_zero_length: int = 50
+    name: str = "exact"
+
+    @property
+    def settings(self) -> dict:
+        return {"samples_per_period": self.samples_per_period, "graze_tolerance": self.graze_tolerance}
+
+    # -- public ---------------------------------------------------------------------------------------
+    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        stats = SolverStats()
+        with Timer() as timer:
+            try:
+                segments = self.segments(model, t_end, stats)
+            except SolverError as exc:
+                stats.status, stats.message, stats.failures = "failed", str(exc), 1
+                segments = []
+        stats.cpu_time = timer.elapsed
+        if t_eval is None:
+            t_eval = np.linspace(0.0, t_end, 2001)
+        t_eval = np.asarray(t_eval, dtype=float)
+        x, v, phase = sample_segments(segments, t_eval)
+        table = np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3)
+        return Trajectory(
+            t=t_eval, x=x, v=v, phase=phase, belt_velocity=model.belt_velocity(t_eval), stats=stats,
+            method=self.name, settings=self.settings, segments=table,
+        )
+
+    def segments(self, model: BeltModel, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
+        stats = stats if stats is not None else SolverStats()
+        p = model.params
+        t, x, v = 0.0, float(p.x0), float(p.v0)
+        out: list[Segment] = []
+        zero_run = 0
+        mode = self._mode_from_state(model, t, x, v)
+        while t < t_end:
+            if len(out) >= self.max_segments:
+                raise SolverError(f"exact solver: more than {self.max_segments} segments before t={t_end}")
+            if mode == "contact":
+                mode = self._contact_decision(model, t, x)
+                stats.events += 1
+                continue
+            t_limit = min(t_end, p.belt_stop_time) if t < p.belt_stop_time else t_end
+            if mode == STICK:
+                seg, release = self._stick(model, t, x, t_limit)
+                next_mode = release if release is not None else "contact"
+            else:
+                seg, hit = self._slip(model, t, x, v, mode, t_limit)
+                next_mode = "contact" if hit else mode
+            stats.steps += 1
+            out.append(seg)
+            if seg.t1 - seg.t0 <= 1e-14 * max(1.0, abs(seg.t0)):
+                zero_run += 1
+                if zero_run > self.max_zero_length:
+                    raise SolverError(
+                        f"exact solver cannot proceed at t={t:.17g}, x={x:.17g}: "
+                        f"{zero_run} zero-length segments in a row"
+                    )
+            else:
+                zero_run = 0
+            t = seg.t1
+            x, v = (float(q) for q in seg.state(t))
+            if next_mode == "contact" or mode == STICK:
+                v = float(model.belt_velocity(t))  # snap to the belt: v_r is zero here by construction
+            if next_mode != "contact" and t >= p.belt_stop_time and seg.t0 < p.belt_stop_time:
+                next_mode = self._mode_from_state(model, t, x, v)  # belt just stopped: re-decide
+            mode = next_mode
+        return out
+
+    # -- pieces ---------------------------------------------------------------------------------------
+    @staticmethod
+    def _mode_from_state(model, t, x, v):
+        vr = v - float(model.belt_velocity(t))
+        if vr > 0:
+            return SLIP_FORWARD
+        if vr < 0:
+            return SLIP_BACKWARD
+        return "contact"
+
+    @staticmethod
+    def _contact_decision(model: BeltModel, t: float, x: float):
+        """Stick or the slip direction at v_r = 0 (Filippov's rule; sgn(0) = 0 where v_r = 0 repels)."""
+        a = model.friction.a
+        d = float(model.stick_demand(t, x))
+        if a < 0:  # attracting: stick while the demand fits the static limit
+            if d > -a:
+                return SLIP_BACKWARD
+            if d < a:
+                return SLIP_FORWARD
+            return STICK
+        if -a - d > 0:
+            return SLIP_FORWARD
+        if a - d < 0:
+            return SLIP_BACKWARD
+        return SLIP_BACKWARD if d > 0 else SLIP_FORWARD  # repelling: leave the way sgn(0)=0 accelerates
+
+    @staticmethod
+    def _stick(model: BeltModel, t0: float, x0: float, t_limit: float):
+        p = model.params
+        a_abs = abs(model.friction.a)
+        vb0 = float(model.belt_velocity(t0))
+        slope = float(p.belt_acceleration_at(t0))
+        motion = StickMotion(x0, vb0, slope)
+        d0 = float(model.stick_demand(t0, x0))
+        smooth = p.damping - model.friction.b - model.friction.kappa
+        d1 = smooth * slope + p.stiffness * vb0
+        d2 = 0.5 * p.stiffness * slope
+        up = first_exit_root(d0 - a_abs, d1, d2)
+        down = first_exit_root(-a_abs - d0, -d1, -d2)
+        tau = min(up, down)
+        if t0 + tau >= t_limit:
+            return Segment(t0, t_limit, STICK, motion), None
+        release = SLIP_BACKWARD if up <= down else SLIP_FORWARD
+        return Segment(t0, t0 + tau, STICK, motion), release
+
+    def _slip(self, model: BeltModel, t0: float, x0: float, v0: float, s: int, t_limit: float):
+        p = model.params
+        f = model.friction
+        m = model.mass
+        vb0 = float(model.belt_velocity(t0))
+        slope = float(p.belt_acceleration_at(t0))
+        seg = LinearSegment(m=m, c=model.slip_damping(), k=p.stiffness,
+                            g0=f.a * s + f.kappa * vb0, g1=f.kappa * slope, x0=x0, v0=v0)
+        tau_max = t_limit - t0
+
+        def gap(tau):  # s * v_r: positive while the slip lasts
+            return s * (seg.state(tau)[1] - (vb0 + slope * tau))
+
+        def gap_rate(tau):
+            return s * (seg.acceleration(tau) - slope)
+
+        vscale = max(abs(vb0), abs(f.a) / math.sqrt(p.stiffness * m), abs(v0), 1e-300)
+        tol = self.graze_tolerance * vscale
+        timescale = 2.0 * math.pi * math.sqrt(m / p.stiffness)
+        if seg._alpha != 0.0:
+            timescale = min(timescale, 2.0 * math.pi / abs(seg._alpha))
+        h = timescale / self.samples_per_period
+
+        # A slip that starts at v_r = 0 leaves it with zero gap: find a first positive sample.
+        start = min(h, tau_max)
+        while gap(start) <= 0.0 and start > 1e-13 * h:
+            start *= 0.125
+        if gap(start) <= 0.0:
+            return Segment(t0, t0, s, seg), True
+        lo_tau, lo_gap = 0.0, 0.0
+        tau_k = start
+        while True:
+            grid = tau_k + h * np.arange(256)
+            grid = grid[grid < tau_max]
+            grid = np.append(grid, tau_max) if grid.size < 256 else grid
+            values = gap(grid)
+            taus = np.concatenate(([lo_tau], grid))
+            gaps = np.concatenate(([lo_gap], values))
+            event = self._first_event(taus, gaps, gap, gap_rate, tol)
+            if event is not None:
+                tau_hit = event
+                return Segment(t0, t0 + tau_hit, s, seg), True
+            if grid[-1] >= tau_max:
+                return Segment(t0, t_limit, s, seg), False
+            lo_tau, lo_gap = grid[-1], values[-1]
+            tau_k = grid[-1] + h
+
+    @staticmethod
+    def _first_event(taus, gaps, gap, gap_rate, tol):
+        """Earliest return to v_r = 0 within the sampled window: a crossing or a grazing touch."""
+        nonpos = np.nonzero(gaps[1:] <= 0.0)[0]
+        first_cross = nonpos[0] + 1 if nonpos.size else len(gaps)
+        # interior local minima of the gap before the first crossing could hide a touch or a double root
+        for k in range(1, min(first_cross, len(gaps) - 1)):
+            if not (gaps[k] <= gaps[k - 1] and gaps[k] <= gaps[k + 1]):
+                continue
+            lo, hi = taus[k - 1], taus[k + 1]
+            r_lo, r_hi = gap_rate(lo), gap_rate(hi)
+            if r_lo < 0.0 < r_hi:
+                tau_min = brentq(gap_rate, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
+            else:
+                tau_min = taus[k]
+            g_min = gap(tau_min)
+            if g_min < -tol:  # a crossing the grid stepped over
+                return brentq(gap, taus[k - 1], tau_min, xtol=1e-15, rtol=4 * np.finfo(float).eps)
+            if g_min <= tol:
+                return tau_min
+        if first_cross < len(gaps):
+            lo, hi = taus[first_cross - 1], taus[first_cross]
+            if gaps[first_cross] == 0.0:
+                return hi
+            return brentq(gap, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
+        return None
+
+
+def sample_segments(segments: list[Segment], t_eval: np.ndarray):
+    """Evaluate a piecewise solution at ``t_eval``; samples past a failed solve are NaN."""
+    x = np.full(t_eval.shape, np.nan)
+    v = np.full(t_eval.shape, np.nan)
+    phase = np.zeros(t_eval.shape, dtype=np.int8)
+    for i, seg in enumerate(segments):
+        last = i == len(segments) - 1
+        mask = (t_eval >= seg.t0) & ((t_eval < seg.t1) | (last & (t_eval <= seg.t1)))
+        if not mask.any() or seg.t1 <= seg.t0 and not last:
+            continue
+        xs, vs = seg.state(t_eval[mask])
+        x[mask], v[mask] = xs, vs
+        phase[mask] = seg.phase
+    return x, v, phase

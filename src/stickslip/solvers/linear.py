@@ -1,0 +1,68 @@
+"""Closed-form solution of M y'' + c y' + k y = g0 + g1 tau (one slip segment, all damping cases)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class LinearSegment:
+    """Solution from state (x0, v0) at local time tau = 0; valid for any sign of c, including c = 0.
+
+    The homogeneous part is written as e^{alpha tau}[h0 C(tau) + (h1 - alpha h0) S(tau)] with
+    C = cos(w tau), S = sin(w tau)/w (w^2 = k/m - alpha^2), continued to cosh/sinh and to (1, tau), so
+    critical damping needs no special case and nothing cancels catastrophically.
+    """
+
+    m: float
+    c: float
+    k: float
+    g0: float
+    g1: float
+    x0: float
+    v0: float
+
+    def __post_init__(self):
+        p1 = self.g1 / self.k
+        p0 = (self.g0 - self.c * p1) / self.k
+        alpha = -self.c / (2.0 * self.m)
+        object.__setattr__(self, "_p", (p0, p1))
+        object.__setattr__(self, "_alpha", alpha)
+        object.__setattr__(self, "_w2", self.k / self.m - alpha * alpha)
+        object.__setattr__(self, "_h", (self.x0 - p0, self.v0 - p1))
+
+    def _kernels(self, tau):
+        """e^{alpha tau} C(tau) and e^{alpha tau} S(tau)."""
+        alpha, w2 = self._alpha, self._w2
+        if w2 > 0.0:
+            w = np.sqrt(w2)
+            e = np.exp(alpha * tau)
+            return e * np.cos(w * tau), e * np.sin(w * tau) / w
+        if w2 < 0.0:
+            w = np.sqrt(-w2)
+            e_plus = np.exp((alpha + w) * tau)
+            e_minus = np.exp((alpha - w) * tau)
+            return 0.5 * (e_plus + e_minus), e_plus * (-np.expm1(-2.0 * w * tau)) / (2.0 * w)
+        e = np.exp(alpha * tau)
+        return e, e * tau
+
+    def state(self, tau):
+        """(x, v) at local times tau (scalar or array)."""
+        tau = np.asarray(tau, dtype=float)
+        ec, es = self._kernels(tau)
+        h0, h1 = self._h
+        q = h1 - self._alpha * h0
+        xh = h0 * ec + q * es
+        vh = self._alpha * xh + (-self._w2 * h0) * es + q * ec
+        p0, p1 = self._p
+        return p0 + p1 * tau + xh, p1 + vh
+
+    def acceleration(self, tau):
+        x, v = self.state(tau)
+        return (self.g0 + self.g1 * np.asarray(tau, dtype=float) - self.c * v - self.k * x) / self.m
+
+    @property
+    def natural_period(self) -> float:
+        return 2.0 * np.pi * np.sqrt(self.m / self.k)
