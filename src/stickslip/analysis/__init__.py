@@ -1,1 +1,1 @@
-
+"""Layer 3: metrics measured from trajectories."""

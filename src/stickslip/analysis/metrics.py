@@ -1,0 +1,181 @@
+"""Metrics measured from a trajectory: stick/slip intervals, amplitudes, velocities, frequency.
+
+Every metric is a small pure function; ``limit_cycle_metrics`` gathers them into the table stored with each
+dataset. Interval lengths come from the solver's exact switching record when it has one, otherwise from
+the per-sample phase (then they are only as fine as the sample spacing).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.signal import find_peaks
+
+from ..solvers.base import STICK, Trajectory
+
+
+#: A steady window whose peak-to-peak displacement is below this fraction of the whole run's is at rest.
+REST_FRACTION = 1e-4
+
+
+@dataclass(frozen=True)
+class Metric:
+    value: float
+    units: str
+    long_name: str
+
+
+def phase_runs(t: np.ndarray, phase: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(start, end) times of stick runs and of slip runs from per-sample phases.
+
+    A run's boundaries are put midway between the last sample of one phase and the first of the next.
+    """
+    t = np.asarray(t, dtype=float)
+    sticking = np.asarray(phase) == STICK
+    change = np.nonzero(sticking[1:] != sticking[:-1])[0]
+    edges = np.concatenate(([t[0]], 0.5 * (t[change] + t[change + 1]), [t[-1]]))
+    starts_sticking = bool(sticking[0])
+    runs = np.column_stack((edges[:-1], edges[1:]))
+    kinds = np.array([(i % 2 == 0) == starts_sticking for i in range(len(runs))])
+    return runs[kinds], runs[~kinds]
+
+
+def segment_runs(segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(start, end) of stick runs and slip runs from an exact switching record (t0, t1, phase).
+
+    Consecutive slip segments (forward and backward) form one slip run; a zero-length stick (a grazing
+    touch of the belt velocity) is kept as a stick run of length zero, so it still separates two slips.
+    """
+    stick, slip = [], []
+    current = None
+    for t0, t1, ph in segments:
+        if ph == STICK:
+            if current is not None:
+                slip.append(current)
+                current = None
+            if stick and stick[-1][1] == t0:
+                stick[-1] = (stick[-1][0], t1)
+            else:
+                stick.append((t0, t1))
+        else:
+            current = (t0, t1) if current is None else (current[0], t1)
+    if current is not None:
+        slip.append(current)
+    return np.array(stick, dtype=float).reshape(-1, 2), np.array(slip, dtype=float).reshape(-1, 2)
+
+
+def intervals(traj: Trajectory) -> tuple[np.ndarray, np.ndarray]:
+    if traj.segments is not None and len(traj.segments):
+        return segment_runs(traj.segments)
+    return phase_runs(traj.t, traj.phase)
+
+
+def displacement_peaks(t: np.ndarray, x: np.ndarray, rel_prominence: float = 0.01) -> np.ndarray:
+    """Indices of displacement maxima whose prominence exceeds a fraction of the range."""
+    span = np.nanmax(x) - np.nanmin(x)
+    if not np.isfinite(span) or span <= 0:
+        return np.array([], dtype=int)
+    peaks, _ = find_peaks(x, prominence=rel_prominence * span)
+    return peaks
+
+
+def frequency_from_peaks(t: np.ndarray, x: np.ndarray) -> float:
+    """1 / mean spacing of displacement maxima [Hz]; NaN with fewer than two maxima."""
+    peaks = displacement_peaks(t, x)
+    if len(peaks) < 2:
+        return np.nan
+    return (len(peaks) - 1) / (t[peaks[-1]] - t[peaks[0]])
+
+
+def frequency_from_spectrum(t: np.ndarray, x: np.ndarray, pad: int = 16) -> float:
+    """Frequency of the largest spectral peak of x - mean [Hz] (Hann window, zero padding, parabolic fit)."""
+    dt = np.diff(t)
+    if len(t) < 8 or not np.allclose(dt, dt[0], rtol=1e-6, atol=0):
+        raise ValueError("frequency_from_spectrum needs uniformly sampled data")
+    y = (x - np.mean(x)) * np.hanning(len(x))
+    n = pad * len(y)
+    power = np.abs(np.fft.rfft(y, n)) ** 2
+    power[0] = 0.0
+    k = int(np.argmax(power))
+    if k == 0 or not np.any(power > 0):
+        return np.nan
+    shift = 0.0
+    if 0 < k < len(power) - 1:
+        a, b, c = np.log(power[k - 1:k + 2] + 1e-300)
+        denom = a - 2 * b + c
+        shift = 0.5 * (a - c) / denom if denom != 0 else 0.0
+    return (k + shift) / (n * dt[0])
+
+
+def count_peaks(t: np.ndarray, x: np.ndarray, t_from: float, t_to: float) -> int:
+    """Number of displacement maxima in [t_from, t_to] (the paper counts 'four peaks in 18 seconds')."""
+    peaks = displacement_peaks(t, x)
+    return int(np.sum((t[peaks] >= t_from) & (t[peaks] <= t_to)))
+
+
+def limit_cycle_metrics(traj: Trajectory, transient: float, count_window: float = 18.0) -> dict[str, Metric]:
+    """The metric table of one run; the steady window is t >= ``transient``."""
+    t, x, v = traj.t, traj.x, traj.v
+    nan = float("nan")
+    if not traj.ok or not np.all(np.isfinite(x)):
+        return {"solver_ok": Metric(0.0, "1", "solver finished without failure (1) or failed (0)")}
+    window = t >= transient
+    tw, xw, vw = t[window], x[window], v[window]
+    stick, slip = intervals(traj)
+    t_end = t[-1]
+    stick_c = stick[(stick[:, 0] >= transient) & (stick[:, 1] < t_end) & (stick[:, 0] > t[0])]
+    slip_c = slip[(slip[:, 0] >= transient) & (slip[:, 1] < t_end) & (slip[:, 0] > t[0])]
+    stick_len = stick_c[:, 1] - stick_c[:, 0]
+    slip_len = slip_c[:, 1] - slip_c[:, 0]
+    # where each stick ends, the mass is released: interpolate x there
+    release = np.interp(stick_c[:, 1], t, x) if len(stick_c) else np.array([])
+    speed_at = int(np.argmax(np.abs(vw))) if len(vw) else 0
+    peaks = displacement_peaks(tw, xw)
+    peak_values = xw[peaks]
+    periodic = nan
+    if len(peaks) >= 3:
+        spacing = np.diff(tw[peaks])
+        periodic = float(
+            np.abs(peak_values[-1] - peak_values[-2]) <= 1e-3 * max(np.ptp(xw), 1e-12)
+            and np.abs(spacing[-1] - spacing[-2]) <= 1e-3 * spacing[-1] + 2 * (tw[1] - tw[0])
+        )
+
+    def mean(a):
+        return float(np.mean(a)) if len(a) else nan
+
+    # A window that has come to rest has no frequency: its "peaks" would be round-off or solver noise.
+    at_rest = np.ptp(xw) <= REST_FRACTION * max(np.ptp(x), 1e-300)
+    freq_peaks = nan if at_rest else frequency_from_peaks(tw, xw)
+    freq_spectrum = nan if at_rest else frequency_from_spectrum(tw, xw)
+
+    return {
+        "solver_ok": Metric(1.0, "1", "solver finished without failure (1) or failed (0)"),
+        "stick_time": Metric(mean(stick_len), "s", "mean duration of complete stick intervals (steady window)"),
+        "slip_time": Metric(mean(slip_len), "s", "mean duration of complete slip intervals (steady window)"),
+        "first_stick_time": Metric(
+            float(stick[0, 1] - stick[0, 0]) if len(stick) else nan, "s", "duration of the first stick interval"),
+        "stick_count": Metric(float(len(stick_c)), "1", "number of complete stick intervals (steady window)"),
+        "stick_fraction": Metric(
+            float(np.mean(traj.phase[window] == STICK)) if window.any() else nan, "1",
+            "fraction of steady-window samples in stick"),
+        "period": Metric(mean(stick_len) + mean(slip_len), "s", "mean stick plus mean slip duration"),
+        "amplitude_peak_to_peak": Metric(float(np.ptp(xw)), "mm", "peak-to-peak displacement (steady window)"),
+        "amplitude_peak_to_zero": Metric(float(np.max(np.abs(xw))), "mm",
+                                         "largest |displacement| from zero (steady window)"),
+        "max_displacement": Metric(float(np.max(xw)), "mm", "largest displacement (steady window)"),
+        "min_displacement": Metric(float(np.min(xw)), "mm", "smallest displacement (steady window)"),
+        "max_velocity": Metric(float(np.max(vw)), "mm s-1", "largest velocity (steady window)"),
+        "min_velocity": Metric(float(np.min(vw)), "mm s-1", "smallest velocity (steady window)"),
+        "max_speed": Metric(float(np.abs(vw[speed_at])), "mm s-1", "largest |velocity| (steady window)"),
+        "max_speed_position": Metric(float(xw[speed_at]), "mm", "displacement where |velocity| is largest"),
+        "stick_velocity": Metric(
+            float(np.mean(v[traj.phase == STICK])) if np.any(traj.phase == STICK) else nan, "mm s-1",
+            "mean velocity while sticking"),
+        "stick_end_position": Metric(mean(release), "mm", "displacement at which stick ends (steady window)"),
+        "frequency_peaks": Metric(freq_peaks, "Hz", "frequency from displacement peak spacing"),
+        "frequency_spectrum": Metric(freq_spectrum, "Hz", "frequency of the spectral peak"),
+        "peaks_in_count_window": Metric(float(count_peaks(t, x, 0.0, count_window)), "1",
+                                        f"displacement maxima in the first {count_window:g} s"),
+        "periodic": Metric(periodic, "1", "last two cycles repeat to 1e-3 (1) or not (0)"),
+    }

@@ -1,0 +1,103 @@
+"""Figures of the reproduced results (presentation only: reads datasets, draws)."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+
+METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
+
+
+def _style(method):
+    return METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
+
+
+def _label(ds, method):
+    failed = int(ds["solver_status"]) != 0
+    return f"{method}" + (" (FAILED: not a result)" if failed else "")
+
+
+def onedof_figure(datasets: dict, spec: dict, reading: str):
+    """Fig. 2-style time series (displacement and velocity) or Fig. 3-style phase plot."""
+    kind = spec.get("plot", "timeseries")
+    title = f"{spec.get('title', '')} [reading: {reading}]"
+    if kind == "timeseries":
+        fig, (ax_x, ax_v) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
+        for method, ds in datasets.items():
+            if int(ds["solver_status"]) != 0:
+                ax_x.text(0.02, 0.9, f"{method}: solver failed ({ds['solver_status'].attrs.get('message')})",
+                          transform=ax_x.transAxes, color="red")
+                continue
+            ax_x.plot(ds.time, ds.displacement, label=_label(ds, method), **_style(method))
+            ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
+        ds0 = next(iter(datasets.values()))
+        ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
+        ax_x.set_ylabel("displacement x [mm]")
+        ax_v.set_ylabel("velocity dx/dt [mm/s]")
+        ax_v.set_xlabel("time [s]")
+        ax_x.legend(loc="upper right", fontsize=8)
+        ax_v.legend(loc="lower right", fontsize=8)
+        ax_x.set_title(title, fontsize=10)
+    elif kind == "phase":
+        fig, ax = plt.subplots(figsize=(6, 5))
+        for method, ds in datasets.items():
+            if int(ds["solver_status"]) != 0:
+                continue
+            ax.plot(ds.displacement, ds.velocity, label=_label(ds, method), **_style(method))
+        ax.set_xlabel("displacement x [mm]")
+        ax.set_ylabel("velocity dx/dt [mm/s]")
+        ax.legend(fontsize=8)
+        ax.set_title(title, fontsize=10)
+    else:
+        raise ValueError(f"plot: {kind!r} is not one of ['timeseries', 'phase']")
+    fig.tight_layout()
+    return fig
+
+
+STATUS_COLOUR = {"reproduced": "#c8efc8", "deviates": "#f7c6c6", "not-comparable": "#e4e4e4"}
+
+
+def claims_frame(csv_path, sections=None, claims=None):
+    """The deviations table (optionally filtered) as a pandas DataFrame."""
+    import pandas as pd
+
+    frame = pd.read_csv(csv_path, dtype={"section": str}).fillna({"reading": "-"})
+    if sections is not None:
+        frame = frame[frame["section"].isin([str(s) for s in sections])]
+    if claims is not None:
+        frame = frame[frame["claim"].isin(claims)]
+    return frame
+
+
+def styled_claims(frame):
+    """Colour each status cell; a status that differs from its pin is marked in bold red text."""
+    cols = ["claim", "reading", "figure", "quantity", "reported", "measured", "unit", "deviation", "status",
+            "expected", "reason"]
+
+    def colour(row):
+        styles = [""] * len(row)
+        i = list(row.index).index("status")
+        styles[i] = f"background-color: {STATUS_COLOUR.get(row['status'], 'white')}"
+        if row["status"] != row["expected"]:
+            styles[i] += "; color: red; font-weight: bold"
+        return styles
+
+    return (frame[cols].style.apply(colour, axis=1)
+            .format({"reported": "{:.4g}", "measured": "{:.4g}", "deviation": "{:+.1%}"}, na_rep="–")
+            .hide(axis="index"))
+
+
+def status_counts(frame):
+    """Claims per reading and status: the compact scoreboard of a section."""
+    return frame.pivot_table(index="reading", columns="status", values="claim", aggfunc="count", fill_value=0)
+
+
+def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
+    """Dotted reference line for a number the paper reports."""
+    if y is not None:
+        ax.axhline(y, color=color, ls=":", lw=1)
+        ax.annotate(label or f"paper: {y:g}", (1.0, y), xycoords=("axes fraction", "data"), ha="right",
+                    va="bottom", fontsize=8, color=color)
+    if x is not None:
+        ax.axvline(x, color=color, ls=":", lw=1)
+        ax.annotate(label or f"paper: {x:g}", (x, 1.0), xycoords=("data", "axes fraction"), ha="left",
+                    va="top", fontsize=8, color=color, rotation=90)

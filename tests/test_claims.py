@@ -1,0 +1,90 @@
+"""The claims check: each kind of claim, pinned statuses, malformed claims files."""
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from stickslip.io.claims import ClaimsError, evaluate, evaluate_all, load_claims, main, write_table
+
+
+def datasets():
+    sweep = xr.Dataset({"frequency": ("mu_s", [0.3, 0.25, 0.2])}, coords={"mu_s": [0.2, 0.5, 0.9]})
+    base = {"a": xr.Dataset({"f": 0.279, "amp": 0.93}), "b": xr.Dataset({"f": 0.356, "amp": 0.45})}
+    return {"sweep.nc": sweep, "r/a.nc": base["a"], "r/b.nc": base["b"]}
+
+
+def opener(path):
+    return datasets()[path]
+
+
+ROW = {"id": "f", "section": "3", "figure": "Fig. 2", "quote": "q", "kind": "value", "dataset": "r/{reading}.nc",
+       "variable": "f", "value": 0.25, "unit": "Hz", "tolerance": {"rel": 0.2}, "expected": "reproduced"}
+
+
+def test_value_claim_per_reading():
+    a = evaluate(ROW, "a", opener)
+    b = evaluate(ROW, "b", opener)
+    assert a.status == "reproduced" and a.deviation == pytest.approx(0.116)
+    assert b.status == "deviates" and not b.matches_expected
+
+
+def test_compare_ratio_and_trend_claims():
+    cmp_row = {**ROW, "kind": "compare", "lhs": {"dataset": "r/a.nc", "variable": "amp"}, "relation": ">",
+               "rhs": {"dataset": "r/b.nc", "variable": "amp"}}
+    assert evaluate(cmp_row, "", opener).status == "reproduced"
+    ratio = {**ROW, "kind": "ratio", "value": 2.0, "lhs": {"dataset": "r/a.nc", "variable": "amp"},
+             "rhs": {"dataset": "r/b.nc", "variable": "amp"}, "tolerance": {"rel": 0.1}}
+    assert evaluate(ratio, "", opener).measured == pytest.approx(0.93 / 0.45)
+    trend = {**ROW, "kind": "trend", "dataset": "sweep.nc", "coord": "mu_s", "variable": "frequency", "sign": -1}
+    res = evaluate(trend, "", opener)
+    assert res.status == "reproduced" and res.measured < 0
+    assert evaluate({**trend, "sign": 1}, "", opener).status == "deviates"
+
+
+def test_missing_variable_is_not_comparable_and_declared_contradictions_are_too():
+    assert evaluate({**ROW, "variable": "nope"}, "a", opener).status == "not-comparable"
+    assert evaluate({**ROW, "comparable": False}, "a", opener).status == "not-comparable"
+
+
+def test_expected_per_reading_with_default():
+    row = {**ROW, "expected": {"default": "deviates", "a": "reproduced"}}
+    results = evaluate_all([row], ["a", "b"], opener)
+    assert [r.matches_expected for r in results] == [True, True]
+
+
+@pytest.mark.parametrize("broken,match", [
+    ({"kind": "guess"}, "kind"), ({"expected": "maybe"}, "expected status"), ({"quote": None}, None),
+])
+def test_malformed_claims_are_rejected_with_the_key(tmp_path, broken, match):
+    row = {**ROW, **broken}
+    if broken.get("quote", 1) is None:
+        del row["quote"]
+        match = "quote"
+    path = tmp_path / "c.yaml"
+    path.write_text(yaml.safe_dump([row]))
+    with pytest.raises(ClaimsError, match=match):
+        load_claims([path])
+
+
+def test_duplicate_ids_are_rejected(tmp_path):
+    (tmp_path / "a.yaml").write_text(yaml.safe_dump([ROW]))
+    (tmp_path / "b.yaml").write_text(yaml.safe_dump([ROW]))
+    with pytest.raises(ClaimsError, match="already used"):
+        load_claims([tmp_path / "a.yaml", tmp_path / "b.yaml"])
+
+
+def test_check_fails_on_a_changed_status(tmp_path, capsys):
+    results = evaluate_all([ROW], ["a", "b"], opener)
+    write_table(results, tmp_path / "d.csv", tmp_path / "d.md")
+    assert main(["check", str(tmp_path / "d.csv")]) == 1
+    assert "CHANGED f [b]" in capsys.readouterr().out
+    assert "(changed)" in (tmp_path / "d.md").read_text()
+    write_table(results[:1], tmp_path / "ok.csv")
+    assert main(["check", str(tmp_path / "ok.csv")]) == 0
+
+
+def test_repository_claims_files_load(repo_root):
+    claims = load_claims(sorted((repo_root / "config" / "claims").glob("*.yaml")))
+    assert len(claims) >= 10
+    assert all(np.isfinite(c["value"]) for c in claims if c["kind"] == "value")

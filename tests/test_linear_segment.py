@@ -1,0 +1,55 @@
+"""The closed-form slip segment against its ODE, for every damping regime."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.integrate import solve_ivp
+
+from stickslip.solvers.linear import LinearSegment
+
+
+def reference(seg, tau):
+    def rhs(t, y):
+        return [y[1], (seg.g0 + seg.g1 * t - seg.c * y[1] - seg.k * y[0]) / seg.m]
+
+    sol = solve_ivp(rhs, (0, tau[-1]), [seg.x0, seg.v0], t_eval=tau, rtol=1e-12, atol=1e-13, method="DOP853")
+    return sol.y
+
+
+@pytest.mark.parametrize("c", [0.0, -1.0, 1.5, 2 * np.sqrt(5.0), 2 * np.sqrt(5.0) * (1 + 1e-9), 12.0])
+def test_matches_a_tight_numerical_solution(c):
+    seg = LinearSegment(m=1.0, c=c, k=5.0, g0=3.75, g1=-0.1, x0=0.85, v0=0.5)
+    tau = np.linspace(0, 4, 81)
+    x, v = seg.state(tau)
+    xr, vr = reference(seg, tau)
+    scale = max(1.0, np.abs(xr).max())
+    assert np.max(np.abs(x - xr)) < 1e-9 * scale
+    assert np.max(np.abs(v - vr)) < 1e-8 * max(1.0, np.abs(vr).max())
+
+
+def test_undamped_case_is_the_harmonic_closed_form():
+    w = np.sqrt(5.0)
+    seg = LinearSegment(m=1.0, c=0.0, k=5.0, g0=4.25, g1=0.0, x0=0.85, v0=0.5)
+    tau = np.linspace(0, 10, 101)
+    x, v = seg.state(tau)
+    np.testing.assert_allclose(x, 0.85 + 0.5 / w * np.sin(w * tau), atol=1e-14)
+    np.testing.assert_allclose(v, 0.5 * np.cos(w * tau), atol=1e-14)
+
+
+@settings(max_examples=60, deadline=None)
+@given(m=st.floats(0.1, 5), c=st.floats(-2, 20), k=st.floats(0.5, 20), g0=st.floats(-5, 5), g1=st.floats(-1, 1),
+       x0=st.floats(-2, 2), v0=st.floats(-2, 2))
+def test_initial_state_and_residual(m, c, k, g0, g1, x0, v0):
+    seg = LinearSegment(m=m, c=c, k=k, g0=g0, g1=g1, x0=x0, v0=v0)
+    x, v = seg.state(0.0)
+    assert x == pytest.approx(x0, abs=1e-12) and v == pytest.approx(v0, abs=1e-12)
+    # the ODE residual, with the derivative of v from central differences
+    tau, h = 0.37, 1e-5
+    _, vp = seg.state(tau + h)
+    _, vm = seg.state(tau - h)
+    xt, vt = seg.state(tau)
+    accel = (vp - vm) / (2 * h)
+    residual = m * accel + c * vt + k * xt - (g0 + g1 * tau)
+    scale = abs(g0) + abs(g1) + abs(k * xt) + abs(c * vt) + abs(m * accel) + 1
+    assert abs(residual) < 1e-5 * scale

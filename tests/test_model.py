@@ -1,0 +1,87 @@
+"""Defining properties of each friction variant, and what is inconsistent between them."""
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from stickslip.model import PAPER_BASELINE, BeltModel, BeltParams, ParameterError, friction_law
+
+
+def test_printed_variants_cannot_stick_consistent_can():
+    assert not friction_law(PAPER_BASELINE, "eq3_printed").can_stick
+    assert not friction_law(PAPER_BASELINE, "eq4_printed").can_stick
+    assert friction_law(PAPER_BASELINE, "consistent").can_stick
+
+
+@given(v=st.floats(-5, 5), vb=st.floats(0, 2))
+def test_consistent_is_eq3_with_the_sign_reversed(v, vb):
+    eq3 = friction_law(PAPER_BASELINE, "eq3_printed")
+    cons = friction_law(PAPER_BASELINE, "consistent")
+    assert cons.force(v, vb) == pytest.approx(-eq3.force(v, vb), abs=1e-12)
+
+
+@given(v=st.floats(-5, 5), vb=st.floats(0.01, 2))
+def test_eq4_differs_from_eq3_only_in_the_sigma_vb_term(v, vb):
+    p = PAPER_BASELINE
+    eq3, eq4 = friction_law(p, "eq3_printed"), friction_law(p, "eq4_printed")
+    # Eq. 4 is Eq. 3 rearranged but prints sigma*V_b where mu_s*N*sigma*V_b belongs
+    expected = (p.mu_s * p.normal_force - 1.0) * p.sigma * vb
+    assert eq3.force(v, vb) - eq4.force(v, vb) == pytest.approx(expected, abs=1e-12)
+
+
+@given(vr=st.floats(0.001, 1.5))
+def test_consistent_friction_opposes_relative_velocity_and_falls_with_slope_sigma(vr):
+    p = PAPER_BASELINE
+    law = friction_law(p, "consistent")
+    vb = 0.5
+    forward = law.force(vb + vr, vb)  # mass faster than the belt: friction pulls it back
+    backward = law.force(vb - vr, vb)
+    mu_n = p.mu_s * p.normal_force
+    assert forward == pytest.approx(-mu_n * (1 - p.sigma * vr))
+    assert backward == pytest.approx(mu_n * (1 - p.sigma * vr))
+
+
+def test_printed_sign_pushes_away_from_the_belt_velocity():
+    law = friction_law(PAPER_BASELINE, "eq3_printed")
+    vb = 0.5
+    assert law.force(vb + 0.1, vb) > 0  # mass faster than belt: pushed faster still
+    assert law.force(vb - 0.1, vb) < 0
+
+
+def test_zero_slip_damping_at_the_text_sigma():
+    # C = sigma mu_s N exactly for the text values: the slip phase is undamped
+    model = BeltModel.build(PAPER_BASELINE, "consistent")
+    assert model.slip_damping() == pytest.approx(0.0, abs=1e-15)
+    assert BeltModel.build(PAPER_BASELINE, "eq3_printed").slip_damping() == pytest.approx(3.0)
+
+
+def test_stick_release_position_is_independent_of_sigma():
+    for sigma in (0.1, 0.3, 0.5):
+        model = BeltModel.build(PAPER_BASELINE.with_(sigma=sigma), "consistent")
+        assert model.stick_release_position() == pytest.approx((5.0 - 1.5 * 0.5) / 5.0)
+
+
+@pytest.mark.parametrize("key,value", [("mass", 0.0), ("mass", -1.0), ("stiffness", float("nan")),
+                                       ("normal_force", 0), ("damping", -0.1), ("sigma", float("inf")),
+                                       ("mass", "1"), ("mass", True), ("units", "imperial")])
+def test_bad_parameters_name_the_key(key, value):
+    with pytest.raises(ParameterError, match=key):
+        PAPER_BASELINE.with_(**{key: value})
+
+
+def test_from_mapping_names_unknown_and_missing_keys():
+    good = PAPER_BASELINE.as_dict()
+    with pytest.raises(ParameterError, match="masss"):
+        BeltParams.from_mapping({**good, "masss": 1.0})
+    del good["stiffness"]
+    with pytest.raises(ParameterError, match="stiffness"):
+        BeltParams.from_mapping(good)
+
+
+def test_si_units_reading_scales_the_mass():
+    si = PAPER_BASELINE.with_(units="si")
+    assert si.effective_mass == pytest.approx(1e-3)
+    model = BeltModel.build(si, "consistent")
+    omega = np.sqrt(si.stiffness / model.mass)
+    assert omega / (2 * np.pi) == pytest.approx(11.25, rel=1e-3)  # far from the reported 0.25 Hz

@@ -1,0 +1,45 @@
+# The claims table: every reported number vs what the pipeline measures, with pinned statuses.
+from glob import glob
+
+from stickslip.io.claims import load_claims, required_datasets
+
+CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
+CLAIM_READINGS = config["claims"]["readings"]
+
+
+rule claims_table:
+    input:
+        claims=CLAIM_FILES,
+        datasets=required_datasets(load_claims(CLAIM_FILES), CLAIM_READINGS),
+    output:
+        csv="results/claims/deviations.csv",
+        md="results/claims/deviations.md",
+    log:
+        "results/logs/claims_table.log",
+    benchmark:
+        "results/benchmarks/claims_table/all.tsv"
+    params:
+        readings=CLAIM_READINGS,
+    script:
+        "../scripts/claims_table.py"
+
+
+rule claims_check:
+    """Fails when a measured status differs from the one pinned in the claims files."""
+    input:
+        "results/claims/deviations.csv",
+    output:
+        touch("results/claims/check.ok"),
+    log:
+        "results/logs/claims_check.log",
+    benchmark:
+        "results/benchmarks/claims_check/all.tsv"
+    params:
+        python=sys.executable,
+    shell:
+        "{params.python} -m stickslip.io.claims check {input} > {log} 2>&1 || (cat {log}; exit 1)"
+
+
+ALL_TARGETS.append("results/claims/deviations.csv")
+if config["claims"].get("check", True):  # the small CI config measures other numbers: no pins apply
+    ALL_TARGETS.append("results/claims/check.ok")

@@ -1,0 +1,50 @@
+# 1-DOF mass on a moving belt: one dataset per scene x reading x method, one rule per paper figure kind.
+
+
+rule simulate_onedof:
+    output:
+        "results/onedof/{scene}/{reading}/{method}.nc",
+    log:
+        "results/logs/simulate_onedof/{scene}/{reading}/{method}.log",
+    benchmark:
+        "results/benchmarks/simulate_onedof/{scene}/{reading}/{method}.tsv"
+    params:
+        config=lambda wc: config,
+    script:
+        "../scripts/simulate_onedof.py"
+
+
+rule onedof_figure:
+    """Time series (displacement and velocity, Fig. 2 style) or phase plot (Fig. 3 style) of one reading."""
+    input:
+        lambda wc: [
+            onedof_dataset(ONEDOF["figures"][wc.figure]["scene"], wc.reading, m)
+            for m in ONEDOF["figures"][wc.figure]["methods"]
+        ],
+    output:
+        "results/figures/{figure}/{reading}.png",
+    log:
+        "results/logs/onedof_figure/{figure}/{reading}.log",
+    benchmark:
+        "results/benchmarks/onedof_figure/{figure}/{reading}.tsv"
+    params:
+        figure=lambda wc: ONEDOF["figures"][wc.figure],
+        methods=lambda wc: ONEDOF["figures"][wc.figure]["methods"],
+    script:
+        "../scripts/plot_onedof_figure.py"
+
+
+ALL_TARGETS.extend(
+    f"results/figures/{fig}/{reading}.png"
+    for fig, spec in ONEDOF["figures"].items()
+    for reading in spec["readings"]
+)
+
+
+# Resolve every run the figures need at parse time, so a bad scene/reading/method value fails before any
+# job starts, with the offending key named (the schema cannot see e.g. NaN or an unknown solver setting).
+from stickslip.io.scenes import figure_runs, run_spec
+
+for _fig in ONEDOF["figures"]:
+    for _scene, _reading, _method in figure_runs(config, _fig):
+        run_spec(config, _scene, _reading, _method)
