@@ -190,7 +190,7 @@ params_strategy = st.fixed_dictionaries({
     "belt_velocity": st.floats(0.1, 1.5), "x0": st.floats(-1.0, 1.0), "v0": st.floats(-1.0, 1.5),
     "belt_deceleration": st.sampled_from([0.0, 0.0, 0.025, 0.2]),
 })
-hyp = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+hyp = settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 @hyp
@@ -209,7 +209,9 @@ def test_property_stick_demand_within_static_limit(changes):
     for s in ExactSwitchSolver().segments(model, 15.0):
         if s.phase != STICK or s.t1 <= s.t0:
             continue
-        t = np.linspace(s.t0, s.t1, 9)
+        # half-open [t0, t1): at a belt stop the demand jumps by M d at t1 itself (the belt's
+        # deceleration vanishes), which is exactly what ends the stick there
+        t = s.t0 + (s.t1 - s.t0) * np.array([0, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1 - 1e-9])
         x, v = s.state(t)
         assert np.all(np.abs(model.stick_demand(t, x)) <= a * (1 + 1e-9) + 1e-12)
         assert np.allclose(v, model.belt_velocity(t), rtol=0, atol=1e-12)
