@@ -28,10 +28,11 @@ import sys
 import numpy as np
 import xarray as xr
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__) if "__file__" in globals() else os.getcwd(), ".."))
-if not os.path.isdir(os.path.join(ROOT, "results")):
-    ROOT = os.getcwd()
-sys.path.insert(0, os.path.join(ROOT, "workflow", "scripts"))
+HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
+CODE = next(d for d in (os.path.join(HERE, ".."), os.getcwd(), os.path.join(os.getcwd(), ".."))
+            if os.path.isdir(os.path.join(d, "workflow", "scripts")))
+ROOT = os.getcwd() if os.path.isdir(os.path.join(os.getcwd(), "results")) else os.path.abspath(CODE)
+sys.path.insert(0, os.path.join(CODE, "workflow", "scripts"))
 from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
 
 files = sorted(glob.glob(os.path.join(ROOT, "results", "methods", "*_work_precision.nc")))
