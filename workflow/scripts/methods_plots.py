@@ -28,6 +28,7 @@ def work_precision_figure(ds, title: str):
     fams = [family(s, j) for s, j in zip(ds["solver"].values, ds["settings"].values)]
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     floor = 1e-16
+    colors = {f: plt.cm.tab10(i % 10) for i, f in enumerate(dict.fromkeys(fams))}  # same colour per panel
     for (err, xkey), ax in zip([("state", "cpu_time"), ("state", "rhs_evaluations"),
                                 ("period_error", "cpu_time"), ("period_error", "rhs_evaluations")], axes.flat):
         for fam in dict.fromkeys(fams):
@@ -39,7 +40,7 @@ def work_precision_figure(ds, title: str):
             if xkey == "rhs_evaluations" and fam == "exact":
                 continue  # the exact solver evaluates no right-hand side
             order = np.argsort(x)
-            ax.loglog(x[order], y[order], "o-", label=fam, ms=5)
+            ax.loglog(x[order], y[order], "o-", label=fam, ms=5, color=colors[fam])
         ax.set_xlabel({"cpu_time": "CPU time [s] (min of repeats)", "rhs_evaluations": "RHS evaluations"}[xkey])
         ax.set_ylabel({"state": "state error (max, relative)", "period_error": "relative period error"}[err])
         ax.grid(True, which="both", alpha=0.3)
