@@ -3,9 +3,15 @@
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
 from .exact import ExactSwitchSolver
 from .sign_rk import SignRungeKutta
+from .smooth import SmoothedSign  # noqa: E402
+from .karnopp import Karnopp  # noqa: E402
+from .moreau import MoreauJean  # noqa: E402
 
 #: Method registry: config ``solver`` name -> class. Later methods register here.
 METHODS = {"exact": ExactSwitchSolver, "sign_rk": SignRungeKutta}
+METHODS["smooth"] = SmoothedSign
+METHODS["karnopp"] = Karnopp
+METHODS["moreau"] = MoreauJean
 
 
 def make_solver(name: str, **settings):

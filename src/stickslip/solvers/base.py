@@ -27,6 +27,9 @@ class SolverStats:
     cpu_time: float = 0.0
     status: str = "ok"
     message: str = ""
+    jacobian_evaluations: int = 0
+    min_step: float = float("nan")
+    """Smallest accepted step [s] (methods that report one)."""
 
 
 @dataclass

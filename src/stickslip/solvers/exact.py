@@ -45,6 +45,16 @@ class Segment:
         return self.motion.state(np.asarray(t, dtype=float) - self.t0)
 
 
+def _check_t_end(t_end) -> float:
+    try:
+        value = float(t_end)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise SolverError(f"exact solver: t_end must be a finite number > 0, got {t_end!r}")
+    return value
+
+
 def first_exit_root(c0: float, c1: float, c2: float) -> float:
     """First tau >= 0 at which g = c0 + c1 tau + c2 tau^2 (g(0) <= 0) becomes positive; inf if never."""
     candidates = []
@@ -88,6 +98,7 @@ class ExactSwitchSolver:
     # -- public ---------------------------------------------------------------------------------------
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
         stats = SolverStats()
+        t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
         with Timer() as timer:
             try:
                 segments = self.segments(model, t_end, stats)
@@ -107,6 +118,7 @@ class ExactSwitchSolver:
 
     def segments(self, model: BeltModel, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
         stats = stats if stats is not None else SolverStats()
+        t_end = _check_t_end(t_end)
         p = model.params
         t, x, v = 0.0, float(p.x0), float(p.v0)
         out: list[Segment] = []
@@ -236,8 +248,10 @@ class ExactSwitchSolver:
                 return Segment(t0, t0 + tau_hit, s, seg), True
             if grid[-1] >= tau_max:
                 return Segment(t0, t_limit, s, seg), False
-            lo_tau, lo_gap = grid[-1], values[-1]
-            tau_k = grid[-1] + h
+            # overlap the next window by one sample so a minimum of the gap that falls exactly on a
+            # window boundary is still seen with both neighbours (a graze is never skipped)
+            lo_tau, lo_gap = grid[-2], values[-2]
+            tau_k = grid[-1]
 
     @staticmethod
     def _first_event(taus, gaps, gap, gap_rate, tol):

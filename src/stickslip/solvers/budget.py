@@ -1,0 +1,63 @@
+"""Work budget for methods that can stall (step-size collapse at the sign discontinuity).
+
+``budgeted(model, max_rhs, max_cpu)`` returns a proxy of the model whose ``rhs`` and ``acceleration``
+raise :class:`BudgetExceeded` once the evaluation count or the process CPU time passes the budget.
+Any method that calls the model (``sign_rk``, ``smooth``) thereby stops cleanly; ``run_with_budget``
+turns that into a failed ``Trajectory`` (status 'failed', message 'budget: ...') so a stalled run is
+recorded as data instead of hanging the study.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from .base import SolverStats, Trajectory
+
+
+class BudgetExceeded(RuntimeError):
+    pass
+
+
+class _BudgetedModel:
+    def __init__(self, model, max_rhs: int, max_cpu: float):
+        self._model = model
+        self._max_rhs = max_rhs
+        self._deadline = time.process_time() + max_cpu
+        self.calls = 0
+
+    def __getattr__(self, name):
+        return getattr(self._model, name)
+
+    def _tick(self):
+        self.calls += 1
+        if self.calls > self._max_rhs:
+            raise BudgetExceeded(f"budget: more than {self._max_rhs} RHS evaluations")
+        if self.calls % 1000 == 0 and time.process_time() > self._deadline:
+            raise BudgetExceeded(f"budget: CPU time limit exceeded after {self.calls} RHS evaluations")
+
+    def rhs(self, t, y, **kw):
+        self._tick()
+        return self._model.rhs(t, y, **kw)
+
+    def acceleration(self, t, x, v, **kw):
+        self._tick()
+        return self._model.acceleration(t, x, v, **kw)
+
+
+def run_with_budget(solver, model, t_end, t_eval, max_rhs: int = 2_000_000, max_cpu: float = 20.0):
+    """solver.solve under a work budget; a stall becomes a failed trajectory with its counters."""
+    proxy = _BudgetedModel(model, max_rhs, max_cpu)
+    start = time.process_time()
+    try:
+        return solver.solve(proxy, t_end, t_eval)
+    except BudgetExceeded as exc:
+        t_eval = np.asarray(t_eval, dtype=float)
+        stats = SolverStats(rhs_evaluations=proxy.calls, status="failed", message=str(exc), failures=1,
+                            cpu_time=time.process_time() - start)
+        nan = np.full(t_eval.shape, np.nan)
+        return Trajectory(t=t_eval, x=nan, v=nan.copy(), phase=np.zeros(t_eval.shape, dtype=np.int8),
+                          belt_velocity=model.belt_velocity(t_eval), stats=stats,
+                          method=getattr(solver, "name", type(solver).__name__),
+                          settings=dict(getattr(solver, "settings", {})))

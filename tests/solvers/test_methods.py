@@ -1,0 +1,119 @@
+"""The alternative methods behind the common interface, the work budget, and the error/failure measures."""
+
+import numpy as np
+import pytest
+
+from stickslip.analysis.errors import compare, cycle_metrics, segment_cycle_metrics, state_error
+from stickslip.analysis.failure import belt_position, classify
+from stickslip.model import PAPER_BASELINE, BeltModel
+from stickslip.solvers import METHODS, STICK, make_solver
+from stickslip.solvers.budget import run_with_budget
+
+T_END = 12.0
+T_EVAL = np.linspace(0.0, T_END, 1201)
+
+
+def scene(variant="consistent", **changes):
+    return BeltModel.build(PAPER_BASELINE.with_(**changes), variant)
+
+
+@pytest.fixture(scope="module")
+def base():
+    model = scene(sigma=0.5)
+    exact = make_solver("exact")
+    ref = exact.solve(model, T_END, T_EVAL)
+    return model, ref, segment_cycle_metrics(exact.segments(model, 60.0))
+
+
+def test_registry_has_every_method():
+    assert {"exact", "sign_rk", "smooth", "karnopp", "moreau"} <= set(METHODS)
+
+
+@pytest.mark.parametrize("name, settings, tol", [
+    ("smooth", {"eps": 1e-5, "method": "Radau"}, 5e-3),
+    ("smooth", {"eps": 1e-6, "regularization": "arctan", "method": "LSODA", "rtol": 1e-8, "atol": 1e-11}, 5e-2),
+    ("karnopp", {"eta": 1e-4}, 2e-3),
+    ("moreau", {"h": 1e-3, "theta": 0.5}, 1e-4),
+])
+def test_methods_converge_to_the_exact_solution(base, name, settings, tol):
+    model, ref, _ = base
+    tr = make_solver(name, **settings).solve(model, T_END, T_EVAL)
+    assert tr.ok, tr.stats.message
+    assert state_error(tr, ref)["state"] < tol
+    assert tr.stats.rhs_evaluations > 0
+
+
+def test_moreau_sticks_exactly_and_converges_at_second_order(base):
+    model, ref, _ = base
+    errs = []
+    for h in (4e-3, 2e-3, 1e-3):
+        tr = make_solver("moreau", h=h).solve(model, T_END, T_EVAL)
+        errs.append(state_error(tr, ref)["state"])
+    stick = tr.phase == STICK
+    assert stick.any() and np.all(tr.v[stick] == tr.belt_velocity[stick])
+    assert errs[0] / errs[2] > 3.0  # at least ~first order; theta = 1/2 is close to second in practice
+
+
+def test_karnopp_creep_is_bounded_by_the_band(base):
+    model, ref, _ = base
+    eta = 1e-3
+    tr = make_solver("karnopp", eta=eta).solve(model, T_END, T_EVAL)
+    f = classify(tr, ref, model.params)
+    assert 0 < f["creep_mm"] <= eta * 1.7 + 1e-12  # first stick lasts 1.7 s
+
+
+def test_sign_rk_loose_tolerance_misses_stick(base):
+    model, ref, _ = base
+    tr = make_solver("sign_rk", rtol=1e-2, atol=1e-5).solve(model, T_END, T_EVAL)
+    assert classify(tr, ref, model.params)["failure_kind"] == "missed_stick"
+
+
+def test_smooth_large_eps_creeps(base):
+    model, ref, _ = base
+    tr = make_solver("smooth", eps=1e-2).solve(model, T_END, T_EVAL)
+    f = classify(tr, ref, model.params)
+    assert f["creep"] and f["failure_kind"] == "creep"
+
+
+def test_budget_turns_a_stall_into_data(base):
+    model, ref, _ = base
+    tr = run_with_budget(make_solver("sign_rk", rtol=1e-8, atol=1e-11), model, T_END, T_EVAL, max_rhs=20_000)
+    assert tr.stats.status == "failed" and "budget" in tr.stats.message
+    assert np.all(np.isnan(tr.x))
+    f = classify(tr, ref, model.params)
+    assert f["failure_kind"] == "step_collapse"
+    assert compare(tr, ref)["state"] == np.inf
+
+
+def test_exact_is_its_own_reference(base):
+    model, ref, ref_cycle = base
+    c = compare(ref, ref, ref_cycle)
+    assert c["state"] == 0.0
+    assert c["period_error"] < 1e-8 and c["amplitude_error"] < 1e-8  # sampled cycle vs closed form
+    assert classify(ref, ref, model.params)["failure_kind"] == "none"
+
+
+def test_cycle_metrics_of_a_sine():
+    t = np.linspace(0, 20, 2001)
+    c = cycle_metrics(t, 0.7 * np.sin(2 * t), 1.4 * np.cos(2 * t))
+    assert c["period"] == pytest.approx(np.pi, rel=1e-7) and c["amplitude"] == pytest.approx(1.4, rel=1e-7)
+
+
+def test_belt_position_decelerating():
+    p = PAPER_BASELINE.with_(belt_deceleration=0.025)
+    assert belt_position(p, 20.0) == pytest.approx(5.0) and belt_position(p, 40.0) == pytest.approx(5.0)
+
+
+def test_moreau_handles_printed_and_decelerating_scenes():
+    tr = make_solver("moreau", h=1e-3).solve(scene("eq3_printed", sigma=0.5), 10.0, np.linspace(0, 10, 101))
+    assert tr.ok and not np.any(tr.phase == STICK)
+    tr = make_solver("moreau", h=1e-3).solve(scene(sigma=0.5, belt_deceleration=0.025), 30.0,
+                                             np.linspace(0, 30, 301))
+    assert tr.ok and np.all(tr.v[tr.t > 21] == 0.0)
+
+
+@pytest.mark.parametrize("name, bad", [("moreau", {"h": 0.0}), ("karnopp", {"eta": -1.0}),
+                                       ("smooth", {"eps": 0.0})])
+def test_bad_settings_raise(base, name, bad):
+    with pytest.raises(ValueError):
+        make_solver(name, **bad).solve(base[0], 1.0)

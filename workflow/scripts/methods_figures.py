@@ -1,0 +1,18 @@
+"""Snakemake script: work-precision charts (one per scene) and the failure map figure."""
+
+import os
+import sys
+
+import xarray as xr
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
+
+sm = snakemake  # noqa: F821
+for nc, png in zip(sm.input.work_precision, sm.output.work_precision):
+    with xr.open_dataset(nc) as ds:
+        fig = work_precision_figure(ds.load(), os.path.basename(nc).replace("_work_precision.nc", ""))
+    os.makedirs(os.path.dirname(png), exist_ok=True)
+    fig.savefig(png, dpi=110)
+with xr.open_dataset(sm.input.failure_map) as ds:
+    failure_map_figure(ds.load()).savefig(sm.output.failure_map, dpi=110)
