@@ -1,0 +1,100 @@
+"""Scalar metrics of a beam-on-disc trajectory (contact point = the paper's "node 1").
+
+Displacements are measured from the gravity equilibrium in contact (the state the disc starts from), so
+they show the friction-induced motion the paper's Figs. 21-36 plot.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .explicit import ExplicitResult
+
+
+def dominant_frequency(t: np.ndarray, x: np.ndarray, f_min: float = 0.0) -> float:
+    """Frequency [Hz] of the largest spectral peak of the detrended signal (Hann window), refined by
+    parabolic interpolation of the log-magnitude; 0 if the signal is constant."""
+    if t.size < 8:
+        return 0.0
+    y = x - np.mean(x)
+    if not np.any(np.abs(y) > 0):
+        return 0.0
+    dt = float(np.median(np.diff(t)))
+    spec = np.abs(np.fft.rfft(y * np.hanning(y.size)))
+    freqs = np.fft.rfftfreq(y.size, dt)
+    spec[freqs <= f_min] = 0.0
+    spec[0] = 0.0
+    k = int(np.argmax(spec))
+    if 0 < k < spec.size - 1 and spec[k - 1] > 0 and spec[k + 1] > 0:
+        a, b, c = np.log(spec[k - 1 : k + 2])
+        den = a - 2 * b + c
+        delta = 0.5 * (a - c) / den if den != 0 else 0.0
+        return float((k + delta) * (freqs[1] - freqs[0]))
+    return float(freqs[k])
+
+
+def window_envelope(t: np.ndarray, x: np.ndarray, n_windows: int = 10):
+    """Half peak-to-peak of x in ``n_windows`` equal time windows -> (window centre times, envelope)."""
+    edges = np.linspace(t[0], t[-1], n_windows + 1)
+    idx = np.clip(np.searchsorted(t, edges), 0, t.size)
+    centres, env = [], []
+    for a, b in zip(idx[:-1], idx[1:]):
+        seg = x[a:max(b, a + 1)]
+        centres.append(0.5 * (t[a] + t[min(max(b, a + 1), t.size) - 1]))
+        env.append(0.5 * (seg.max() - seg.min()))
+    return np.asarray(centres), np.asarray(env)
+
+
+def trend_sign(y: np.ndarray, rel: float = 0.05) -> int:
+    """+1/-1 if the least-squares slope changes y by more than ``rel`` of its mean over the range, else 0."""
+    if y.size < 2 or not np.any(y):
+        return 0
+    s = np.polyfit(np.arange(y.size), y, 1)[0] * (y.size - 1)
+    scale = np.mean(np.abs(y))
+    return 0 if abs(s) <= rel * scale else int(np.sign(s))
+
+
+def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None = None) -> dict:
+    """Scalar metrics; units: mm, mm s-1, Hz, N, s, fractions [-]."""
+    x = r.x - r.x[0]
+    y = r.y - r.y[0]
+    half = r.t >= 0.5 * r.t[-1]
+    m = {
+        "max_horizontal_displacement": float(x.max()),
+        "min_horizontal_displacement": float(x.min()),
+        "mean_horizontal_displacement": float(x[half].mean()),
+        "abs_mean_horizontal_displacement": float(abs(x[half].mean())),
+        "horizontal_amplitude": float(0.5 * (x[half].max() - x[half].min())),
+        "max_vertical_displacement": float(np.abs(y).max()),
+        "vertical_amplitude": float(0.5 * (y[half].max() - y[half].min())),
+        "max_abs_horizontal_velocity": float(np.abs(r.vx).max()),
+        "max_abs_vertical_velocity": float(np.abs(r.vy).max()),
+        "dominant_frequency": dominant_frequency(r.t[half], x[half]),
+        "vertical_dominant_frequency": dominant_frequency(r.t[half], y[half]),
+        "stick_fraction": r.fractions()["stick"],
+        "slip_fraction": r.fractions()["slip"],
+        "separation_fraction": r.fractions()["separation"],
+        "static_normal_force": r.static_normal_force,
+        "max_normal_force_ratio": float(r.normal_force.max() / r.static_normal_force) if r.static_normal_force > 0 else np.nan,
+        "stable_time_step": r.dt_crit,
+        "time_step": r.dt,
+        "increment_count": int(r.n_steps),
+        "increment_count_0p65s": int(np.ceil(0.65 / r.dt)),
+        "cpu_time": r.cpu_time,
+    }
+    stick_t = r.t[r.state == 1]
+    m["stick_end_time"] = float(stick_t.max()) if stick_t.size else 0.0
+    first_slip = r.t[r.state != 1]
+    m["first_stick_duration"] = float(first_slip.min()) if first_slip.size else float(r.t[-1])
+    xs = x[half] - x[half].mean()
+    ys = y[half] - y[half].mean()
+    den = np.sqrt((xs**2).sum() * (ys**2).sum())
+    m["horizontal_vertical_correlation"] = float((xs * ys).sum() / den) if den > 0 else 0.0
+    _, envx = window_envelope(r.t, x)
+    m["horizontal_amplitude_growth_ratio"] = float(envx[-1] / envx[1]) if envx[1] > 0 else np.nan
+    if natural_frequencies is not None and len(natural_frequencies):
+        nf = np.asarray(natural_frequencies)
+        for key, src in (("dominant_frequency", "horizontal"), ("vertical_dominant_frequency", "vertical")):
+            f = m[key]
+            m[f"{src}_nearest_mode_ratio"] = float(f / nf[np.argmin(np.abs(nf - f))]) if f > 0 else np.nan
+    return m
