@@ -4,6 +4,10 @@
 rule simulate_onedof:
     output:
         "results/onedof/{scene}/{reading}/{method}.nc",
+    wildcard_constraints:
+        scene="|".join(ONEDOF["scenes"]),
+        reading="|".join(ONEDOF["readings"]),
+        method="|".join(ONEDOF["methods"]),
     log:
         "results/logs/simulate_onedof/{scene}/{reading}/{method}.log",
     benchmark:
@@ -23,6 +27,8 @@ rule onedof_figure:
         ],
     output:
         "results/figures/{figure}/{reading}.png",
+    wildcard_constraints:
+        figure="|".join(ONEDOF["figures"]),
     log:
         "results/logs/onedof_figure/{figure}/{reading}.log",
     benchmark:
@@ -48,3 +54,26 @@ from stickslip.io.scenes import figure_runs, run_spec
 for _fig in ONEDOF["figures"]:
     for _scene, _reading, _method in figure_runs(config, _fig):
         run_spec(config, _scene, _reading, _method)
+
+
+rule friction_table:
+    """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
+    input:
+        lambda wc: onedof_dataset(
+            ONEDOF["friction_table"]["scene"], ONEDOF["friction_table"]["reading"], ONEDOF["friction_table"]["method"]
+        ),
+    output:
+        csv="results/onedof/friction_mu_vr.csv",
+        nc="results/onedof/friction_mu_vr.nc",
+    log:
+        "results/logs/friction_table/all.log",
+    benchmark:
+        "results/benchmarks/friction_table/all.tsv"
+    params:
+        table=ONEDOF["friction_table"],
+        config=config,
+    script:
+        "../scripts/friction_table.py"
+
+
+ALL_TARGETS.append("results/onedof/friction_mu_vr.csv")
