@@ -88,3 +88,19 @@ def test_repository_claims_files_load(repo_root):
     claims = load_claims(sorted((repo_root / "config" / "claims").glob("*.yaml")))
     assert len(claims) >= 10
     assert all(np.isfinite(c["value"]) for c in claims if c["kind"] == "value")
+
+
+def test_compare_against_a_constant_and_trend_along_a_data_variable():
+    row = {**ROW, "kind": "compare", "lhs": {"dataset": "r/a.nc", "variable": "amp"}, "relation": ">",
+           "rhs": {"value": 0.0}}
+    assert evaluate(row, "", opener).status == "reproduced"
+    ds = xr.Dataset({"env": ("window", [1.0, 2.0, 3.0]), "window_time": ("window", [0.0, 1.0, 2.0])})
+    trend = {**ROW, "kind": "trend", "dataset": "w.nc", "coord": "window_time", "variable": "env", "sign": 1}
+    assert evaluate(trend, "", lambda p: ds).status == "reproduced"
+
+
+def test_round_off_is_no_trend_and_no_effect_claims_hold():
+    ds = xr.Dataset({"amp": ("m", [1.0, 1.0 + 1e-12, 1.0 + 2e-12])}, coords={"m": [1.0, 2.0, 3.0]})
+    rising = {**ROW, "kind": "trend", "dataset": "s.nc", "coord": "m", "variable": "amp", "sign": 1}
+    assert evaluate(rising, "", lambda p: ds).status == "deviates"
+    assert evaluate({**rising, "sign": 0}, "", lambda p: ds).status == "reproduced"

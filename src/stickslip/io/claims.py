@@ -6,7 +6,8 @@ dataset path makes the claim be checked once per reading of the paper's equation
 ``value``    measured variable vs the reported number within a tolerance
 ``ratio``    lhs / rhs vs the reported number within a tolerance
 ``compare``  lhs <relation> rhs
-``trend``    sign of the least-squares slope of ``variable`` along coordinate ``coord`` of a sweep dataset
+``trend``    sign of the least-squares slope of ``variable`` along ``coord`` of a sweep dataset; ``sign: 0``
+             claims "no effect"; ``coord_scale: log`` fits against log10(coord). A change below ``min_relative_change`` (default TREND_FLOOR) is no trend.
 
 Status is ``reproduced``, ``deviates`` or ``not-comparable`` (nothing measurable, or the paper contradicts
 itself: rows with ``comparable: false``). ``expected`` pins the status (one string, or one per reading);
@@ -30,6 +31,17 @@ STATUSES = ("reproduced", "deviates", "not-comparable")
 KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
 REQUIRED = {"id", "section", "figure", "quote", "kind", "expected"}
+
+
+#: A fitted change smaller than this fraction of the mean |value| over the swept range counts as no trend
+#: (a directional sentence is about a visible effect, not about round-off).
+TREND_FLOOR = 0.05
+
+
+def relative_change(slope: float, x: np.ndarray, y: np.ndarray) -> float:
+    """Fitted change over the coordinate range, relative to the mean magnitude of the variable."""
+    scale = float(np.mean(np.abs(y)))
+    return slope * float(np.ptp(x)) / scale if scale > 0 else (0.0 if slope == 0 else np.sign(slope) * np.inf)
 
 
 class ClaimsError(ValueError):
@@ -104,10 +116,17 @@ def required_datasets(claims: list[dict], readings: list[str]) -> list[str]:
 
 
 def _scalar(open_dataset: Callable, ref: dict, reading: str) -> float:
+    """A dataset's scalar variable, or a constant given as ``{value: number}``."""
+    if "value" in ref and "dataset" not in ref:
+        return float(ref["value"])
     ds = open_dataset(ref["dataset"].format(reading=reading))
     if ref["variable"] not in ds:
         return float("nan")
     return float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
+
+
+def _name(ref: dict) -> str:
+    return ref.get("variable", f"{ref.get('value')}")
 
 
 def _per_reading(value, reading, default=""):
@@ -130,7 +149,7 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         else:
             lhs, rhs = _scalar(open_dataset, claim["lhs"], reading), _scalar(open_dataset, claim["rhs"], reading)
             measured = lhs / rhs if rhs != 0 else float("nan")
-            quantity = f"{claim['lhs']['variable']} / {claim['rhs']['variable']}"
+            quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
         if math.isfinite(measured):
             deviation = (measured - reported) / abs(reported) if reported != 0 else measured - reported
             tol = claim.get("tolerance", {})
@@ -141,7 +160,7 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
     elif kind == "compare":
         lhs, rhs = _scalar(open_dataset, claim["lhs"], reading), _scalar(open_dataset, claim["rhs"], reading)
         measured, reported = lhs, rhs
-        quantity = f"{claim['lhs']['variable']} {claim['relation']} {claim['rhs']['variable']}"
+        quantity = f"{_name(claim['lhs'])} {claim['relation']} {_name(claim['rhs'])}"
         if math.isfinite(lhs) and math.isfinite(rhs):
             holds = RELATIONS[claim["relation"]](lhs, rhs)
             detail = f"{lhs:.4g} {claim['relation']} {rhs:.4g} is {holds}"
@@ -149,14 +168,20 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         ds = open_dataset(claim["dataset"].format(reading=reading))
         quantity = f"d {claim['variable']} / d {claim['coord']}"
         reported = float(claim["sign"])
-        if claim["variable"] in ds and claim["coord"] in ds.coords:
-            x = np.asarray(ds[claim["coord"]].values, dtype=float)
-            y = np.asarray(ds[claim["variable"]].values, dtype=float)
+        if claim["variable"] in ds and claim["coord"] in ds.variables:
+            x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
+            y = np.asarray(ds[claim["variable"]].values, dtype=float).reshape(-1)
+            if claim.get("coord_scale") == "log":  # decade sweeps: the trend per decade
+                x = np.log10(np.where(x > 0, x, np.nan))
             ok = np.isfinite(x) & np.isfinite(y)
-            if ok.sum() >= 2:
+            if ok.sum() >= 2 and np.ptp(x[ok]) > 0:
                 measured = float(np.polyfit(x[ok], y[ok], 1)[0])
-                holds = np.sign(measured) == np.sign(reported)
-                detail = f"slope {measured:.4g} ({'rising' if measured > 0 else 'falling'})"
+                change = relative_change(measured, x[ok], y[ok])
+                floor = float(claim.get("min_relative_change", TREND_FLOOR))
+                direction = 0.0 if abs(change) < floor else float(np.sign(measured))
+                holds = direction == np.sign(reported)
+                words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
+                detail = f"slope {measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
     if claim.get("comparable", True) is False:
         status = "not-comparable"
     elif holds is None:
