@@ -3,7 +3,7 @@
 import pytest
 import yaml
 
-from conftest import copy_project, run_snakemake
+from project_run import copy_project, run_snakemake
 from stickslip.io.scenes import run_spec
 from stickslip.model import ParameterError
 

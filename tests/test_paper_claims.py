@@ -5,7 +5,7 @@ Builds (or reuses) the repository's own results/ up to the deviations table.
 
 import pytest
 
-from conftest import run_snakemake
+from project_run import run_snakemake
 from stickslip.io.claims import read_table, unexpected
 
 

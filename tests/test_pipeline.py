@@ -3,7 +3,7 @@
 import pytest
 import xarray as xr
 
-from conftest import copy_project, run_snakemake
+from project_run import copy_project, run_snakemake
 from stickslip.io.claims import read_table
 
 

@@ -103,8 +103,10 @@ rule fe_notebook:
         "results/logs/fe_notebook/section_09_12_beam_on_disc.log",
     benchmark:
         "results/benchmarks/fe_notebook/section_09_12_beam_on_disc.tsv"
+    params:
+        python=sys.executable,
     shell:
-        "python workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
+        "{params.python} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
 
 
 ALL_TARGETS.extend(FE_DATASETS)

@@ -51,4 +51,5 @@ rule methods_notebook:
     output: "results/notebooks/methods_work_precision.html"
     log: "results/logs/methods_notebook/all.log"
     benchmark: "results/benchmarks/methods_notebook/all.tsv"
-    shell: "python workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
+    params: python=sys.executable
+    shell: "{params.python} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"

@@ -29,6 +29,8 @@ rule render_notebook:
         data=lambda wc: notebook_inputs(wc.name),
     output:
         "results/notebooks/{name}.html",
+    wildcard_constraints:
+        name="|".join(config["notebooks"]),
     log:
         "results/logs/render_notebook/{name}.log",
     benchmark:
