@@ -1,0 +1,138 @@
+"""Parameter sweeps: metrics of many runs on a grid, split into chunks that can run as separate jobs.
+
+A sweep is a list of axes; the grid is their Cartesian product in C order (last axis fastest). A chunk is a
+contiguous slice of the flattened grid, so any chunk size tiles the grid and chunks merge by concatenation.
+An axis can carry linked parameters set proportionally (the paper's mass sweep raises N = 10 M with M).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+import xarray as xr
+
+from ..model.equations import BeltModel
+from ..model.params import BeltParams, ParameterError
+from .metrics import limit_cycle_metrics
+
+
+@dataclass(frozen=True)
+class SweepAxis:
+    name: str
+    """Parameter of BeltParams that the axis sets."""
+    values: tuple
+    units: str = ""
+    long_name: str = ""
+    linked: dict = field(default_factory=dict)
+    """Other parameters set to factor * value along this axis, e.g. {"normal_force": 10.0}."""
+
+    def __post_init__(self):
+        if len(self.values) == 0:
+            raise ParameterError(f"sweep axis {self.name}: values is empty")
+        if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in self.values):
+            raise ParameterError(f"sweep axis {self.name}: values must be finite numbers")
+
+
+def grid_size(axes: list[SweepAxis]) -> int:
+    return int(np.prod([len(a.values) for a in axes]))
+
+
+def chunk_count(axes: list[SweepAxis], chunk_size: int) -> int:
+    if chunk_size < 1:
+        raise ParameterError(f"chunk_size: must be >= 1, got {chunk_size}")
+    return math.ceil(grid_size(axes) / chunk_size)
+
+
+def chunk_points(axes: list[SweepAxis], chunk_size: int, chunk: int) -> list[dict]:
+    """Parameter overrides of the grid points in one chunk (flattened C order)."""
+    n = grid_size(axes)
+    start, stop = chunk * chunk_size, min((chunk + 1) * chunk_size, n)
+    if not 0 <= start < n:
+        raise ParameterError(f"chunk: {chunk} out of range (0..{chunk_count(axes, chunk_size) - 1})")
+    combos = itertools.islice(itertools.product(*(a.values for a in axes)), start, stop)
+    points = []
+    for combo in combos:
+        point = {}
+        for axis, value in zip(axes, combo):
+            point[axis.name] = float(value)
+            for other, factor in axis.linked.items():
+                point[other] = float(factor) * float(value)
+        points.append(point)
+    return points
+
+
+def run_points(base: BeltParams, variant: str, points: list[dict], solver, t_end: float, t_eval: np.ndarray,
+               transient: float, count_window: float = 18.0,
+               progress: Callable[[int, int], None] | None = None) -> dict[str, np.ndarray]:
+    """Metric arrays (one entry per point); a failed run gives NaN metrics and solver_ok = 0."""
+    rows = []
+    for i, point in enumerate(points):
+        model = BeltModel.build(base.with_(**point), variant)
+        traj = solver.solve(model, t_end, t_eval)
+        metrics = limit_cycle_metrics(traj, transient, count_window)
+        rows.append(({k: m.value for k, m in metrics.items()}, metrics))
+        if progress is not None:
+            progress(i + 1, len(points))
+    names, meta = {}, {}
+    for values, metrics in rows:
+        for k, m in metrics.items():
+            names.setdefault(k, None)
+            meta.setdefault(k, m)
+    out = {k: np.array([values.get(k, np.nan) for values, _ in rows], dtype=float) for k in names}
+    out["_meta"] = meta
+    return out
+
+
+def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: dict) -> xr.Dataset:
+    """One chunk as a dataset over the flattened grid index ``point``."""
+    n = grid_size(axes)
+    start = chunk * chunk_size
+    count = len(next(v for k, v in results.items() if k != "_meta"))
+    index = np.arange(start, start + count)
+    ds = xr.Dataset(coords={"point": ("point", index, {"long_name": "flattened grid index", "units": "1"})})
+    for name, metric in results["_meta"].items():
+        ds[name] = ("point", results[name], {"units": metric.units, "long_name": metric.long_name})
+    ds.attrs["grid_size"] = n
+    return ds
+
+
+def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
+    """Concatenate chunk datasets and unflatten the grid into one dimension per axis."""
+    flat = xr.concat(sorted(chunks, key=lambda d: int(d.point[0])), dim="point")
+    n = grid_size(axes)
+    if flat.sizes["point"] != n or not np.array_equal(flat.point.values, np.arange(n)):
+        raise ValueError(f"chunks cover {flat.sizes['point']} of {n} grid points or overlap")
+    shape = [len(a.values) for a in axes]
+    dims = [a.name for a in axes]
+    out = xr.Dataset(coords={a.name: (a.name, np.asarray(a.values, dtype=float),
+                                      {"units": a.units or "1", "long_name": a.long_name or a.name})
+                             for a in axes})
+    for name, var in flat.data_vars.items():
+        out[name] = (dims, var.values.reshape(shape), dict(var.attrs))
+    for axis in axes:
+        for other, factor in axis.linked.items():
+            out[other] = (axis.name, float(factor) * np.asarray(axis.values, dtype=float),
+                          {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"})
+    return out
+
+
+class ProgressLog:
+    """Calls ``emit(message)`` at most every ``every`` seconds with done/total, elapsed and remaining time."""
+
+    def __init__(self, emit: Callable[[str], None], every: float = 10.0):
+        self.emit, self.every = emit, every
+        self.start = self.last = time.monotonic()
+
+    def __call__(self, done: int, total: int) -> None:
+        now = time.monotonic()
+        if done < total and now - self.last < self.every:
+            return
+        self.last = now
+        elapsed = now - self.start
+        remaining = elapsed / done * (total - done) if done else float("nan")
+        self.emit(f"{done}/{total} points, {elapsed:.1f} s elapsed, about {remaining:.1f} s remaining")
