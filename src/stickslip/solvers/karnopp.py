@@ -12,10 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from ..model.equations import BeltModel
-from .base import SolverStats, Timer, Trajectory, classify_phase
+from .base import Trajectory
+from .ivp import default_t_eval, integrate
 
 
 @dataclass
@@ -35,18 +35,12 @@ class Karnopp:
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
         if self.eta <= 0:
             raise ValueError(f"eta: must be > 0, got {self.eta!r}")
-        if t_eval is None:
-            t_eval = np.linspace(0.0, t_end, 2001)
-        t_eval = np.asarray(t_eval, dtype=float)
+        t_eval = default_t_eval(t_end, t_eval)
         p, f, m = model.params, model.friction, model.mass
         a_abs = abs(f.a)
         eta = self.eta
         sticky = f.can_stick
-        calls = 0
-
         def rhs(t, y):
-            nonlocal calls
-            calls += 1
             x, v = y
             vb = float(p.belt_velocity_at(t))
             if sticky and abs(v - vb) < eta:
@@ -56,24 +50,6 @@ class Karnopp:
                 return np.array([v, model.acceleration(t, x, v, sign=lambda _u: s_eff)])
             return np.array([v, model.acceleration(t, x, v)])
 
-        stats = SolverStats()
-        with Timer() as timer:
-            sol = solve_ivp(rhs, (0.0, t_end), [p.x0, p.v0], method=self.method, rtol=self.rtol,
-                            atol=self.atol, max_step=self.max_step, dense_output=True)
-        stats.cpu_time = timer.elapsed
-        stats.rhs_evaluations = calls
-        if not sol.success:
-            stats.status, stats.message, stats.failures = "failed", str(sol.message), 1
-            x = np.full(t_eval.shape, np.nan)
-            v = np.full(t_eval.shape, np.nan)
-        else:
-            stats.steps = max(len(sol.t) - 1, 0)
-            stats.min_step = float(np.min(np.diff(sol.t))) if len(sol.t) > 1 else float("nan")
-            x, v = sol.sol(t_eval)
-            if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
-                stats.status, stats.message, stats.failures = "failed", "non-finite state", 1
-        vb = model.belt_velocity(t_eval)
-        return Trajectory(
-            t=t_eval, x=x, v=v, phase=classify_phase(v, vb, eta), belt_velocity=vb,
-            stats=stats, method=f"{self.name}_{self.method}", settings=self.settings,
-        )
+        return integrate(model, rhs, t_end, t_eval, method=self.method, rtol=self.rtol, atol=self.atol,
+                         max_step=self.max_step, stick_tolerance=eta, label=f"{self.name}_{self.method}",
+                         settings=self.settings)

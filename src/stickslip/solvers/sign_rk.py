@@ -9,10 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
-
 from ..model.equations import BeltModel
-from .base import SolverStats, Timer, Trajectory, classify_phase
+from .base import Trajectory
+from .ivp import default_t_eval, integrate
 
 
 @dataclass
@@ -31,34 +30,7 @@ class SignRungeKutta:
                 "max_step": self.max_step, "stick_tolerance": self.stick_tolerance}
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        if t_eval is None:
-            t_eval = np.linspace(0.0, t_end, 2001)
-        t_eval = np.asarray(t_eval, dtype=float)
-        calls = 0
-
-        def rhs(t, y):
-            nonlocal calls
-            calls += 1
-            return model.rhs(t, y)
-
-        stats = SolverStats()
-        y0 = [model.params.x0, model.params.v0]
-        with Timer() as timer:
-            sol = solve_ivp(rhs, (0.0, t_end), y0, method=self.method, rtol=self.rtol, atol=self.atol,
-                            max_step=self.max_step, dense_output=True)
-        stats.cpu_time = timer.elapsed
-        stats.rhs_evaluations = calls
-        stats.steps = max(len(sol.t) - 1, 0)
-        if not sol.success:
-            stats.status, stats.message, stats.failures = "failed", str(sol.message), 1
-            x = np.full(t_eval.shape, np.nan)
-            v = np.full(t_eval.shape, np.nan)
-        else:
-            x, v = sol.sol(t_eval)
-            if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
-                stats.status, stats.message, stats.failures = "failed", "non-finite state", 1
-        vb = model.belt_velocity(t_eval)
-        return Trajectory(
-            t=t_eval, x=x, v=v, phase=classify_phase(v, vb, self.stick_tolerance), belt_velocity=vb,
-            stats=stats, method=f"{self.name}_{self.method}", settings=self.settings,
-        )
+        return integrate(model, model.rhs, t_end, default_t_eval(t_end, t_eval), method=self.method,
+                         rtol=self.rtol, atol=self.atol, max_step=self.max_step,
+                         stick_tolerance=self.stick_tolerance, label=f"{self.name}_{self.method}",
+                         settings=self.settings)
