@@ -12,7 +12,12 @@ rule claims_table:
         claims=CLAIM_FILES,
         datasets=required_datasets(load_claims(CLAIM_FILES), CLAIM_READINGS),
     output:
-        csv="results/claims/deviations.csv",
+        csv=report(
+            "results/claims/deviations.csv",
+            caption=REPORT_CAPTION_FILE,
+            category="Claims",
+            labels={"table": "deviations"},
+        ),
         md="results/claims/deviations.md",
     log:
         "results/logs/claims_table.log",

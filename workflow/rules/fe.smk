@@ -73,7 +73,12 @@ rule fe_figure:
     input:
         "results/fe/{scene}.nc",
     output:
-        "results/figures/fe/{scene}.png",
+        report(
+            "results/figures/fe/{scene}.png",
+            caption=REPORT_CAPTION_FILE,
+            category="Beam on rotating disc (Sections 9-12)",
+            labels={"scene": "{scene}"},
+        ),
     log:
         "results/logs/fe_figure/{scene}.log",
     benchmark:
@@ -98,7 +103,12 @@ rule fe_notebook:
         data=FE_DATASETS,
         figures=[f"results/figures/fe/{s}.png" for s in FE_SCENES],
     output:
-        "results/notebooks/section_09_12_beam_on_disc.html",
+        report(
+            "results/notebooks/section_09_12_beam_on_disc.html",
+            caption=REPORT_CAPTION_FILE,
+            category="Notebooks",
+            labels={"notebook": "section_09_12_beam_on_disc"},
+        ),
     log:
         "results/logs/fe_notebook/section_09_12_beam_on_disc.log",
     benchmark:

@@ -36,8 +36,16 @@ rule methods_figures:
         work_precision=METHODS_NC,
         failure_map="results/methods/failure_map.nc",
     output:
-        work_precision=METHODS_PNG,
-        failure_map="results/figures/methods/failure_map.png",
+        work_precision=[
+            report(p, caption=REPORT_CAPTION_FILE, category="Integration methods", labels={"chart": Path(p).stem})
+            for p in METHODS_PNG
+        ],
+        failure_map=report(
+            "results/figures/methods/failure_map.png",
+            caption=REPORT_CAPTION_FILE,
+            category="Integration methods",
+            labels={"chart": "failure_map"},
+        ),
     log: "results/logs/methods_figures/all.log"
     benchmark: "results/benchmarks/methods_figures/all.tsv"
     script: "../scripts/methods_figures.py"
@@ -48,7 +56,7 @@ rule methods_notebook:
         notebook="notebooks/methods_work_precision.py",
         data=METHODS_NC + ["results/methods/failure_map.nc"],
         figures=METHODS_PNG + ["results/figures/methods/failure_map.png"],
-    output: "results/notebooks/methods_work_precision.html"
+    output: report("results/notebooks/methods_work_precision.html", caption=REPORT_CAPTION_FILE, category="Notebooks", labels={"notebook": "methods_work_precision"})
     log: "results/logs/methods_notebook/all.log"
     benchmark: "results/benchmarks/methods_notebook/all.tsv"
     params: python=sys.executable

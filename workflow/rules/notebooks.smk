@@ -28,7 +28,12 @@ rule render_notebook:
         notebook="notebooks/{name}.py",
         data=lambda wc: notebook_inputs(wc.name),
     output:
-        "results/notebooks/{name}.html",
+        report(
+            "results/notebooks/{name}.html",
+            caption=REPORT_CAPTION_FILE,
+            category="Notebooks",
+            labels={"notebook": "{name}"},
+        ),
     wildcard_constraints:
         name="|".join(config["notebooks"]),
     log:

@@ -125,6 +125,17 @@ def _scalar(open_dataset: Callable, ref: dict, reading: str) -> float:
     return float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
 
 
+def solver_failures(claim: dict, reading: str, open_dataset: Callable) -> list[str]:
+    """Messages of the failed solver runs among a claim's datasets (``solver_status`` != 0)."""
+    out = []
+    for path in dataset_paths(claim):
+        ds = open_dataset(path.format(reading=reading))
+        status = ds.variables.get("solver_status") if hasattr(ds, "variables") else None
+        if status is not None and np.any(np.asarray(status.values) != 0):
+            out.append(f"{path.format(reading=reading)}: {status.attrs.get('message', 'no message')}")
+    return out
+
+
 def _name(ref: dict) -> str:
     return ref.get("variable", f"{ref.get('value')}")
 
@@ -182,7 +193,11 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
                 holds = direction == np.sign(reported)
                 words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
                 detail = f"slope {measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
-    if claim.get("comparable", True) is False:
+    failures = solver_failures(claim, reading, open_dataset)
+    if failures:  # a failed run measures nothing: never compare its numbers
+        status = "not-comparable"
+        detail = "solver failed (" + "; ".join(failures) + ")"
+    elif claim.get("comparable", True) is False:
         status = "not-comparable"
     elif holds is None:
         status = "not-comparable"

@@ -75,9 +75,12 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
             "units": "1", "long_name": "segment contact phase",
             "flag_values": np.array([-1, 0, 1], dtype=np.int8), "flag_meanings": "slip_backward stick slip_forward"})
     stats = traj.stats
-    ds["solver_status"] = ((), np.int8(0 if stats.status == "ok" else 1), {
+    failed, message = stats.status != "ok", stats.message or "none"
+    if not failed and not (np.all(np.isfinite(traj.x)) and np.all(np.isfinite(traj.v))):
+        failed, message = True, "non-finite state (NaN or overflow) in the trajectory"
+    ds["solver_status"] = ((), np.int8(1 if failed else 0), {
         "long_name": "solver status", "units": "1", "flag_values": np.array([0, 1], dtype=np.int8),
-        "flag_meanings": "ok failed", "message": stats.message or "none"})
+        "flag_meanings": "ok failed", "message": message})
     for name, units, long_name in (
         ("rhs_evaluations", "1", "right-hand-side evaluations"), ("steps", "1", "accepted steps or segments"),
         ("events", "1", "switching events handled"), ("cpu_time", "s", "process CPU time of the solve"),
@@ -105,16 +108,61 @@ def provenance_attrs(*, title: str, scene: dict, interpretation: str | dict, met
     return attrs
 
 
+def _merged_attrs(existing: dict, provenance: dict) -> dict:
+    """Provenance fills in; what the dataset already says wins (its title, Conventions, ...).
+
+    ``history`` is the exception CF describes: an audit trail, so the writer's line is appended.
+    """
+    out = dict(provenance)
+    for key, value in existing.items():
+        if key == "history" and value:
+            out[key] = f"{value}\n{provenance['history']}"
+        else:
+            out[key] = value
+    return out
+
+
+def cf_encoding(ds: xr.Dataset) -> dict:
+    """Per-variable encoding: compressed float data; no ``_FillValue`` on coordinates (CF 2.5.1)."""
+    encoding = {name: {"zlib": True, "complevel": 4} for name, var in ds.data_vars.items() if var.ndim > 0
+                and var.dtype.kind == "f"}
+    for name in ds.coords:
+        encoding.setdefault(str(name), {})["_FillValue"] = None
+    return encoding
+
+
+def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
+    """Attributes CF asks for that a dataset may leave out, filled in without overwriting any.
+
+    * a ``time`` coordinate gets ``standard_name: time`` and ``axis: T`` (CF 4.4, 5.1). Its units stay
+      ``s``: it is elapsed simulated time, not a calendar date (see ``tests/test_cf_compliance.py``).
+    * every variable gets a ``long_name`` (its name, spaced) if it has neither one nor a ``standard_name``.
+    """
+    if "time" in ds.coords:
+        for key, value in (("standard_name", "time"), ("axis", "T"), ("long_name", "time")):
+            ds["time"].attrs.setdefault(key, value)
+    for name, var in ds.variables.items():
+        if "long_name" not in var.attrs and "standard_name" not in var.attrs:
+            var.attrs["long_name"] = str(name).replace("_", " ")
+    return ds
+
+
 def write_dataset(ds: xr.Dataset, path: str | os.PathLike, *, scene: dict, interpretation: str | dict,
                   method: dict, title: str | None = None) -> Path:
-    """Attach provenance and write atomically: a temporary file in the target folder, then rename."""
+    """Attach provenance and write atomically: a temporary file in the target folder, then rename.
+
+    Attributes the dataset already has are kept (``title`` given here is used only when the dataset has
+    none). The temporary file is hidden (``.<name>.*.tmp``) and removed on any error, so a killed or failed
+    job never leaves a readable partial file under the target name.
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     ds = ds.copy()
-    ds.attrs.update(provenance_attrs(title=title or ds.attrs.get("title", path.stem), scene=scene,
-                                     interpretation=interpretation, method=method))
-    encoding = {name: {"zlib": True, "complevel": 4} for name, var in ds.data_vars.items() if var.ndim > 0
-                and var.dtype.kind == "f"}
+    prov = provenance_attrs(title=title or ds.attrs.get("title") or path.stem, scene=scene,
+                            interpretation=interpretation, method=method)
+    ds.attrs = _merged_attrs(ds.attrs, prov)
+    ds = cf_fill_in(ds)
+    encoding = cf_encoding(ds)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     try:
