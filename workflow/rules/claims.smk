@@ -5,6 +5,11 @@ from stickslip.io.claims import load_claims, required_datasets
 
 CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
 CLAIM_READINGS = config["claims"]["readings"]
+for _reading in CLAIM_READINGS:  # fail at parse time, naming the key, not with a missing-input error later
+    if _reading not in ONEDOF["readings"]:
+        raise ValueError(
+            f"claims.readings: {_reading!r} is not a reading of onedof.readings ({sorted(ONEDOF['readings'])})"
+        )
 
 
 rule claims_table:
