@@ -64,15 +64,20 @@ def datasets(workdir: Path) -> list[Path]:
 
 
 def data_differences(path_a: Path, path_b: Path) -> list[str]:
-    """Variables (data and coordinates) whose values or dtypes differ bit for bit; attributes are ignored."""
+    """Variables (data and coordinates) whose values or dtypes differ bit for bit; attributes are ignored,
+    and so are CPU-time measurements (``stickslip.io.netcdf.is_machine_measurement``), which time the machine."""
     import numpy as np
     import xarray as xr
+
+    from stickslip.io.netcdf import is_machine_measurement
 
     out = []
     with xr.open_dataset(path_a, decode_times=False) as a, xr.open_dataset(path_b, decode_times=False) as b:
         if set(a.variables) != set(b.variables):
             return [f"variables differ: {sorted(set(a.variables) ^ set(b.variables))}"]
         for name in a.variables:
+            if is_machine_measurement(str(name)):
+                continue
             va, vb = a[name].values, b[name].values
             if va.dtype != vb.dtype or va.shape != vb.shape:
                 out.append(f"{name}: {va.dtype}{va.shape} vs {vb.dtype}{vb.shape}")

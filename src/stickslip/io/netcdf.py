@@ -136,6 +136,7 @@ def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
 
     * a ``time`` coordinate gets ``standard_name: time`` and ``axis: T`` (CF 4.4, 5.1). Its units stay
       ``s``: it is elapsed simulated time, not a calendar date (see ``tests/test_cf_compliance.py``).
+    * CPU-time variables get a ``comment`` saying they measure the machine (see ``is_machine_measurement``).
     * every variable gets a ``long_name`` (its name, spaced) if it has neither one nor a ``standard_name``.
     """
     if "time" in ds.coords:
@@ -144,7 +145,17 @@ def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
     for name, var in ds.variables.items():
         if "long_name" not in var.attrs and "standard_name" not in var.attrs:
             var.attrs["long_name"] = str(name).replace("_", " ")
+        if is_machine_measurement(str(name)):
+            var.attrs.setdefault("comment", MACHINE_MEASUREMENT_COMMENT)
     return ds
+
+
+#: Variables that measure the machine (CPU time and ratios of it), not the model: they differ between runs.
+MACHINE_MEASUREMENT_COMMENT = "measured on the machine that ran the job: not reproducible bit for bit"
+
+
+def is_machine_measurement(name: str) -> bool:
+    return "cpu_" in name or name.endswith("_cpu") or name == "cpu"
 
 
 def write_dataset(ds: xr.Dataset, path: str | os.PathLike, *, scene: dict, interpretation: str | dict,
