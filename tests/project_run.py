@@ -20,11 +20,22 @@ def copy_project(dest: Path) -> Path:
 
 
 def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
-    cmd = [sys.executable, "-m", "snakemake", "-j2", "--directory", str(workdir),
-           "--snakefile", str(workdir / "Snakefile"), *args]
+    cmd = [
+        sys.executable,
+        "-m",
+        "snakemake",
+        "-j2",
+        "--directory",
+        str(workdir),
+        "--snakefile",
+        str(workdir / "Snakefile"),
+        *args,
+    ]
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     if check and proc.returncode != 0:
-        raise AssertionError(f"snakemake failed ({proc.returncode}):\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}")
+        raise AssertionError(
+            f"snakemake failed ({proc.returncode}):\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}"
+        )
     return proc
 
 
@@ -34,13 +45,19 @@ def small_config_args(workdir: Path, *extra: Path) -> list[str]:
     return ["--configfile", *files] if files else []
 
 
-
-
-
 def start_snakemake(workdir: Path, *args, log: Path):
     """Snakemake in its own process group (so a test can kill it and every job it started)."""
-    cmd = [sys.executable, "-m", "snakemake", "-j2", "--directory", str(workdir),
-           "--snakefile", str(workdir / "Snakefile"), *args]
+    cmd = [
+        sys.executable,
+        "-m",
+        "snakemake",
+        "-j2",
+        "--directory",
+        str(workdir),
+        "--snakefile",
+        str(workdir / "Snakefile"),
+        *args,
+    ]
     fh = open(log, "w")
     return subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, start_new_session=True)
 
@@ -65,7 +82,8 @@ def datasets(workdir: Path) -> list[Path]:
 
 def data_differences(path_a: Path, path_b: Path) -> list[str]:
     """Variables (data and coordinates) whose values or dtypes differ bit for bit; attributes are ignored,
-    and so are CPU-time measurements (``stickslip.io.netcdf.is_machine_measurement``), which time the machine."""
+    and so are CPU-time measurements (``stickslip.io.netcdf.is_machine_measurement``): they time the
+    machine, not the model."""
     import numpy as np
     import xarray as xr
 

@@ -20,32 +20,71 @@ CASES = {
     "mass_zero": ({"onedof": {"defaults": {"params": {"mass": 0.0}}}}, ["mass"]),
     "stiffness_zero": ({"onedof": {"scenes": {"fig02": {"params": {"stiffness": 0.0}}}}}, ["stiffness"]),
     "stiffness_negative": ({"onedof": {"scenes": {"fig02": {"params": {"stiffness": -5.0}}}}}, ["stiffness"]),
-    "stiffness_nan": ({"onedof": {"scenes": {"fig02": {"params": {"stiffness": float("nan")}}}}}, ["stiffness"]),
+    "stiffness_nan": (
+        {"onedof": {"scenes": {"fig02": {"params": {"stiffness": float("nan")}}}}},
+        ["stiffness"],
+    ),
     "mass_inf": ({"onedof": {"defaults": {"params": {"mass": float("inf")}}}}, ["mass"]),
     "stiffness_string": ({"onedof": {"defaults": {"params": {"stiffness": "five"}}}}, ["stiffness", "five"]),
     "t_end_string": ({"onedof": {"defaults": {"t_end": "long"}}}, ["t_end"]),
     "t_end_nan": ({"onedof": {"defaults": {"t_end": float("nan")}}}, ["t_end"]),
-    "readings_not_a_list": ({"onedof": {"figures": {"fig02": {"readings": "consistent_caption"}}}}, ["readings"]),
+    "readings_not_a_list": (
+        {"onedof": {"figures": {"fig02": {"readings": "consistent_caption"}}}},
+        ["readings"],
+    ),
     "unknown_method": ({"onedof": {"figures": {"fig02": {"methods": ["exact", "rk99"]}}}}, ["rk99"]),
     "unknown_solver": ({"onedof": {"methods": {"ode45": {"solver": "nosuch"}}}}, ["nosuch"]),
     "unknown_scene": ({"onedof": {"figures": {"fig02": {"scene": "fig99"}}}}, ["fig99"]),
     "unknown_reading": ({"onedof": {"figures": {"fig02": {"readings": ["eq9_text"]}}}}, ["eq9_text"]),
     "unknown_claims_reading": ({"claims": {"readings": ["eq9_text"]}}, ["claims.readings", "eq9_text"]),
     "unknown_variant": ({"onedof": {"readings": {"eq3_text": {"variant": "eq5_printed"}}}}, ["variant"]),
-    "missing_friction_table": ({"fe": {"friction_table": "results/onedof/no_such_table.csv"}},
-                               ["fe.friction_table", "no_such_table.csv"]),
-    "fe_negative_modulus": ({"fe": {"defaults": {"beam": {"youngs_modulus_gpa": -210.0}}}}, ["youngs_modulus_gpa"]),
+    "missing_friction_table": (
+        {"fe": {"friction_table": "results/onedof/no_such_table.csv"}},
+        ["fe.friction_table", "no_such_table.csv"],
+    ),
+    "fe_negative_modulus": (
+        {"fe": {"defaults": {"beam": {"youngs_modulus_gpa": -210.0}}}},
+        ["youngs_modulus_gpa"],
+    ),
     "fe_nan_duration": ({"fe": {"defaults": {"solver": {"duration": float("nan")}}}}, ["duration"]),
-    "fe_unknown_sweep_base": ({"fe": {"sweeps": {"angle_sweep": {"base": "no_scene"}}}}, ["fe.sweeps.angle_sweep.base"]),
+    "fe_unknown_sweep_base": (
+        {"fe": {"sweeps": {"angle_sweep": {"base": "no_scene"}}}},
+        ["fe.sweeps.angle_sweep.base"],
+    ),
     "methods_negative_mass": ({"methods_study": {"base_params": {"mass": -1.0}}}, ["mass"]),
 }
 
 BAD_CLAIMS = {
-    "claims_missing_key": ([{"id": "x1", "section": "3", "figure": "Fig. 2", "kind": "value"}], ["x1", "missing key"]),
-    "claims_bad_kind": ([{"id": "x2", "section": "3", "figure": "Fig. 2", "quote": "q", "kind": "guess",
-                          "expected": "reproduced"}], ["x2", "kind"]),
-    "claims_bad_status": ([{"id": "x3", "section": "3", "figure": "Fig. 2", "quote": "q", "kind": "value",
-                            "expected": "maybe"}], ["x3", "maybe"]),
+    "claims_missing_key": (
+        [{"id": "x1", "section": "3", "figure": "Fig. 2", "kind": "value"}],
+        ["x1", "missing key"],
+    ),
+    "claims_bad_kind": (
+        [
+            {
+                "id": "x2",
+                "section": "3",
+                "figure": "Fig. 2",
+                "quote": "q",
+                "kind": "guess",
+                "expected": "reproduced",
+            }
+        ],
+        ["x2", "kind"],
+    ),
+    "claims_bad_status": (
+        [
+            {
+                "id": "x3",
+                "section": "3",
+                "figure": "Fig. 2",
+                "quote": "q",
+                "kind": "value",
+                "expected": "maybe",
+            }
+        ],
+        ["x3", "maybe"],
+    ),
 }
 
 
@@ -78,7 +117,9 @@ def test_broken_config_is_rejected_before_any_job(case, pristine, tmp_path):
     assert code != 0, text[-3000:]
     for word in words:
         assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
-    assert not (work / "results").exists(), f"{case}: something was written: {list((work / 'results').rglob('*'))}"
+    assert not (work / "results").exists(), (
+        f"{case}: something was written: {list((work / 'results').rglob('*'))}"
+    )
 
 
 @pytest.mark.pipeline

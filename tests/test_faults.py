@@ -41,7 +41,9 @@ def test_killed_job_leaves_no_dataset_and_rerun_matches(tmp_path):
     proc.wait(timeout=30)
 
     assert not (work / TARGET).exists(), "a partial dataset survived the kill"
-    leftovers = [p.name for p in (work / "results" / "fe").iterdir()] if (work / "results" / "fe").exists() else []
+    leftovers = (
+        [p.name for p in (work / "results" / "fe").iterdir()] if (work / "results" / "fe").exists() else []
+    )
     assert not [n for n in leftovers if n.endswith(".nc")], leftovers
 
     run_snakemake(work, "--unlock", *args)

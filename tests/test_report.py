@@ -15,12 +15,33 @@ def test_paper_figures():
 
 
 ROWS = [
-    {"claim": "a", "reading": "r1", "figure": "Fig. 2", "status": "reproduced", "expected": "reproduced",
-     "matches_expected": "True", "reason": ""},
-    {"claim": "b", "reading": "r2", "figure": "Fig. 2-3", "status": "deviates", "expected": "deviates",
-     "matches_expected": "True", "reason": "measured 1 vs reported 2"},
-    {"claim": "c", "reading": "r1", "figure": "Fig. 21", "status": "not-comparable", "expected": "reproduced",
-     "matches_expected": "False", "reason": "solver failed (x.nc: step size collapsed)"},
+    {
+        "claim": "a",
+        "reading": "r1",
+        "figure": "Fig. 2",
+        "status": "reproduced",
+        "expected": "reproduced",
+        "matches_expected": "True",
+        "reason": "",
+    },
+    {
+        "claim": "b",
+        "reading": "r2",
+        "figure": "Fig. 2-3",
+        "status": "deviates",
+        "expected": "deviates",
+        "matches_expected": "True",
+        "reason": "measured 1 vs reported 2",
+    },
+    {
+        "claim": "c",
+        "reading": "r1",
+        "figure": "Fig. 21",
+        "status": "not-comparable",
+        "expected": "reproduced",
+        "matches_expected": "False",
+        "reason": "solver failed (x.nc: step size collapsed)",
+    },
 ]
 
 

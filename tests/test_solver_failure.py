@@ -12,7 +12,9 @@ from stickslip.solvers import ExactSwitchSolver
 
 @pytest.fixture(scope="module")
 def good():
-    return ExactSwitchSolver().solve(BeltModel.build(PAPER_BASELINE, "consistent"), 20.0, np.linspace(0, 20, 2001))
+    return ExactSwitchSolver().solve(
+        BeltModel.build(PAPER_BASELINE, "consistent"), 20.0, np.linspace(0, 20, 2001)
+    )
 
 
 def _failed_copy(traj, message):
@@ -44,9 +46,18 @@ def test_claim_on_failed_run_is_not_comparable(good):
     bad = _failed_copy(good, "blow-up: |x| > 1e6")
     bad_ds = netcdf.trajectory_dataset(bad, limit_cycle_metrics(bad, 5.0))
     bad_ds["frequency_peaks"] = ((), 0.25, {"units": "Hz"})  # even a plausible stray number is not compared
-    claim = {"id": "f", "section": "3", "figure": "Fig. 2", "quote": "q", "kind": "value", "value": 0.25,
-             "tolerance": {"rel": 0.1}, "variable": "frequency_peaks", "dataset": "{reading}.nc",
-             "expected": "reproduced"}
+    claim = {
+        "id": "f",
+        "section": "3",
+        "figure": "Fig. 2",
+        "quote": "q",
+        "kind": "value",
+        "value": 0.25,
+        "tolerance": {"rel": 0.1},
+        "variable": "frequency_peaks",
+        "dataset": "{reading}.nc",
+        "expected": "reproduced",
+    }
     result = evaluate(claim, "bad", lambda p: {"bad.nc": bad_ds, "ok.nc": ok_ds}[p])
     assert result.status == "not-comparable" and result.reason.startswith("solver failed")
     assert "blow-up" in result.reason
@@ -59,7 +70,9 @@ def test_written_dataset_keeps_its_own_attributes(good, tmp_path):
     path = netcdf.write_dataset(ds, tmp_path / "a.nc", scene={}, interpretation="x", method={}, title="other")
     out = netcdf.read_dataset(path)
     assert out.attrs["title"] == "my title"
-    assert out.attrs["history"].startswith("made by hand\n") and "written by stickslip" in out.attrs["history"]
+    assert (
+        out.attrs["history"].startswith("made by hand\n") and "written by stickslip" in out.attrs["history"]
+    )
     import netCDF4
 
     with netCDF4.Dataset(path) as nc:

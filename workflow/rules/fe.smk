@@ -18,7 +18,9 @@ def check_fe_config(fe_cfg, producible):
     for name in fe_cfg["scenes"]:
         mapping = scene_mapping(fe_cfg, name)
         try:
-            SceneParams.from_mapping({k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")})
+            SceneParams.from_mapping(
+                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
+            )
         except (ValueError, TypeError, KeyError) as exc:
             raise ValueError(f"fe.scenes.{name}: {exc}") from None
     refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
@@ -72,14 +74,14 @@ rule fe_study:
         friction=FE_FRICTION,
     output:
         "results/fe/{study}.nc",
-    params:
-        kind=lambda wc: wc.study,
     log:
         "results/logs/fe_study/{study}.log",
     benchmark:
         "results/benchmarks/fe_study/{study}.tsv"
     wildcard_constraints:
         study="|".join(FE_STUDIES),
+    params:
+        kind=lambda wc: wc.study,
     script:
         "../scripts/fe_study.py"
 

@@ -34,12 +34,12 @@ rule render_notebook:
             category="Notebooks",
             labels={"notebook": "{name}"},
         ),
-    wildcard_constraints:
-        name="|".join(config["notebooks"]),
     log:
         "results/logs/render_notebook/{name}.log",
     benchmark:
         "results/benchmarks/render_notebook/{name}.tsv"
+    wildcard_constraints:
+        name="|".join(config["notebooks"]),
     params:
         python=sys.executable,
         nb_params=lambda wc: shlex.quote(json.dumps(notebook_params(wc.name))),

@@ -25,7 +25,9 @@ def write_dataset(ds, path, *, scene: dict, interpretation: str, method: dict) -
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     try:
-        rev = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=False).stdout.strip()
+        rev = subprocess.run(
+            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=False
+        ).stdout.strip()
     except OSError:
         rev = "unknown"
     ds = ds.copy()
@@ -46,7 +48,7 @@ def write_dataset(ds, path, *, scene: dict, interpretation: str, method: dict) -
 
 
 def track_calls(module, name: str, total: int, label: str, every: float = 10.0):
-    """Wrap ``module.name`` so that every call advances a :class:`~stickslip.io.progress.Progress` of ``total``.
+    """Wrap ``module.name`` so that every call advances a ``stickslip.io.progress.Progress`` of ``total``.
 
     The FE library functions loop internally (one ``run_scene`` per sweep value or mesh); counting those
     calls from the script gives ``done/total, elapsed, ETA`` lines in the rule's log without touching the

@@ -1,9 +1,10 @@
 """Convergence study or stability map (params.kind) -> netCDF."""
 
 import stickslip.fe.pipeline as fe_pipeline
-from fe_common import log_to, track_calls, write_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import INTERPRETATION, convergence_dataset, stability_dataset
+
+from fe_common import log_to, track_calls, write_dataset
 
 log_to(snakemake)  # noqa: F821
 cfg = snakemake.config["fe"]  # noqa: F821
@@ -12,8 +13,9 @@ friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 if kind == "convergence":  # one transient per mesh, with and without the surface offset
     progress = track_calls(fe_pipeline, "run_scene", 2 * len(cfg[kind]["n_elements"]), label=kind, every=5.0)
 else:  # the eigenvalue map is cheap; the cross-check transients are what takes time
-    progress = track_calls(fe_pipeline, "transient_growth_rate", len(cfg[kind].get("crosscheck", [])), label=kind,
-                           every=5.0)
+    progress = track_calls(
+        fe_pipeline, "transient_growth_rate", len(cfg[kind].get("crosscheck", [])), label=kind, every=5.0
+    )
 ds = (convergence_dataset if kind == "convergence" else stability_dataset)(cfg, friction)
 progress.finish()
 print(ds)

@@ -1,9 +1,10 @@
 """Run a parameter sweep of the beam-on-disc scene and write results/fe/<sweep>.nc."""
 
 import stickslip.fe.pipeline as fe_pipeline
-from fe_common import log_to, track_calls, write_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import INTERPRETATION, sweep_dataset
+
+from fe_common import log_to, track_calls, write_dataset
 
 log_to(snakemake)  # noqa: F821
 cfg = snakemake.config["fe"]  # noqa: F821

@@ -20,9 +20,9 @@ import csv
 import math
 import operator
 import sys
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 import yaml

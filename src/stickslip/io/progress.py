@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import logging
 import time
-from typing import Callable
+from collections.abc import Callable
 
 LOGGER = logging.getLogger("stickslip.progress")
 
@@ -47,8 +47,15 @@ class Progress:
     ``clock`` is injectable for tests.
     """
 
-    def __init__(self, total: int, *, label: str = "progress", every: float = 10.0,
-                 sink: Callable[[str], None] | None = None, clock: Callable[[], float] = time.monotonic):
+    def __init__(
+        self,
+        total: int,
+        *,
+        label: str = "progress",
+        every: float = 10.0,
+        sink: Callable[[str], None] | None = None,
+        clock: Callable[[], float] = time.monotonic,
+    ):
         if total < 0:
             raise ValueError(f"total: must be >= 0, got {total!r}")
         self.total = int(total)
@@ -73,8 +80,10 @@ class Progress:
 
     def message(self) -> str:
         pct = 100.0 * self.done / self.total if self.total else 100.0
-        return (f"{self.label}: {self.done}/{self.total} ({pct:.1f} %), elapsed {format_seconds(self.elapsed)}, "
-                f"ETA {format_seconds(self.eta())}")
+        return (
+            f"{self.label}: {self.done}/{self.total} ({pct:.1f} %), elapsed {format_seconds(self.elapsed)}, "
+            f"ETA {format_seconds(self.eta())}"
+        )
 
     def _emit(self) -> None:
         line = self.message()

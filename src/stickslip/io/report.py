@@ -33,8 +33,11 @@ def paper_figures(text: str) -> set[int]:
 
 def claims_for(rows: list[dict], figures: set[int], reading: str | None = None) -> list[dict]:
     """Deviations-table rows about any of ``figures`` (and, if given, this reading or no reading)."""
-    return [r for r in rows if paper_figures(r["figure"]) & figures
-            and (reading is None or r["reading"] in ("", reading))]
+    return [
+        r
+        for r in rows
+        if paper_figures(r["figure"]) & figures and (reading is None or r["reading"] in ("", reading))
+    ]
 
 
 def _rst_escape(text: str) -> str:
@@ -43,7 +46,10 @@ def _rst_escape(text: str) -> str:
 
 def caption_text(title: str, figures: set[int], rows: list[dict], note: str = "") -> str:
     """reStructuredText: the title, the paper figures, a status count and one line per claim."""
-    figs = ", ".join(f"Fig. {n}" for n in sorted(figures)) or "no figure of the paper (added by this replication)"
+    figs = (
+        ", ".join(f"Fig. {n}" for n in sorted(figures))
+        or "no figure of the paper (added by this replication)"
+    )
     lines = [f"**{_rst_escape(title)}**", "", f"Reproduces: {figs}.", ""]
     if note:
         lines += [_rst_escape(note), ""]
@@ -68,7 +74,11 @@ def caption_template(captions: dict[str, str]) -> str:
     for i, (output, text) in enumerate(sorted(captions.items())):
         keyword = "if" if i == 0 else "elif"
         parts += [f"{{% {keyword} out == {output!r} %}}", "{% raw %}", text.rstrip("\n"), "{% endraw %}"]
-    parts += ["{% else %}" if captions else "{% if true %}", "No caption recorded for this output.", "{% endif %}"]
+    parts += [
+        "{% else %}" if captions else "{% if true %}",
+        "No caption recorded for this output.",
+        "{% endif %}",
+    ]
     return "\n".join(parts) + "\n"
 
 
