@@ -8,7 +8,7 @@ STAMP := $(VENV)/.installed
 JOBS ?= 2
 export PATH := $(BIN):$(PATH)
 
-.PHONY: setup figures test bench report clean
+.PHONY: setup figures test lint bench report clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -22,6 +22,17 @@ figures: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# Python style (ruff, configured in pyproject.toml), rules formatting (snakefmt) and Snakemake's linter.
+lint: $(STAMP)
+	$(BIN)/ruff check src tests workflow benchmarks
+	$(BIN)/snakefmt --check Snakefile workflow/rules
+	$(BIN)/snakemake --lint
+
+# Self-contained HTML report: every figure captioned with its paper figure and claim statuses.
+report: $(STAMP)
+	$(BIN)/snakemake -j$(JOBS)
+	$(BIN)/snakemake --report results/report.html
 
 bench: $(STAMP)
 	for script in benchmarks/bench_*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done

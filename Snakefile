@@ -2,7 +2,6 @@
 # Configuration: every config/*.yaml (one file per concern); `--configfile config/test/*.yaml` shrinks it.
 from pathlib import Path
 
-
 for _cfg in sorted(Path(workflow.basedir, "config").glob("*.yaml")):
 
     configfile: str(_cfg)
@@ -18,6 +17,6 @@ for _smk in sorted(Path(workflow.basedir, "workflow", "rules").glob("*.smk")):
 
 
 rule all:
+    default_target: True
     input:
         ALL_TARGETS,
-    default_target: True

@@ -20,9 +20,89 @@ def copy_project(dest: Path) -> Path:
 
 
 def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
-    cmd = [sys.executable, "-m", "snakemake", "-j2", "--directory", str(workdir),
-           "--snakefile", str(workdir / "Snakefile"), *args]
+    cmd = [
+        sys.executable,
+        "-m",
+        "snakemake",
+        "-j2",
+        "--directory",
+        str(workdir),
+        "--snakefile",
+        str(workdir / "Snakefile"),
+        *args,
+    ]
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     if check and proc.returncode != 0:
-        raise AssertionError(f"snakemake failed ({proc.returncode}):\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}")
+        raise AssertionError(
+            f"snakemake failed ({proc.returncode}):\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}"
+        )
     return proc
+
+
+def small_config_args(workdir: Path, *extra: Path) -> list[str]:
+    """``--configfile`` arguments of the small CI configuration (plus any override files, applied last)."""
+    files = sorted(str(p) for p in (workdir / "config" / "test").glob("*.yaml")) + [str(p) for p in extra]
+    return ["--configfile", *files] if files else []
+
+
+def start_snakemake(workdir: Path, *args, log: Path):
+    """Snakemake in its own process group (so a test can kill it and every job it started)."""
+    cmd = [
+        sys.executable,
+        "-m",
+        "snakemake",
+        "-j2",
+        "--directory",
+        str(workdir),
+        "--snakefile",
+        str(workdir / "Snakefile"),
+        *args,
+    ]
+    fh = open(log, "w")
+    return subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, start_new_session=True)
+
+
+_SMALL_RUNS: dict[str, Path] = {}
+
+
+def shared_small_run(tmp_path_factory) -> Path:
+    """One complete run of the small configuration per test session, shared by the modules that read it."""
+    if "run" not in _SMALL_RUNS:
+        work = copy_project(tmp_path_factory.mktemp("small_run"))
+        run_snakemake(work, *small_config_args(work))
+        _SMALL_RUNS["run"] = work
+    return _SMALL_RUNS["run"]
+
+
+def datasets(workdir: Path) -> list[Path]:
+    """Every netCDF dataset a run wrote, relative to its results folder."""
+    root = workdir / "results"
+    return sorted(p.relative_to(root) for p in root.rglob("*.nc") if not p.name.startswith("."))
+
+
+def data_differences(path_a: Path, path_b: Path) -> list[str]:
+    """Variables (data and coordinates) whose values or dtypes differ bit for bit; attributes are ignored,
+    and so are CPU-time measurements (``stickslip.io.netcdf.is_machine_measurement``): they time the
+    machine, not the model."""
+    import numpy as np
+    import xarray as xr
+
+    from stickslip.io.netcdf import is_machine_measurement
+
+    out = []
+    with xr.open_dataset(path_a, decode_times=False) as a, xr.open_dataset(path_b, decode_times=False) as b:
+        if set(a.variables) != set(b.variables):
+            return [f"variables differ: {sorted(set(a.variables) ^ set(b.variables))}"]
+        for name in a.variables:
+            if is_machine_measurement(str(name)):
+                continue
+            va, vb = a[name].values, b[name].values
+            if va.dtype != vb.dtype or va.shape != vb.shape:
+                out.append(f"{name}: {va.dtype}{va.shape} vs {vb.dtype}{vb.shape}")
+            elif va.dtype.kind in "fc":
+                if va.tobytes() != vb.tobytes():
+                    n = int(np.sum(~((va == vb) | (np.isnan(va) & np.isnan(vb)))))
+                    out.append(f"{name}: {n} values differ")
+            elif not np.array_equal(va, vb):
+                out.append(f"{name}: values differ")
+    return out

@@ -5,6 +5,11 @@ from stickslip.io.claims import load_claims, required_datasets
 
 CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
 CLAIM_READINGS = config["claims"]["readings"]
+for _reading in CLAIM_READINGS:  # fail at parse time, naming the key, not with a missing-input error later
+    if _reading not in ONEDOF["readings"]:
+        raise ValueError(
+            f"claims.readings: {_reading!r} is not a reading of onedof.readings ({sorted(ONEDOF['readings'])})"
+        )
 
 
 rule claims_table:
@@ -12,7 +17,12 @@ rule claims_table:
         claims=CLAIM_FILES,
         datasets=required_datasets(load_claims(CLAIM_FILES), CLAIM_READINGS),
     output:
-        csv="results/claims/deviations.csv",
+        csv=report(
+            "results/claims/deviations.csv",
+            caption=REPORT_CAPTION_FILE,
+            category="Claims",
+            labels={"table": "deviations"},
+        ),
         md="results/claims/deviations.md",
     log:
         "results/logs/claims_table.log",

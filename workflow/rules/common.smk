@@ -13,6 +13,11 @@ ALL_TARGETS = []
 
 ONEDOF = config["onedof"]
 
+#: One caption template for every figure of `snakemake --report` (written by rule report_captions). An
+#: absolute path under the working directory, since report() resolves captions against the rules folder.
+REPORT_CAPTIONS = "results/report/captions.rst"
+REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
+
 
 def onedof_dataset(scene, reading, method):
     return f"results/onedof/{scene}/{reading}/{method}.nc"

@@ -9,6 +9,36 @@ FE_FRICTION = config["fe"]["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
 
 
+def check_fe_config(fe_cfg, producible):
+    """Resolve every FE scene and reference at parse time, so a bad value fails before any job starts,
+    with the config key named (the schema cannot see NaN, unknown scene names or a missing table)."""
+    from stickslip.fe.pipeline import scene_mapping
+    from stickslip.fe.scene import SceneParams
+
+    for name in fe_cfg["scenes"]:
+        mapping = scene_mapping(fe_cfg, name)
+        try:
+            SceneParams.from_mapping(
+                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
+            )
+        except (ValueError, TypeError, KeyError) as exc:
+            raise ValueError(f"fe.scenes.{name}: {exc}") from None
+    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
+    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in FE_STUDIES]
+    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
+    for key, scene in refs:
+        if scene not in fe_cfg["scenes"]:
+            raise ValueError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
+    table = fe_cfg["friction_table"]
+    if table not in producible and not Path(table).is_file():
+        raise ValueError(
+            f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes {producible})"
+        )
+
+
+check_fe_config(config["fe"], ["results/onedof/friction_mu_vr.csv"])
+
+
 rule fe_scene:
     input:
         friction=FE_FRICTION,
@@ -44,14 +74,14 @@ rule fe_study:
         friction=FE_FRICTION,
     output:
         "results/fe/{study}.nc",
-    params:
-        kind=lambda wc: wc.study,
     log:
         "results/logs/fe_study/{study}.log",
     benchmark:
         "results/benchmarks/fe_study/{study}.tsv"
     wildcard_constraints:
         study="|".join(FE_STUDIES),
+    params:
+        kind=lambda wc: wc.study,
     script:
         "../scripts/fe_study.py"
 
@@ -73,7 +103,12 @@ rule fe_figure:
     input:
         "results/fe/{scene}.nc",
     output:
-        "results/figures/fe/{scene}.png",
+        report(
+            "results/figures/fe/{scene}.png",
+            caption=REPORT_CAPTION_FILE,
+            category="Beam on rotating disc (Sections 9-12)",
+            labels={"scene": "{scene}"},
+        ),
     log:
         "results/logs/fe_figure/{scene}.log",
     benchmark:
@@ -98,7 +133,12 @@ rule fe_notebook:
         data=FE_DATASETS,
         figures=[f"results/figures/fe/{s}.png" for s in FE_SCENES],
     output:
-        "results/notebooks/section_09_12_beam_on_disc.html",
+        report(
+            "results/notebooks/section_09_12_beam_on_disc.html",
+            caption=REPORT_CAPTION_FILE,
+            category="Notebooks",
+            labels={"notebook": "section_09_12_beam_on_disc"},
+        ),
     log:
         "results/logs/fe_notebook/section_09_12_beam_on_disc.log",
     benchmark:

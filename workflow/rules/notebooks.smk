@@ -28,13 +28,18 @@ rule render_notebook:
         notebook="notebooks/{name}.py",
         data=lambda wc: notebook_inputs(wc.name),
     output:
-        "results/notebooks/{name}.html",
-    wildcard_constraints:
-        name="|".join(config["notebooks"]),
+        report(
+            "results/notebooks/{name}.html",
+            caption=REPORT_CAPTION_FILE,
+            category="Notebooks",
+            labels={"notebook": "{name}"},
+        ),
     log:
         "results/logs/render_notebook/{name}.log",
     benchmark:
         "results/benchmarks/render_notebook/{name}.tsv"
+    wildcard_constraints:
+        name="|".join(config["notebooks"]),
     params:
         python=sys.executable,
         nb_params=lambda wc: shlex.quote(json.dumps(notebook_params(wc.name))),

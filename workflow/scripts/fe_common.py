@@ -25,7 +25,9 @@ def write_dataset(ds, path, *, scene: dict, interpretation: str, method: dict) -
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     try:
-        rev = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=False).stdout.strip()
+        rev = subprocess.run(
+            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=False
+        ).stdout.strip()
     except OSError:
         rev = "unknown"
     ds = ds.copy()
@@ -43,6 +45,28 @@ def write_dataset(ds, path, *, scene: dict, interpretation: str, method: dict) -
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)
+
+
+def track_calls(module, name: str, total: int, label: str, every: float = 10.0):
+    """Wrap ``module.name`` so that every call advances a ``stickslip.io.progress.Progress`` of ``total``.
+
+    The FE library functions loop internally (one ``run_scene`` per sweep value or mesh); counting those
+    calls from the script gives ``done/total, elapsed, ETA`` lines in the rule's log without touching the
+    science code. Lines are printed (the log file is stdout after :func:`log_to`).
+    """
+    from stickslip.io.progress import Progress
+
+    progress = Progress(total, label=label, every=every, sink=lambda line: print(line, flush=True))
+    inner = getattr(module, name)
+
+    def counted(*args, **kwargs):
+        out = inner(*args, **kwargs)
+        progress.advance()
+        return out
+
+    setattr(module, name, counted)
+    print(f"{label}: {total} runs to do", flush=True)
+    return progress
 
 
 def log_to(snakemake) -> None:

@@ -1,8 +1,9 @@
 """Run one beam-on-disc scene and write results/fe/<scene>.nc."""
-from fe_common import log_to, write_dataset
 
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import INTERPRETATION, run_scene, scene_dataset, scene_mapping
+
+from fe_common import log_to, write_dataset
 
 log_to(snakemake)  # noqa: F821
 cfg = snakemake.config["fe"]  # noqa: F821
@@ -12,5 +13,15 @@ mapping = scene_mapping(cfg, name)
 r, m, scene = run_scene(mapping, friction)
 print(f"{name}: dt={r.dt:.4g} s, steps={r.n_steps}, cpu={r.cpu_time:.1f} s, fractions={r.fractions()}")
 ds = scene_dataset(name, mapping, r, m, scene)
-write_dataset(ds, snakemake.output[0], scene=mapping, interpretation=INTERPRETATION,  # noqa: F821
-              method={"integrator": "central_difference", "contact": scene.law.method, "dt": r.dt, "dt_crit": r.dt_crit})
+write_dataset(
+    ds,
+    snakemake.output[0],
+    scene=mapping,
+    interpretation=INTERPRETATION,  # noqa: F821
+    method={
+        "integrator": "central_difference",
+        "contact": scene.law.method,
+        "dt": r.dt,
+        "dt_crit": r.dt_crit,
+    },
+)

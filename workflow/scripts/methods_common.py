@@ -14,8 +14,9 @@ from stickslip.analysis.failure import FAILURE_KINDS, classify
 from stickslip.model import BeltModel, BeltParams
 from stickslip.solvers import make_solver
 
-INTERPRETATION = ("consistent friction law F = -mu_s N (sgn(v_r) - sigma v_r); paper numbers used as given "
-                  "(units as_given)")
+INTERPRETATION = (
+    "consistent friction law F = -mu_s N (sgn(v_r) - sigma v_r); paper numbers used as given (units as_given)"
+)
 
 
 def expand_methods(entries):
@@ -29,8 +30,9 @@ def expand_methods(entries):
             settings = dict(fixed, **dict(zip(keys, combo)))
             if "atol_per_rtol" in entry and "rtol" in settings:
                 settings["atol"] = settings["rtol"] * entry["atol_per_rtol"]
-            label = entry["solver"] + ("[" + ",".join(f"{k}={v}" for k, v in settings.items()) + "]"
-                                       if settings else "")
+            label = entry["solver"] + (
+                "[" + ",".join(f"{k}={v}" for k, v in settings.items()) + "]" if settings else ""
+            )
             out.append((entry["solver"], settings, label))
     return out
 
@@ -54,8 +56,9 @@ def run_scene(cfg, model, t_end, methods, paper=True):
     paper_rec = None
     if paper:
         pm = cfg["paper_method"]
-        _, paper_rec = measure_run(make_solver(pm["solver"], **pm.get("settings", {})), model, t_end, t_eval,
-                                   ref, ref_cycle, **kw)
+        _, paper_rec = measure_run(
+            make_solver(pm["solver"], **pm.get("settings", {})), model, t_end, t_eval, ref, ref_cycle, **kw
+        )
     records = []
     for name, settings, label in methods:
         traj, rec = measure_run(make_solver(name, **settings), model, t_end, t_eval, ref, ref_cycle, **kw)
@@ -84,9 +87,14 @@ NUMERIC = {
     "stick_time_ratio": ("1", "time with |v_r| <= 1% V_b over the reference stick time"),
 }
 FLAGS = ("diverged", "step_collapse", "missed_stick", "chatter", "creep")
-STRINGS = {"solver": "method name", "settings": "method settings (JSON)", "label": "method and settings",
-           "status": "run status: ok | failed (failed runs are data, not results)",
-           "message": "failure message", "failure_kind": f"most severe failure, one of {FAILURE_KINDS}"}
+STRINGS = {
+    "solver": "method name",
+    "settings": "method settings (JSON)",
+    "label": "method and settings",
+    "status": "run status: ok | failed (failed runs are data, not results)",
+    "message": "failure message",
+    "failure_kind": f"most severe failure, one of {FAILURE_KINDS}",
+}
 
 
 def records_dataset(records, dim="run") -> xr.Dataset:
@@ -94,8 +102,11 @@ def records_dataset(records, dim="run") -> xr.Dataset:
     for key, (units, long_name) in NUMERIC.items():
         ds[key] = (dim, np.array([float(r[key]) for r in records]), {"units": units, "long_name": long_name})
     for key in FLAGS:
-        ds[key] = (dim, np.array([int(bool(r[key])) for r in records], dtype=np.int8),
-                   {"units": "1", "long_name": f"failure flag: {key}", "flag_values": "0 1"})
+        ds[key] = (
+            dim,
+            np.array([int(bool(r[key])) for r in records], dtype=np.int8),
+            {"units": "1", "long_name": f"failure flag: {key}", "flag_values": "0 1"},
+        )
     for key, long_name in STRINGS.items():
         ds[key] = (dim, np.array([str(r[key]) for r in records], dtype=object), {"long_name": long_name})
     return ds
@@ -109,9 +120,14 @@ def write(ds: xr.Dataset, path: str, *, scene: dict, method: dict) -> None:
     if write_dataset is not None:
         write_dataset(ds, path, scene=scene, interpretation=INTERPRETATION, method=method)
         return
-    ds.attrs.update({"Conventions": "CF-1.10", "interpretation": INTERPRETATION,
-                     "scene": json.dumps(scene, sort_keys=True, default=str),
-                     "method": json.dumps(method, sort_keys=True, default=str)})
+    ds.attrs.update(
+        {
+            "Conventions": "CF-1.10",
+            "interpretation": INTERPRETATION,
+            "scene": json.dumps(scene, sort_keys=True, default=str),
+            "method": json.dumps(method, sort_keys=True, default=str),
+        }
+    )
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
     tmp = path + ".tmp"
     ds.to_netcdf(tmp)

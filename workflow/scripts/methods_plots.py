@@ -10,8 +10,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-FAILURE_COLORS = {"none": "#2ca02c", "creep": "#bcbd22", "chatter": "#ff7f0e", "missed_stick": "#9467bd",
-                  "step_collapse": "#d62728", "diverged": "#000000"}
+FAILURE_COLORS = {
+    "none": "#2ca02c",
+    "creep": "#bcbd22",
+    "chatter": "#ff7f0e",
+    "missed_stick": "#9467bd",
+    "step_collapse": "#d62728",
+    "diverged": "#000000",
+}
 
 
 def family(solver: str, settings_json: str) -> str:
@@ -29,8 +35,15 @@ def work_precision_figure(ds, title: str):
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     floor = 1e-16
     colors = {f: plt.cm.tab10(i % 10) for i, f in enumerate(dict.fromkeys(fams))}  # same colour per panel
-    for (err, xkey), ax in zip([("state", "cpu_time"), ("state", "rhs_evaluations"),
-                                ("period_error", "cpu_time"), ("period_error", "rhs_evaluations")], axes.flat):
+    for (err, xkey), ax in zip(
+        [
+            ("state", "cpu_time"),
+            ("state", "rhs_evaluations"),
+            ("period_error", "cpu_time"),
+            ("period_error", "rhs_evaluations"),
+        ],
+        axes.flat,
+    ):
         for fam in dict.fromkeys(fams):
             idx = [i for i, f in enumerate(fams) if f == fam and ok[i]]
             if not idx:
@@ -41,13 +54,17 @@ def work_precision_figure(ds, title: str):
                 continue  # the exact solver evaluates no right-hand side
             order = np.argsort(x)
             ax.loglog(x[order], y[order], "o-", label=fam, ms=5, color=colors[fam])
-        ax.set_xlabel({"cpu_time": "CPU time [s] (min of repeats)", "rhs_evaluations": "RHS evaluations"}[xkey])
+        ax.set_xlabel(
+            {"cpu_time": "CPU time [s] (min of repeats)", "rhs_evaluations": "RHS evaluations"}[xkey]
+        )
         ax.set_ylabel({"state": "state error (max, relative)", "period_error": "relative period error"}[err])
         ax.grid(True, which="both", alpha=0.3)
     axes[0, 0].legend(fontsize=7)
     n_fail = int((~ok).sum())
-    fig.suptitle(f"{title}  ({n_fail} failed runs not plotted; see failure map)"
-                 + ("\nexact: error 0 by definition, drawn at 1e-16" if "exact" in fams else ""))
+    fig.suptitle(
+        f"{title}  ({n_fail} failed runs not plotted; see failure map)"
+        + ("\nexact: error 0 by definition, drawn at 1e-16" if "exact" in fams else "")
+    )
     fig.tight_layout()
     return fig
 
@@ -64,8 +81,15 @@ def failure_map_figure(ds):
     ax.set_xlabel(ds.attrs.get("swept_parameter", "parameter"))
     for i in range(code.shape[0]):
         for j in range(code.shape[1]):
-            ax.text(i, j, fk[i, j], ha="center", va="center", fontsize=6,
-                    color="white" if fk[i, j] in ("diverged", "step_collapse") else "black")
+            ax.text(
+                i,
+                j,
+                fk[i, j],
+                ha="center",
+                va="center",
+                fontsize=6,
+                color="white" if fk[i, j] in ("diverged", "step_collapse") else "black",
+            )
     ax.set_title("Where methods fail (classification against the exact solver)")
     fig.tight_layout()
     return fig

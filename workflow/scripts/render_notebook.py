@@ -26,10 +26,13 @@ def render(source: Path, target: Path, params: dict | None = None, timeout: int 
     if params is not None:
         first_code = next(i for i, c in enumerate(nb.cells) if c.cell_type == "code")
         cell = nbformat.v4.new_code_cell(
-            f"# Parameters injected by the pipeline\nimport json\nPARAMS = json.loads({json.dumps(params)!r})")
+            f"# Parameters injected by the pipeline\nimport json\nPARAMS = json.loads({json.dumps(params)!r})"
+        )
         nb.cells.insert(first_code, cell)
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    NotebookClient(nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": os.getcwd()}}).execute()
+    NotebookClient(
+        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": os.getcwd()}}
+    ).execute()
     body, _ = HTMLExporter(template_name="classic").from_notebook_node(nb)
     target.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)

@@ -20,9 +20,9 @@ import csv
 import math
 import operator
 import sys
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 import yaml
@@ -125,6 +125,16 @@ def _scalar(open_dataset: Callable, ref: dict, reading: str) -> float:
     return float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
 
 
+def solver_failures(opened: list) -> list[str]:
+    """Messages of the failed solver runs among the (path, dataset) pairs a claim read."""
+    out = []
+    for path, ds in opened:
+        status = ds.variables.get("solver_status") if hasattr(ds, "variables") else None
+        if status is not None and np.any(np.asarray(status.values) != 0):
+            out.append(f"{path}: {status.attrs.get('message', 'no message')}")
+    return out
+
+
 def _name(ref: dict) -> str:
     return ref.get("variable", f"{ref.get('value')}")
 
@@ -136,6 +146,13 @@ def _per_reading(value, reading, default=""):
 
 
 def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
+    opened: list = []  # every dataset this claim reads, to refuse numbers from a failed solver run
+
+    def open_dataset(path, _open=open_dataset):
+        ds = _open(path)
+        opened.append((path, ds))
+        return ds
+
     kind = claim["kind"]
     reported, measured, deviation = float("nan"), float("nan"), float("nan")
     unit = str(claim.get("unit", ""))
@@ -182,7 +199,11 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
                 holds = direction == np.sign(reported)
                 words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
                 detail = f"slope {measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
-    if claim.get("comparable", True) is False:
+    failures = solver_failures(opened)
+    if failures:  # a failed run measures nothing: never compare its numbers
+        status = "not-comparable"
+        detail = "solver failed (" + "; ".join(failures) + ")"
+    elif claim.get("comparable", True) is False:
         status = "not-comparable"
     elif holds is None:
         status = "not-comparable"

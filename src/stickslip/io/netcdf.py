@@ -26,10 +26,16 @@ def git_revision(cwd: str | os.PathLike | None = None) -> str:
     """Commit of the working tree (with '-dirty' when it has uncommitted changes), or 'unknown'."""
     cwd = cwd or Path(__file__).resolve().parent
     try:
-        rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=cwd, capture_output=True, text=True,
-                             check=True, timeout=10).stdout.strip()
-        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=cwd,
-                               capture_output=True, text=True, timeout=10).stdout.strip()
+        rev = subprocess.run(
+            ["git", "rev-parse", "HEAD"], cwd=cwd, capture_output=True, text=True, check=True, timeout=10
+        ).stdout.strip()
+        dirty = subprocess.run(
+            ["git", "status", "--porcelain", "--untracked-files=no"],
+            cwd=cwd,
+            capture_output=True,
+            text=True,
+            timeout=10,
+        ).stdout.strip()
         return rev + ("-dirty" if dirty else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
@@ -52,18 +58,33 @@ def flat_attrs(prefix: str, mapping: dict) -> dict:
 
 def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = None) -> xr.Dataset:
     """Time series of one run plus its metrics as scalar variables."""
-    time = xr.Variable("time", traj.t, {"units": "s", "long_name": "time", "standard_name": "time",
-                                       "axis": "T"})
+    time = xr.Variable(
+        "time", traj.t, {"units": "s", "long_name": "time", "standard_name": "time", "axis": "T"}
+    )
     ds = xr.Dataset(
         {
             "displacement": ("time", traj.x, {"units": "mm", "long_name": "mass displacement x"}),
             "velocity": ("time", traj.v, {"units": "mm s-1", "long_name": "mass velocity dx/dt"}),
-            "belt_velocity": ("time", traj.belt_velocity, {"units": "mm s-1", "long_name": "belt velocity V_b"}),
-            "relative_velocity": ("time", traj.relative_velocity,
-                                  {"units": "mm s-1", "long_name": "relative velocity v_r = dx/dt - V_b"}),
-            "phase": ("time", traj.phase.astype(np.int8), {
-                "long_name": "contact phase", "units": "1", "flag_values": np.array([-1, 0, 1], dtype=np.int8),
-                "flag_meanings": "slip_backward stick slip_forward"}),
+            "belt_velocity": (
+                "time",
+                traj.belt_velocity,
+                {"units": "mm s-1", "long_name": "belt velocity V_b"},
+            ),
+            "relative_velocity": (
+                "time",
+                traj.relative_velocity,
+                {"units": "mm s-1", "long_name": "relative velocity v_r = dx/dt - V_b"},
+            ),
+            "phase": (
+                "time",
+                traj.phase.astype(np.int8),
+                {
+                    "long_name": "contact phase",
+                    "units": "1",
+                    "flag_values": np.array([-1, 0, 1], dtype=np.int8),
+                    "flag_meanings": "slip_backward stick slip_forward",
+                },
+            ),
         },
         coords={"time": time},
     )
@@ -71,16 +92,36 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
         seg = np.asarray(traj.segments, dtype=float).reshape(-1, 3)
         ds["segment_start"] = ("segment", seg[:, 0], {"units": "s", "long_name": "segment start time"})
         ds["segment_end"] = ("segment", seg[:, 1], {"units": "s", "long_name": "segment end time"})
-        ds["segment_phase"] = ("segment", seg[:, 2].astype(np.int8), {
-            "units": "1", "long_name": "segment contact phase",
-            "flag_values": np.array([-1, 0, 1], dtype=np.int8), "flag_meanings": "slip_backward stick slip_forward"})
+        ds["segment_phase"] = (
+            "segment",
+            seg[:, 2].astype(np.int8),
+            {
+                "units": "1",
+                "long_name": "segment contact phase",
+                "flag_values": np.array([-1, 0, 1], dtype=np.int8),
+                "flag_meanings": "slip_backward stick slip_forward",
+            },
+        )
     stats = traj.stats
-    ds["solver_status"] = ((), np.int8(0 if stats.status == "ok" else 1), {
-        "long_name": "solver status", "units": "1", "flag_values": np.array([0, 1], dtype=np.int8),
-        "flag_meanings": "ok failed", "message": stats.message or "none"})
+    failed, message = stats.status != "ok", stats.message or "none"
+    if not failed and not (np.all(np.isfinite(traj.x)) and np.all(np.isfinite(traj.v))):
+        failed, message = True, "non-finite state (NaN or overflow) in the trajectory"
+    ds["solver_status"] = (
+        (),
+        np.int8(1 if failed else 0),
+        {
+            "long_name": "solver status",
+            "units": "1",
+            "flag_values": np.array([0, 1], dtype=np.int8),
+            "flag_meanings": "ok failed",
+            "message": message,
+        },
+    )
     for name, units, long_name in (
-        ("rhs_evaluations", "1", "right-hand-side evaluations"), ("steps", "1", "accepted steps or segments"),
-        ("events", "1", "switching events handled"), ("cpu_time", "s", "process CPU time of the solve"),
+        ("rhs_evaluations", "1", "right-hand-side evaluations"),
+        ("steps", "1", "accepted steps or segments"),
+        ("events", "1", "switching events handled"),
+        ("cpu_time", "s", "process CPU time of the solve"),
     ):
         ds[f"solver_{name}"] = ((), float(getattr(stats, name)), {"units": units, "long_name": long_name})
     for name, metric in (metrics or {}).items():
@@ -89,7 +130,7 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
 
 
 def provenance_attrs(*, title: str, scene: dict, interpretation: str | dict, method: dict) -> dict:
-    now = _dt.datetime.now(_dt.timezone.utc).replace(microsecond=0).isoformat()
+    now = _dt.datetime.now(_dt.UTC).replace(microsecond=0).isoformat()
     attrs = {
         "Conventions": "CF-1.10",
         "title": title,
@@ -97,24 +138,95 @@ def provenance_attrs(*, title: str, scene: dict, interpretation: str | dict, met
         "source": f"stickslip {__version__} (git {git_revision()})",
         "history": f"{now} written by stickslip {__version__}",
         "references": PAPER_REFERENCE,
-        "interpretation": interpretation if isinstance(interpretation, str) else json.dumps(interpretation,
-                                                                                             sort_keys=True),
+        "interpretation": interpretation
+        if isinstance(interpretation, str)
+        else json.dumps(interpretation, sort_keys=True),
     }
     attrs.update(flat_attrs("scene_", scene))
     attrs.update(flat_attrs("method_", method))
     return attrs
 
 
-def write_dataset(ds: xr.Dataset, path: str | os.PathLike, *, scene: dict, interpretation: str | dict,
-                  method: dict, title: str | None = None) -> Path:
-    """Attach provenance and write atomically: a temporary file in the target folder, then rename."""
+def _merged_attrs(existing: dict, provenance: dict) -> dict:
+    """Provenance fills in; what the dataset already says wins (its title, Conventions, ...).
+
+    ``history`` is the exception CF describes: an audit trail, so the writer's line is appended.
+    """
+    out = dict(provenance)
+    for key, value in existing.items():
+        if key == "history" and value:
+            out[key] = f"{value}\n{provenance['history']}"
+        else:
+            out[key] = value
+    return out
+
+
+def cf_encoding(ds: xr.Dataset) -> dict:
+    """Per-variable encoding: compressed float data; no ``_FillValue`` on coordinates (CF 2.5.1)."""
+    encoding = {
+        name: {"zlib": True, "complevel": 4}
+        for name, var in ds.data_vars.items()
+        if var.ndim > 0 and var.dtype.kind == "f"
+    }
+    for name in ds.coords:
+        encoding.setdefault(str(name), {})["_FillValue"] = None
+    return encoding
+
+
+def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
+    """Attributes CF asks for that a dataset may leave out, filled in without overwriting any.
+
+    * a ``time`` coordinate gets ``standard_name: time`` and ``axis: T`` (CF 4.4, 5.1). Its units stay
+      ``s``: it is elapsed simulated time, not a calendar date (see ``tests/test_cf_compliance.py``).
+    * CPU-time variables get a ``comment`` saying they measure the machine (see ``is_machine_measurement``).
+    * every variable gets a ``long_name`` (its name, spaced) if it has neither one nor a ``standard_name``.
+    """
+    if "time" in ds.coords:
+        for key, value in (("standard_name", "time"), ("axis", "T"), ("long_name", "time")):
+            ds["time"].attrs.setdefault(key, value)
+    for name, var in ds.variables.items():
+        if "long_name" not in var.attrs and "standard_name" not in var.attrs:
+            var.attrs["long_name"] = str(name).replace("_", " ")
+        if is_machine_measurement(str(name)):
+            var.attrs.setdefault("comment", MACHINE_MEASUREMENT_COMMENT)
+    return ds
+
+
+#: Variables that measure the machine (CPU time and ratios of it), not the model: they differ between runs.
+MACHINE_MEASUREMENT_COMMENT = "measured on the machine that ran the job: not reproducible bit for bit"
+
+
+def is_machine_measurement(name: str) -> bool:
+    return "cpu_" in name or name.endswith("_cpu") or name == "cpu"
+
+
+def write_dataset(
+    ds: xr.Dataset,
+    path: str | os.PathLike,
+    *,
+    scene: dict,
+    interpretation: str | dict,
+    method: dict,
+    title: str | None = None,
+) -> Path:
+    """Attach provenance and write atomically: a temporary file in the target folder, then rename.
+
+    Attributes the dataset already has are kept (``title`` given here is used only when the dataset has
+    none). The temporary file is hidden (``.<name>.*.tmp``) and removed on any error, so a killed or failed
+    job never leaves a readable partial file under the target name.
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     ds = ds.copy()
-    ds.attrs.update(provenance_attrs(title=title or ds.attrs.get("title", path.stem), scene=scene,
-                                     interpretation=interpretation, method=method))
-    encoding = {name: {"zlib": True, "complevel": 4} for name, var in ds.data_vars.items() if var.ndim > 0
-                and var.dtype.kind == "f"}
+    prov = provenance_attrs(
+        title=title or ds.attrs.get("title") or path.stem,
+        scene=scene,
+        interpretation=interpretation,
+        method=method,
+    )
+    ds.attrs = _merged_attrs(ds.attrs, prov)
+    ds = cf_fill_in(ds)
+    encoding = cf_encoding(ds)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     try:

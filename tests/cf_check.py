@@ -1,0 +1,31 @@
+"""Offline CF compliance check of a netCDF file with the IOOS compliance-checker's CF suite."""
+
+from __future__ import annotations
+
+import warnings
+
+CF_SUITE = "cf:1.10"
+
+
+def _failed(result) -> bool:
+    value = result.value
+    if isinstance(value, tuple):
+        return value[0] < value[1]
+    return value is False
+
+
+def cf_findings(path, min_weight: int = 2) -> list[str]:
+    """Failed CF checks of weight >= ``min_weight`` (3 = high / "must", 2 = medium / "should")."""
+    from compliance_checker.suite import CheckSuite
+
+    suite = CheckSuite()
+    suite.load_all_available_checkers()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = suite.load_dataset(str(path))
+        groups, errors = suite.run_all(ds, [CF_SUITE], skip_checks=[])[CF_SUITE]
+    out = [f"checker error {name}: {err}" for name, err in errors.items()]
+    for result in groups:
+        if result.weight >= min_weight and _failed(result):
+            out.append(f"[{result.weight}] {result.name}: {'; '.join(result.msgs)}")
+    return out

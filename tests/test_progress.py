@@ -1,0 +1,35 @@
+"""The progress helper: done/total, elapsed and a linear ETA, at most one line every N seconds."""
+
+from stickslip.io.progress import Progress, format_seconds
+
+
+class Clock:
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_lines_are_throttled_and_eta_is_linear():
+    clock, lines = Clock(), []
+    progress = Progress(10, label="sweep", every=5.0, sink=lines.append, clock=clock)
+    for _ in range(4):  # 1 s per unit: first line only once 5 s have passed
+        clock.now += 1.0
+        progress.advance()
+    assert lines == []
+    clock.now += 1.0
+    progress.advance()
+    assert lines == ["sweep: 5/10 (50.0 %), elapsed 5.0 s, ETA 5.0 s"]
+    for _ in range(5):
+        clock.now += 1.0
+        progress.advance()
+    assert lines[-1] == "sweep: 10/10 (100.0 %), elapsed 10.0 s, ETA 0.0 s"  # the last unit always logs
+    progress.finish()
+    assert len(lines) == 2  # finish does not repeat the last line
+
+
+def test_format_seconds():
+    assert format_seconds(float("nan")) == "unknown"
+    assert format_seconds(185) == "3 min 05 s"
+    assert format_seconds(3720) == "1 h 02 min"

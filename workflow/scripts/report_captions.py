@@ -1,0 +1,64 @@
+"""Thin wiring: the report's captions (paper figure + claim statuses per image) from the deviations table."""
+
+import yaml
+
+from stickslip.io.claims import read_table
+from stickslip.io.report import caption_text, claims_for, paper_figures, write_captions
+
+rows = read_table(snakemake.input.table)  # noqa: F821
+spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821
+config = snakemake.config  # noqa: F821
+captions = {}
+for fig, fspec in config["onedof"]["figures"].items():
+    figs = paper_figures(fspec.get("title", fig))
+    for reading in fspec["readings"]:
+        captions[f"results/figures/{fig}/{reading}.png"] = caption_text(
+            f"{fspec.get('title', fig)} — reading {reading}",
+            figs,
+            claims_for(rows, figs, reading),
+            note=f"Methods overlaid: {', '.join(fspec['methods'])}. A failed solver run is labelled as such, "
+            "never drawn as a result.",
+        )
+for scene in config.get("fe", {}).get("scenes", {}):
+    entry = spec["fe"].get(scene, {})
+    figs = paper_figures(entry.get("figures", ""))
+    captions[f"results/figures/fe/{scene}.png"] = caption_text(
+        f"Beam on rotating disc, scene {scene}", figs, claims_for(rows, figs), note=entry.get("note", "")
+    )
+if "methods_study" in config:
+    scenes = list(config["methods_study"]["scenes"])
+    wp, fm = spec["methods"]["work_precision"], spec["methods"]["failure_map"]
+    captions[f"results/figures/methods/{scenes[0]}_work_precision.png"] = caption_text(
+        f"Integration methods: work-precision charts ({', '.join(scenes)}) and failure map",
+        set(),
+        [],
+        note=f"{wp['note']} {fm['note']}",
+    )
+for name, nspec in config.get("notebooks", {}).items():
+    figs = set().union(
+        *[paper_figures(config["onedof"]["figures"][f].get("title", f)) for f in nspec.get("figures", [])]
+    )
+    captions[f"results/notebooks/{name}.html"] = caption_text(
+        f"Notebook {name}: figures next to the reported numbers", figs, claims_for(rows, figs)
+    )
+if "fe" in config:
+    figs = set(range(17, 37))
+    captions["results/notebooks/section_09_12_beam_on_disc.html"] = caption_text(
+        "Notebook section_09_12_beam_on_disc: the beam-on-disc scenes next to the reported numbers",
+        figs,
+        claims_for(rows, figs),
+    )
+if "methods_study" in config:
+    captions["results/notebooks/methods_work_precision.html"] = caption_text(
+        "Notebook methods_work_precision: the integration-methods study",
+        set(),
+        [],
+        note=spec["methods"]["work_precision"]["note"],
+    )
+captions["results/claims/deviations.csv"] = caption_text(
+    "The claims table: every reported number versus what this run measured",
+    set(),
+    rows,
+    note="Status per claim and reading; a status that differs from its pin is shown with the pinned one.",
+)
+write_captions(captions, snakemake.output[0])  # noqa: F821
