@@ -25,14 +25,23 @@ PAPER = ("sign_rk", {"method": "RK45", "rtol": 1e-3, "atol": 1e-6})
 def method_grid(quick: bool):
     rtols = (1e-2, 1e-3, 1e-4) if quick else (1e-2, 1e-3, 1e-4, 1e-5)
     grid = [("exact", {})]
-    grid += [("sign_rk", {"method": m, "rtol": r, "atol": r * 1e-3}) for m in ("RK45", "DOP853") for r in rtols]
-    for eps in ((1e-2, 1e-4) if quick else (1e-2, 1e-3, 1e-4, 1e-5)):
-        grid.append(("smooth", {"regularization": "tanh", "eps": eps, "method": "Radau", "rtol": 1e-6, "atol": 1e-9}))
-    grid += [("smooth", {"regularization": "arctan", "eps": 1e-4, "method": m, "rtol": 1e-6, "atol": 1e-9})
-             for m in ("BDF", "LSODA")]
+    grid += [
+        ("sign_rk", {"method": m, "rtol": r, "atol": r * 1e-3}) for m in ("RK45", "DOP853") for r in rtols
+    ]
+    for eps in (1e-2, 1e-4) if quick else (1e-2, 1e-3, 1e-4, 1e-5):
+        grid.append(
+            ("smooth", {"regularization": "tanh", "eps": eps, "method": "Radau", "rtol": 1e-6, "atol": 1e-9})
+        )
+    grid += [
+        ("smooth", {"regularization": "arctan", "eps": 1e-4, "method": m, "rtol": 1e-6, "atol": 1e-9})
+        for m in ("BDF", "LSODA")
+    ]
     grid += [("karnopp", {"eta": e, "rtol": 1e-6, "atol": 1e-9}) for e in (1e-2, 1e-3, 1e-4)]
-    grid += [("moreau", {"h": h, "theta": th}) for th in (0.5, 1.0)
-             for h in ((1e-2, 1e-3) if quick else (1e-2, 3e-3, 1e-3, 1e-4))]
+    grid += [
+        ("moreau", {"h": h, "theta": th})
+        for th in (0.5, 1.0)
+        for h in ((1e-2, 1e-3) if quick else (1e-2, 3e-3, 1e-3, 1e-4))
+    ]
     return grid
 
 
@@ -56,34 +65,53 @@ def main(argv=None):
     budget = dict(max_rhs=1_000_000, max_cpu=args.max_cpu)
 
     rows = []
-    _, paper = measure_run(make_solver(PAPER[0], **PAPER[1]), model, args.t_end, t_eval, ref, ref_cycle, **budget)
+    _, paper = measure_run(
+        make_solver(PAPER[0], **PAPER[1]), model, args.t_end, t_eval, ref, ref_cycle, **budget
+    )
     for name, settings in method_grid(args.quick):
-        traj, rec = measure_run(make_solver(name, **settings), model, args.t_end, t_eval, ref, ref_cycle, **budget)
+        traj, rec = measure_run(
+            make_solver(name, **settings), model, args.t_end, t_eval, ref, ref_cycle, **budget
+        )
         rec["failure"] = classify(traj, ref, model.params)["failure_kind"]
         rows.append((name, settings, rec))
 
-    print(f"# scene: baseline consistent sigma={args.sigma}, {args.t_end:g} s; reference period "
-          f"{ref_cycle['period']:.12g} s, peak-to-peak {ref_cycle['amplitude']:.12g} mm")
-    print(f"# paper's method {PAPER[0]} {PAPER[1]}: {paper['cpu_time'] * 1e3:.1f} ms CPU, "
-          f"{paper['rhs_evaluations']} RHS evals (min of {paper['repeats']})")
-    head = (f"{'method':8s} {'settings':44s} {'state_err':>9s} {'period_err':>10s} {'ampl_err':>9s} "
-            f"{'cpu_ms':>9s} {'rhs_evals':>9s} {'cpu/paper':>9s} {'status':7s} failure")
+    print(
+        f"# scene: baseline consistent sigma={args.sigma}, {args.t_end:g} s; reference period "
+        f"{ref_cycle['period']:.12g} s, peak-to-peak {ref_cycle['amplitude']:.12g} mm"
+    )
+    print(
+        f"# paper's method {PAPER[0]} {PAPER[1]}: {paper['cpu_time'] * 1e3:.1f} ms CPU, "
+        f"{paper['rhs_evaluations']} RHS evals (min of {paper['repeats']})"
+    )
+    head = (
+        f"{'method':8s} {'settings':44s} {'state_err':>9s} {'period_err':>10s} {'ampl_err':>9s} "
+        f"{'cpu_ms':>9s} {'rhs_evals':>9s} {'cpu/paper':>9s} {'status':7s} failure"
+    )
     print(head)
     print("-" * len(head))
     for name, settings, r in rows:
-        s = ",".join(f"{k}={v:g}" if isinstance(v, float) else f"{k}={v}" for k, v in settings.items()
-                     if k != "atol")
+        s = ",".join(
+            f"{k}={v:g}" if isinstance(v, float) else f"{k}={v}" for k, v in settings.items() if k != "atol"
+        )
         ratio = r["cpu_time"] / paper["cpu_time"]
-        print(f"{name:8s} {s[:44]:44s} {fmt(r['state']):>9s} {fmt(r['period_error']):>10s} "
-              f"{fmt(r['amplitude_error']):>9s} {r['cpu_time'] * 1e3:9.3f} {r['rhs_evaluations']:9d} "
-              f"{ratio:9.4f} {r['status']:7s} {r['failure']}")
+        print(
+            f"{name:8s} {s[:44]:44s} {fmt(r['state']):>9s} {fmt(r['period_error']):>10s} "
+            f"{fmt(r['amplitude_error']):>9s} {r['cpu_time'] * 1e3:9.3f} {r['rhs_evaluations']:9d} "
+            f"{ratio:9.4f} {r['status']:7s} {r['failure']}"
+        )
     ex = next(r for n, _, r in rows if n == "exact")
-    print(f"\nexact solver speed-up over the paper's method on the {args.t_end:g} s baseline: "
-          f"{paper['cpu_time'] / ex['cpu_time']:.0f}x ({paper['cpu_time'] * 1e3:.1f} ms / "
-          f"{ex['cpu_time'] * 1e3:.3f} ms, same run; issue target >= 100x)")
-    print("\nPareto front of the approximate methods (CPU time vs state error, successful runs; "
-          "the exact solver is faster and exact):")
-    ok = sorted((r["cpu_time"], r["state"], n, st) for n, st, r in rows if r["status"] == "ok" and n != "exact")
+    print(
+        f"\nexact solver speed-up over the paper's method on the {args.t_end:g} s baseline: "
+        f"{paper['cpu_time'] / ex['cpu_time']:.0f}x ({paper['cpu_time'] * 1e3:.1f} ms / "
+        f"{ex['cpu_time'] * 1e3:.3f} ms, same run; issue target >= 100x)"
+    )
+    print(
+        "\nPareto front of the approximate methods (CPU time vs state error, successful runs; "
+        "the exact solver is faster and exact):"
+    )
+    ok = sorted(
+        (r["cpu_time"], r["state"], n, st) for n, st, r in rows if r["status"] == "ok" and n != "exact"
+    )
     best = math.inf
     for cpu, err, n, st in ok:
         if err < best:

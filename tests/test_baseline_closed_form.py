@@ -70,7 +70,8 @@ def test_caption_sigma_limit_cycle_matches_closed_form(sigma):
 def test_paper_method_at_ode45_defaults_is_close_but_chatters():
     """sign() + RK45 at rtol 1e-3 finds the limit cycle to ~1 %, but its 'stick' chatters around V_b.
 
-    (Tighter tolerances do not converge: the step size collapses at the discontinuity - see the methods study.)
+    (Tighter tolerances do not converge: the step size collapses at the discontinuity; see the methods
+    study.)
     """
     model = BeltModel.build(PAPER_BASELINE.with_(sigma=0.5), "consistent")
     t = np.arange(0, 40.0001, 0.01)
@@ -87,7 +88,10 @@ def test_paper_method_at_ode45_defaults_is_close_but_chatters():
 
 
 def test_printed_equations_never_stick_and_settle_below_zero():
-    for variant, x_rest in (("eq3_printed", -(MU_N - 0.3 * MU_N * VB) / K), ("eq4_printed", -(MU_N - 0.3 * VB) / K)):
+    for variant, x_rest in (
+        ("eq3_printed", -(MU_N - 0.3 * MU_N * VB) / K),
+        ("eq4_printed", -(MU_N - 0.3 * VB) / K),
+    ):
         traj = ExactSwitchSolver().solve(BeltModel.build(PAPER_BASELINE, variant), 40.0)
         assert traj.ok and not np.any(traj.phase == 0)
         assert traj.x[-1] == pytest.approx(x_rest, abs=1e-6)

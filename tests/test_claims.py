@@ -18,8 +18,19 @@ def opener(path):
     return datasets()[path]
 
 
-ROW = {"id": "f", "section": "3", "figure": "Fig. 2", "quote": "q", "kind": "value", "dataset": "r/{reading}.nc",
-       "variable": "f", "value": 0.25, "unit": "Hz", "tolerance": {"rel": 0.2}, "expected": "reproduced"}
+ROW = {
+    "id": "f",
+    "section": "3",
+    "figure": "Fig. 2",
+    "quote": "q",
+    "kind": "value",
+    "dataset": "r/{reading}.nc",
+    "variable": "f",
+    "value": 0.25,
+    "unit": "Hz",
+    "tolerance": {"rel": 0.2},
+    "expected": "reproduced",
+}
 
 
 def test_value_claim_per_reading():
@@ -30,13 +41,31 @@ def test_value_claim_per_reading():
 
 
 def test_compare_ratio_and_trend_claims():
-    cmp_row = {**ROW, "kind": "compare", "lhs": {"dataset": "r/a.nc", "variable": "amp"}, "relation": ">",
-               "rhs": {"dataset": "r/b.nc", "variable": "amp"}}
+    cmp_row = {
+        **ROW,
+        "kind": "compare",
+        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
+        "relation": ">",
+        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
+    }
     assert evaluate(cmp_row, "", opener).status == "reproduced"
-    ratio = {**ROW, "kind": "ratio", "value": 2.0, "lhs": {"dataset": "r/a.nc", "variable": "amp"},
-             "rhs": {"dataset": "r/b.nc", "variable": "amp"}, "tolerance": {"rel": 0.1}}
+    ratio = {
+        **ROW,
+        "kind": "ratio",
+        "value": 2.0,
+        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
+        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
+        "tolerance": {"rel": 0.1},
+    }
     assert evaluate(ratio, "", opener).measured == pytest.approx(0.93 / 0.45)
-    trend = {**ROW, "kind": "trend", "dataset": "sweep.nc", "coord": "mu_s", "variable": "frequency", "sign": -1}
+    trend = {
+        **ROW,
+        "kind": "trend",
+        "dataset": "sweep.nc",
+        "coord": "mu_s",
+        "variable": "frequency",
+        "sign": -1,
+    }
     res = evaluate(trend, "", opener)
     assert res.status == "reproduced" and res.measured < 0
     assert evaluate({**trend, "sign": 1}, "", opener).status == "deviates"
@@ -53,9 +82,14 @@ def test_expected_per_reading_with_default():
     assert [r.matches_expected for r in results] == [True, True]
 
 
-@pytest.mark.parametrize("broken,match", [
-    ({"kind": "guess"}, "kind"), ({"expected": "maybe"}, "expected status"), ({"quote": None}, None),
-])
+@pytest.mark.parametrize(
+    "broken,match",
+    [
+        ({"kind": "guess"}, "kind"),
+        ({"expected": "maybe"}, "expected status"),
+        ({"quote": None}, None),
+    ],
+)
 def test_malformed_claims_are_rejected_with_the_key(tmp_path, broken, match):
     row = {**ROW, **broken}
     if broken.get("quote", 1) is None:
@@ -91,8 +125,13 @@ def test_repository_claims_files_load(repo_root):
 
 
 def test_compare_against_a_constant_and_trend_along_a_data_variable():
-    row = {**ROW, "kind": "compare", "lhs": {"dataset": "r/a.nc", "variable": "amp"}, "relation": ">",
-           "rhs": {"value": 0.0}}
+    row = {
+        **ROW,
+        "kind": "compare",
+        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
+        "relation": ">",
+        "rhs": {"value": 0.0},
+    }
     assert evaluate(row, "", opener).status == "reproduced"
     ds = xr.Dataset({"env": ("window", [1.0, 2.0, 3.0]), "window_time": ("window", [0.0, 1.0, 2.0])})
     trend = {**ROW, "kind": "trend", "dataset": "w.nc", "coord": "window_time", "variable": "env", "sign": 1}

@@ -3,9 +3,10 @@
 import pytest
 import yaml
 
-from project_run import copy_project, run_snakemake
 from stickslip.io.scenes import run_spec
 from stickslip.model import ParameterError
+
+from project_run import copy_project, run_snakemake
 
 
 @pytest.fixture(scope="module")
@@ -21,12 +22,15 @@ def test_every_figure_run_resolves(config):
                 assert spec.t_eval[-1] == pytest.approx(spec.t_end)
 
 
-@pytest.mark.parametrize("mutate,key", [
-    (lambda c: c["onedof"]["scenes"]["fig02"]["params"].update(mass=float("nan")), "mass"),
-    (lambda c: c["onedof"]["readings"]["consistent_caption"].update(variant="eq5"), "variant"),
-    (lambda c: c["onedof"]["methods"]["ode45"].update(rtoll=1e-3), "rtoll"),
-    (lambda c: c["onedof"]["methods"]["ode45"].update(solver="euler"), "solver"),
-])
+@pytest.mark.parametrize(
+    "mutate,key",
+    [
+        (lambda c: c["onedof"]["scenes"]["fig02"]["params"].update(mass=float("nan")), "mass"),
+        (lambda c: c["onedof"]["readings"]["consistent_caption"].update(variant="eq5"), "variant"),
+        (lambda c: c["onedof"]["methods"]["ode45"].update(rtoll=1e-3), "rtoll"),
+        (lambda c: c["onedof"]["methods"]["ode45"].update(solver="euler"), "solver"),
+    ],
+)
 def test_run_spec_errors_name_the_key(config, mutate, key):
     import copy
 
@@ -40,12 +44,15 @@ def test_run_spec_errors_name_the_key(config, mutate, key):
 
 
 @pytest.mark.pipeline
-@pytest.mark.parametrize("patch,needle", [
-    ({"onedof": {"defaults": {"params": {"stiffness": -5.0}}}}, "stiffness"),
-    ({"onedof": {"defaults": {"t_end": "forty"}}}, "t_end"),
-    ({"onedof": {"scenes": {"fig02": {"params": {"mass": float("nan")}}}}}, "mass"),
-    ({"onedof": {"methods": {"ode45": {"solver": "euler"}}}}, "solver"),
-])
+@pytest.mark.parametrize(
+    "patch,needle",
+    [
+        ({"onedof": {"defaults": {"params": {"stiffness": -5.0}}}}, "stiffness"),
+        ({"onedof": {"defaults": {"t_end": "forty"}}}, "t_end"),
+        ({"onedof": {"scenes": {"fig02": {"params": {"mass": float("nan")}}}}}, "mass"),
+        ({"onedof": {"methods": {"ode45": {"solver": "euler"}}}}, "solver"),
+    ],
+)
 def test_snakemake_rejects_bad_config_before_running(tmp_path, patch, needle):
     work = copy_project(tmp_path)
     bad = tmp_path / "bad.yaml"

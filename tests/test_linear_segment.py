@@ -38,8 +38,15 @@ def test_undamped_case_is_the_harmonic_closed_form():
 
 
 @settings(max_examples=60, deadline=None)
-@given(m=st.floats(0.1, 5), c=st.floats(-2, 20), k=st.floats(0.5, 20), g0=st.floats(-5, 5), g1=st.floats(-1, 1),
-       x0=st.floats(-2, 2), v0=st.floats(-2, 2))
+@given(
+    m=st.floats(0.1, 5),
+    c=st.floats(-2, 20),
+    k=st.floats(0.5, 20),
+    g0=st.floats(-5, 5),
+    g1=st.floats(-1, 1),
+    x0=st.floats(-2, 2),
+    v0=st.floats(-2, 2),
+)
 def test_initial_state_and_residual(m, c, k, g0, g1, x0, v0):
     seg = LinearSegment(m=m, c=c, k=k, g0=g0, g1=g1, x0=x0, v0=v0)
     x, v = seg.state(0.0)

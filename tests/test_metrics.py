@@ -6,7 +6,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from stickslip.analysis.metrics import (
-    count_peaks, frequency_from_peaks, frequency_from_spectrum, limit_cycle_metrics, phase_runs, segment_runs,
+    count_peaks,
+    frequency_from_peaks,
+    frequency_from_spectrum,
+    limit_cycle_metrics,
+    phase_runs,
+    segment_runs,
 )
 from stickslip.solvers.base import SolverStats, Trajectory
 
@@ -43,8 +48,16 @@ def test_segment_runs_merge_slips_and_keep_grazing_touches():
 
 
 def _trajectory(t, x, v, phase, segments=None):
-    return Trajectory(t=t, x=x, v=v, phase=phase, belt_velocity=np.full_like(t, 0.5), stats=SolverStats(),
-                      method="synthetic", segments=segments)
+    return Trajectory(
+        t=t,
+        x=x,
+        v=v,
+        phase=phase,
+        belt_velocity=np.full_like(t, 0.5),
+        stats=SolverStats(),
+        method="synthetic",
+        segments=segments,
+    )
 
 
 def test_limit_cycle_metrics_of_a_sawtooth_with_known_intervals():

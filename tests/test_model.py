@@ -62,9 +62,20 @@ def test_stick_release_position_is_independent_of_sigma():
         assert model.stick_release_position() == pytest.approx((5.0 - 1.5 * 0.5) / 5.0)
 
 
-@pytest.mark.parametrize("key,value", [("mass", 0.0), ("mass", -1.0), ("stiffness", float("nan")),
-                                       ("normal_force", 0), ("damping", -0.1), ("sigma", float("inf")),
-                                       ("mass", "1"), ("mass", True), ("units", "imperial")])
+@pytest.mark.parametrize(
+    "key,value",
+    [
+        ("mass", 0.0),
+        ("mass", -1.0),
+        ("stiffness", float("nan")),
+        ("normal_force", 0),
+        ("damping", -0.1),
+        ("sigma", float("inf")),
+        ("mass", "1"),
+        ("mass", True),
+        ("units", "imperial"),
+    ],
+)
 def test_bad_parameters_name_the_key(key, value):
     with pytest.raises(ParameterError, match=key):
         PAPER_BASELINE.with_(**{key: value})

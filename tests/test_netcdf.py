@@ -12,20 +12,34 @@ from stickslip.solvers import ExactSwitchSolver
 
 @pytest.fixture
 def baseline_dataset():
-    traj = ExactSwitchSolver().solve(BeltModel.build(PAPER_BASELINE, "consistent"), 20.0, np.linspace(0, 20, 2001))
+    traj = ExactSwitchSolver().solve(
+        BeltModel.build(PAPER_BASELINE, "consistent"), 20.0, np.linspace(0, 20, 2001)
+    )
     return netcdf.trajectory_dataset(traj, limit_cycle_metrics(traj, 5.0))
 
 
 def test_every_variable_has_units_and_long_name(baseline_dataset, tmp_path):
-    path = netcdf.write_dataset(baseline_dataset, tmp_path / "a.nc", scene={"name": "x", "sigma": 0.3,
-                                "flag": True, "none": None, "list": [1, 2]},
-                                interpretation={"variant": "consistent"}, method={"name": "exact"})
+    path = netcdf.write_dataset(
+        baseline_dataset,
+        tmp_path / "a.nc",
+        scene={"name": "x", "sigma": 0.3, "flag": True, "none": None, "list": [1, 2]},
+        interpretation={"variant": "consistent"},
+        method={"name": "exact"},
+    )
     ds = netcdf.read_dataset(path)
     for name, var in ds.variables.items():
         assert "units" in var.attrs, name
         assert "long_name" in var.attrs, name
-    for key in ("Conventions", "title", "source", "history", "references", "interpretation", "scene_sigma",
-                "method_name"):
+    for key in (
+        "Conventions",
+        "title",
+        "source",
+        "history",
+        "references",
+        "interpretation",
+        "scene_sigma",
+        "method_name",
+    ):
         assert key in ds.attrs, key
     assert ds.attrs["scene_flag"] == 1 and ds.attrs["scene_list"] == "[1, 2]"
     assert ds.attrs["source"].startswith("stickslip ")

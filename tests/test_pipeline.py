@@ -3,8 +3,9 @@
 import pytest
 import xarray as xr
 
-from project_run import copy_project, run_snakemake
 from stickslip.io.claims import read_table
+
+from project_run import copy_project, run_snakemake
 
 
 @pytest.fixture(scope="module")

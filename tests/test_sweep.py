@@ -6,13 +6,21 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from stickslip.analysis.sweep import (
-    SweepAxis, chunk_count, chunk_dataset, chunk_points, grid_size, merge_chunks, run_points,
+    SweepAxis,
+    chunk_count,
+    chunk_dataset,
+    chunk_points,
+    grid_size,
+    merge_chunks,
+    run_points,
 )
 from stickslip.model import PAPER_BASELINE, ParameterError
 from stickslip.solvers import ExactSwitchSolver
 
-AXES = [SweepAxis("belt_velocity", (0.3, 0.5, 0.8), "mm s-1"), SweepAxis("mass", (1.0, 2.0), "kg",
-                                                                          linked={"normal_force": 10.0})]
+AXES = [
+    SweepAxis("belt_velocity", (0.3, 0.5, 0.8), "mm s-1"),
+    SweepAxis("mass", (1.0, 2.0), "kg", linked={"normal_force": 10.0}),
+]
 
 
 @settings(max_examples=30, deadline=None)
@@ -41,15 +49,36 @@ def test_merged_chunks_equal_the_unchunked_sweep():
     for name in whole.data_vars:
         np.testing.assert_array_equal(whole[name].values, chunked[name].values)
     # a point of the grid equals a single run with the same parameters
-    single = run_points(PAPER_BASELINE.with_(sigma=0.5, belt_velocity=0.8, mass=2.0, normal_force=20.0),
-                        "consistent", [{}], ExactSwitchSolver(), 20.0, np.linspace(0, 20, 2001), 8.0)
+    single = run_points(
+        PAPER_BASELINE.with_(sigma=0.5, belt_velocity=0.8, mass=2.0, normal_force=20.0),
+        "consistent",
+        [{}],
+        ExactSwitchSolver(),
+        20.0,
+        np.linspace(0, 20, 2001),
+        8.0,
+    )
     for name in ("stick_time", "frequency_spectrum", "amplitude_peak_to_peak"):
         np.testing.assert_equal(float(whole[name].sel(belt_velocity=0.8, mass=2.0)), single[name][0])
 
 
 def test_missing_chunk_is_an_error():
-    parts = [chunk_dataset(AXES, 4, 0, run_points(PAPER_BASELINE, "consistent", chunk_points(AXES, 4, 0),
-                                                  ExactSwitchSolver(), 5.0, np.linspace(0, 5, 51), 1.0))]
+    parts = [
+        chunk_dataset(
+            AXES,
+            4,
+            0,
+            run_points(
+                PAPER_BASELINE,
+                "consistent",
+                chunk_points(AXES, 4, 0),
+                ExactSwitchSolver(),
+                5.0,
+                np.linspace(0, 5, 51),
+                1.0,
+            ),
+        )
+    ]
     with pytest.raises(ValueError, match="cover 4 of 6"):
         merge_chunks(AXES, parts)
 

@@ -1,9 +1,14 @@
 """Beam elements against closed-form cantilever values and element-count convergence."""
+
 import numpy as np
 import pytest
 
 from stickslip.fe.beam import (
-    assemble_beam, cantilever_axial_frequencies, cantilever_bending_frequencies, classify_modes, modal_analysis,
+    assemble_beam,
+    cantilever_axial_frequencies,
+    cantilever_bending_frequencies,
+    classify_modes,
+    modal_analysis,
 )
 from stickslip.fe.params import BeamParams, FrictionTable
 
@@ -35,7 +40,12 @@ def test_element_count_convergence(mass):
     for n in (4, 8, 16, 32):
         p = BeamParams(n_elements=n, mass=mass)
         fb, fa = _split(p)
-        errs.append(max(abs(fb[2] / cantilever_bending_frequencies(p, 3)[2] - 1), abs(fa[0] / cantilever_axial_frequencies(p, 1)[0] - 1)))
+        errs.append(
+            max(
+                abs(fb[2] / cantilever_bending_frequencies(p, 3)[2] - 1),
+                abs(fa[0] / cantilever_axial_frequencies(p, 1)[0] - 1),
+            )
+        )
     assert all(b < a for a, b in zip(errs, errs[1:])), errs
     assert errs[-1] < 5e-3  # lumped mass converges O(h^2), consistent O(h^4)
 
@@ -48,8 +58,15 @@ def test_gravity_load_total_weight():
     assert -b.f[v].sum() == pytest.approx(p.weight * (1 - 0.5 / p.n_elements), rel=1e-12)
 
 
-@pytest.mark.parametrize("key,kw", [("thickness", {"thickness": 0}), ("n_elements", {"n_elements": 0}),
-                                    ("mass", {"mass": "diagonal"}), ("poisson_ratio", {"poisson_ratio": 0.7})])
+@pytest.mark.parametrize(
+    "key,kw",
+    [
+        ("thickness", {"thickness": 0}),
+        ("n_elements", {"n_elements": 0}),
+        ("mass", {"mass": "diagonal"}),
+        ("poisson_ratio", {"poisson_ratio": 0.7}),
+    ],
+)
 def test_params_validation_names_key(key, kw):
     with pytest.raises(ValueError, match=key):
         BeamParams(**kw)

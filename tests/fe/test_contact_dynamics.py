@@ -1,11 +1,12 @@
 """Contact, friction and explicit integration: non-penetration, penalty law, stick without creep,
 energy balance, time-step bound, reduced vs full, stability vs transient."""
+
 import dataclasses
 
 import numpy as np
 import pytest
 
-from stickslip.fe.explicit import ContactLaw, System, integrate, stable_time_step, static_state
+from stickslip.fe.explicit import ContactLaw, integrate, stable_time_step, static_state
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.reduced import contact_boundary, craig_bampton
 from stickslip.fe.scene import SceneParams, build_scene
@@ -15,8 +16,11 @@ FIG17 = FrictionTable.paper_fig17()
 
 
 def scene(**kw):
-    m = {"beam": {"n_elements": kw.pop("n", 8)}, "disc": {"surface_speed_mm_s": kw.pop("speed", 0.5)},
-         "contact": kw.pop("contact", {})}
+    m = {
+        "beam": {"n_elements": kw.pop("n", 8)},
+        "disc": {"surface_speed_mm_s": kw.pop("speed", 0.5)},
+        "contact": kw.pop("contact", {}),
+    }
     return build_scene(SceneParams.from_mapping(m), kw.pop("friction", FIG17))
 
 
@@ -75,10 +79,19 @@ def test_zero_disc_speed_stays_at_rest():
 
 
 def test_energy_balance_without_friction():
-    s = scene(contact={"method": "penalty", "penalty_stiffness": 200.0}, friction=FrictionTable((0.0,), (0.0,)))
+    s = scene(
+        contact={"method": "penalty", "penalty_stiffness": 200.0}, friction=FrictionTable((0.0,), (0.0,))
+    )
     sysm, law = s.system, s.law
-    r = integrate(sysm, law, 0.01, safety_factor=0.2, output_interval=1e-5, record_state=True, initial_state="undeformed")
-    dt = r.dt
+    r = integrate(
+        sysm,
+        law,
+        0.01,
+        safety_factor=0.2,
+        output_interval=1e-5,
+        record_state=True,
+        initial_state="undeformed",
+    )
     # energy at integer steps: v_n ~ v_{n+1/2} - dt/2 a_n is not recorded; use u and half-step v with
     # a tolerance far below the gravity work converted (drop from the undeformed state)
     E = []
@@ -111,6 +124,7 @@ def test_reduced_matches_full_in_continuous_slip():
     red, T = craig_bampton(s.system, contact_boundary(s.system), 4, (s.beam.free % 3) == 0, 1)
     rr = integrate(red, s.law, 0.01, safety_factor=0.5, output_interval=2e-6)
     from stickslip.fe.metrics import dominant_frequency
+
     ff = dominant_frequency(full.t, full.x)
     fr = dominant_frequency(rr.t, rr.x)
     assert fr == pytest.approx(ff, rel=0.05)

@@ -15,7 +15,6 @@ from stickslip.solvers.exact import Segment, first_exit_root
 from stickslip.solvers.linear import LinearSegment
 
 
-
 def scene(variant="consistent", **changes):
     return BeltModel.build(PAPER_BASELINE.with_(**changes), variant)
 
@@ -32,7 +31,7 @@ def closed_form_cycle(p):
     xr = (mun - p.damping * V) / p.stiffness
     p0 = mun * (1 - p.sigma * V) / p.stiffness
     alpha = -c / (2 * p.mass)
-    w = math.sqrt(p.stiffness / p.mass - alpha ** 2)
+    w = math.sqrt(p.stiffness / p.mass - alpha**2)
     A = xr - p0
     B = (V - alpha * A) / w
 
@@ -40,7 +39,9 @@ def closed_form_cycle(p):
         return p0 + math.exp(alpha * t) * (A * math.cos(w * t) + B * math.sin(w * t))
 
     def v(t):
-        return math.exp(alpha * t) * ((alpha * A + w * B) * math.cos(w * t) + (alpha * B - w * A) * math.sin(w * t))
+        return math.exp(alpha * t) * (
+            (alpha * A + w * B) * math.cos(w * t) + (alpha * B - w * A) * math.sin(w * t)
+        )
 
     if A == 0.0:  # zero slip damping and release at the equilibrium: a harmonic orbit grazing v = V
         return 2 * math.pi / w, 2 * V / w
@@ -49,17 +50,29 @@ def closed_form_cycle(p):
     k = np.nonzero((g[:-1] < 0) & (g[1:] >= 0))[0][0]
     t_slip = brentq(lambda t: v(t) - V, grid[k], grid[k + 1], xtol=1e-15, rtol=4e-15)
     vz = np.array([v(t) for t in grid])
-    zeros = [brentq(v, grid[i], grid[i + 1], xtol=1e-15, rtol=4e-15)
-             for i in np.nonzero(np.sign(vz[:-1]) != np.sign(vz[1:]))[0] if grid[i + 1] <= t_slip]
+    zeros = [
+        brentq(v, grid[i], grid[i + 1], xtol=1e-15, rtol=4e-15)
+        for i in np.nonzero(np.sign(vz[:-1]) != np.sign(vz[1:]))[0]
+        if grid[i + 1] <= t_slip
+    ]
     xs = x(t_slip)
     return t_slip + (xr - xs) / V, x(zeros[0]) - x(zeros[1])
 
 
 # Stick-slip cycles of the consistent law. (mu_s = 0.8 or C = 0.1 with sigma = 0.5 are not here: the
 # unbounded linear fall of the friction makes those orbits grow without bound, so they have no cycle.)
-@pytest.mark.parametrize("changes", [dict(sigma=0.5), dict(sigma=0.3), dict(sigma=0.4),
-                                     dict(sigma=0.5, belt_velocity=1.0), dict(sigma=0.5, belt_velocity=0.3),
-                                     dict(sigma=0.5, damping=2.0), dict(sigma=0.5, mu_s=0.6)])
+@pytest.mark.parametrize(
+    "changes",
+    [
+        dict(sigma=0.5),
+        dict(sigma=0.3),
+        dict(sigma=0.4),
+        dict(sigma=0.5, belt_velocity=1.0),
+        dict(sigma=0.5, belt_velocity=0.3),
+        dict(sigma=0.5, damping=2.0),
+        dict(sigma=0.5, mu_s=0.6),
+    ],
+)
 def test_limit_cycle_matches_closed_form(changes):
     model = scene(**changes)
     period, amplitude = closed_form_cycle(model.params)
@@ -174,7 +187,10 @@ def test_first_exit_root_cases():
     assert first_exit_root(0.0, 0.0, 1.0) == 0.0
 
 
-def _check_continuity(segs, omega=math.sqrt(5.0)):
+OMEGA_BASELINE = math.sqrt(5.0)
+
+
+def _check_continuity(segs, omega=OMEGA_BASELINE):
     """x and v agree at every switch to rounding of the state's own scale (orbits may grow large)."""
     for a, b in zip(segs[:-1], segs[1:]):
         assert a.t1 == b.t0
@@ -185,11 +201,17 @@ def _check_continuity(segs, omega=math.sqrt(5.0)):
         assert vb == pytest.approx(va, rel=0, abs=1e-9 * vscale)
 
 
-params_strategy = st.fixed_dictionaries({
-    "sigma": st.floats(0.0, 0.6), "damping": st.floats(0.0, 3.0), "mu_s": st.floats(0.2, 1.0),
-    "belt_velocity": st.floats(0.1, 1.5), "x0": st.floats(-1.0, 1.0), "v0": st.floats(-1.0, 1.5),
-    "belt_deceleration": st.sampled_from([0.0, 0.0, 0.025, 0.2]),
-})
+params_strategy = st.fixed_dictionaries(
+    {
+        "sigma": st.floats(0.0, 0.6),
+        "damping": st.floats(0.0, 3.0),
+        "mu_s": st.floats(0.2, 1.0),
+        "belt_velocity": st.floats(0.1, 1.5),
+        "x0": st.floats(-1.0, 1.0),
+        "v0": st.floats(-1.0, 1.5),
+        "belt_deceleration": st.sampled_from([0.0, 0.0, 0.025, 0.2]),
+    }
+)
 hyp = settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -229,13 +251,13 @@ def test_property_energy_balance_over_slip(changes):
         if s.phase == STICK or s.t1 - s.t0 < 1e-6:
             continue
 
-        def power(t):
+        def power(t, s=s):
             x, v = (float(q) for q in s.state(t))
             vb = float(model.belt_velocity(t))
             force = model.friction.a * s.phase + model.friction.b * v + model.friction.kappa * vb
             return v * (force - p.damping * v)
 
-        def energy(t):
+        def energy(t, s=s):
             x, v = (float(q) for q in s.state(t))
             return 0.5 * model.mass * v * v + 0.5 * p.stiffness * x * x
 

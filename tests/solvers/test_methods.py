@@ -29,12 +29,19 @@ def test_registry_has_every_method():
     assert {"exact", "sign_rk", "smooth", "karnopp", "moreau"} <= set(METHODS)
 
 
-@pytest.mark.parametrize("name, settings, tol", [
-    ("smooth", {"eps": 1e-5, "method": "Radau"}, 5e-3),
-    ("smooth", {"eps": 1e-6, "regularization": "arctan", "method": "LSODA", "rtol": 1e-8, "atol": 1e-11}, 5e-2),
-    ("karnopp", {"eta": 1e-4}, 2e-3),
-    ("moreau", {"h": 1e-3, "theta": 0.5}, 1e-4),
-])
+@pytest.mark.parametrize(
+    "name, settings, tol",
+    [
+        ("smooth", {"eps": 1e-5, "method": "Radau"}, 5e-3),
+        (
+            "smooth",
+            {"eps": 1e-6, "regularization": "arctan", "method": "LSODA", "rtol": 1e-8, "atol": 1e-11},
+            5e-2,
+        ),
+        ("karnopp", {"eta": 1e-4}, 2e-3),
+        ("moreau", {"h": 1e-3, "theta": 0.5}, 1e-4),
+    ],
+)
 def test_methods_converge_to_the_exact_solution(base, name, settings, tol):
     model, ref, _ = base
     tr = make_solver(name, **settings).solve(model, T_END, T_EVAL)
@@ -107,13 +114,15 @@ def test_belt_position_decelerating():
 def test_moreau_handles_printed_and_decelerating_scenes():
     tr = make_solver("moreau", h=1e-3).solve(scene("eq3_printed", sigma=0.5), 10.0, np.linspace(0, 10, 101))
     assert tr.ok and not np.any(tr.phase == STICK)
-    tr = make_solver("moreau", h=1e-3).solve(scene(sigma=0.5, belt_deceleration=0.025), 30.0,
-                                             np.linspace(0, 30, 301))
+    tr = make_solver("moreau", h=1e-3).solve(
+        scene(sigma=0.5, belt_deceleration=0.025), 30.0, np.linspace(0, 30, 301)
+    )
     assert tr.ok and np.all(tr.v[tr.t > 21] == 0.0)
 
 
-@pytest.mark.parametrize("name, bad", [("moreau", {"h": 0.0}), ("karnopp", {"eta": -1.0}),
-                                       ("smooth", {"eps": 0.0})])
+@pytest.mark.parametrize(
+    "name, bad", [("moreau", {"h": 0.0}), ("karnopp", {"eta": -1.0}), ("smooth", {"eps": 0.0})]
+)
 def test_bad_settings_raise(base, name, bad):
     with pytest.raises(ValueError):
         make_solver(name, **bad).solve(base[0], 1.0)

@@ -30,8 +30,9 @@ def test_config_validates_and_builds(path):
 
 
 def test_atol_follows_rtol():
-    runs = methods_common.expand_methods([{"solver": "sign_rk", "atol_per_rtol": 1e-3,
-                                           "sweep": {"rtol": [1e-2, 1e-4]}}])
+    runs = methods_common.expand_methods(
+        [{"solver": "sign_rk", "atol_per_rtol": 1e-3, "sweep": {"rtol": [1e-2, 1e-4]}}]
+    )
     assert [s["atol"] for _, s, _ in runs] == pytest.approx([1e-5, 1e-7])
 
 

@@ -12,7 +12,8 @@ load f and the contact-point vectors; the only nonlinearity is at the contact po
 * ``penalty``: normal force k_p * penetration evaluated at u_n (explicit), same tangential treatment.
 * ``fixed_normal``: normal force held at a prescribed value (Section 10, no separation possible).
 
-Velocities live at half steps: v_{n+1/2} = v_{n-1/2} + dt M^-1 (f - K u_n) + M^-1 C P, u_{n+1} = u_n + dt v_{n+1/2}.
+Velocities live at half steps: v_{n+1/2} = v_{n-1/2} + dt M^-1 (f - K u_n) + M^-1 C P,
+u_{n+1} = u_n + dt v_{n+1/2}.
 """
 
 from __future__ import annotations
@@ -87,7 +88,9 @@ def static_state(system: System, law: ContactLaw) -> tuple[np.ndarray, float]:
             q, N = np.linalg.solve(K, f), 0.0
         return q, N
     if law.method == "penalty":
-        q = np.linalg.solve(K + law.penalty_stiffness * np.outer(cn, cn), f - law.penalty_stiffness * law.gap0 * cn)
+        q = np.linalg.solve(
+            K + law.penalty_stiffness * np.outer(cn, cn), f - law.penalty_stiffness * law.gap0 * cn
+        )
         g = law.gap0 + cn @ q
         if g >= 0:
             return np.linalg.solve(K, f), 0.0
@@ -265,11 +268,24 @@ def integrate(
     cpu = time.process_time() - t0
     m = j
     res = ExplicitResult(
-        t=out["t"][:m], x=out["x"][:m], y=out["y"][:m], vx=out["vx"][:m], vy=out["vy"][:m],
-        normal_force=out["N"][:m], friction_force=out["F"][:m], slip_velocity=out["vr"][:m], state=st[:m],
-        dt=dt, dt_crit=dt_crit, n_steps=n, step_counts={"separation": counts[0], "stick": counts[1], "slip": counts[2]},
-        cpu_time=cpu, static_normal_force=N_stat, q_static=q_stat,
-        q_samples=None if qs is None else qs[:m], v_samples=None if vs is None else vs[:m],
+        t=out["t"][:m],
+        x=out["x"][:m],
+        y=out["y"][:m],
+        vx=out["vx"][:m],
+        vy=out["vy"][:m],
+        normal_force=out["N"][:m],
+        friction_force=out["F"][:m],
+        slip_velocity=out["vr"][:m],
+        state=st[:m],
+        dt=dt,
+        dt_crit=dt_crit,
+        n_steps=n,
+        step_counts={"separation": counts[0], "stick": counts[1], "slip": counts[2]},
+        cpu_time=cpu,
+        static_normal_force=N_stat,
+        q_static=q_stat,
+        q_samples=None if qs is None else qs[:m],
+        v_samples=None if vs is None else vs[:m],
     )
     res.extra["diverged"] = diverged
     return res

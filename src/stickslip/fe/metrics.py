@@ -39,7 +39,7 @@ def window_envelope(t: np.ndarray, x: np.ndarray, n_windows: int = 10):
     idx = np.clip(np.searchsorted(t, edges), 0, t.size)
     centres, env = [], []
     for a, b in zip(idx[:-1], idx[1:]):
-        seg = x[a:max(b, a + 1)]
+        seg = x[a : max(b, a + 1)]
         centres.append(0.5 * (t[a] + t[min(max(b, a + 1), t.size) - 1]))
         env.append(0.5 * (seg.max() - seg.min()))
     return np.asarray(centres), np.asarray(env)
@@ -75,7 +75,9 @@ def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None
         "slip_fraction": r.fractions()["slip"],
         "separation_fraction": r.fractions()["separation"],
         "static_normal_force": r.static_normal_force,
-        "max_normal_force_ratio": float(r.normal_force.max() / r.static_normal_force) if r.static_normal_force > 0 else np.nan,
+        "max_normal_force_ratio": float(r.normal_force.max() / r.static_normal_force)
+        if r.static_normal_force > 0
+        else np.nan,
         "stable_time_step": r.dt_crit,
         "time_step": r.dt,
         "increment_count": int(r.n_steps),

@@ -8,8 +8,9 @@ Every validation error is a ``ValueError`` whose message starts with the offendi
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
-from typing import Any, Mapping
+from typing import Any
 
 import numpy as np
 
@@ -83,7 +84,7 @@ class BeamParams:
         return self.rho * self.area * self.length * self.g
 
     @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> "BeamParams":
+    def from_mapping(cls, data: Mapping[str, Any]) -> BeamParams:
         return _from_mapping(cls, data, "beam.")
 
 
@@ -116,7 +117,7 @@ class DiscParams:
         return float(self.speed_rev_per_min) * 2.0 * math.pi / 60.0 * self.diameter / 2.0
 
     @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> "DiscParams":
+    def from_mapping(cls, data: Mapping[str, Any]) -> DiscParams:
         return _from_mapping(cls, data, "disc.")
 
 
@@ -148,7 +149,7 @@ class ContactParams:
         _positive("penalty_stiffness", self.penalty_stiffness)
 
     @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> "ContactParams":
+    def from_mapping(cls, data: Mapping[str, Any]) -> ContactParams:
         return _from_mapping(cls, data, "contact.")
 
 
@@ -173,7 +174,7 @@ class SolverParams:
             raise ValueError(f"mass_damping: must be >= 0, got {self.mass_damping!r}")
 
     @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> "SolverParams":
+    def from_mapping(cls, data: Mapping[str, Any]) -> SolverParams:
         return _from_mapping(cls, data, "solver.")
 
 
@@ -211,7 +212,7 @@ class FrictionTable:
         return float((self.mu[i + 1] - self.mu[i]) / (s[i + 1] - s[i]))
 
     @classmethod
-    def from_csv(cls, path) -> "FrictionTable":
+    def from_csv(cls, path) -> FrictionTable:
         data = np.genfromtxt(path, delimiter=",", names=True)
         names = data.dtype.names
         if names is None or "relative_velocity_mm_per_s" not in names or "mu" not in names:
@@ -227,11 +228,11 @@ class FrictionTable:
         return cls(tuple(s.tolist()), tuple(m.tolist()))
 
     @classmethod
-    def paper_fig17(cls) -> "FrictionTable":
+    def paper_fig17(cls) -> FrictionTable:
         """The Fig. 17 description: 0.5 at rest, falling linearly to 0.4 at 0.6 mm/s, then flat."""
         return cls((0.0, 0.6), (0.5, 0.4))
 
     @classmethod
-    def linear(cls, mu0: float, slope: float, v_max: float = 1e3) -> "FrictionTable":
+    def linear(cls, mu0: float, slope: float, v_max: float = 1e3) -> FrictionTable:
         """mu = mu0 + slope*|v| clipped at >= 0, for stability cross-checks [slope in s mm-1]."""
         return cls((0.0, v_max), (mu0, max(mu0 + slope * v_max, 0.0)))

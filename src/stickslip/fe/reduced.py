@@ -14,7 +14,11 @@ from .explicit import System
 
 
 def craig_bampton(
-    system: System, boundary: np.ndarray, n_modes: int, axial_mask: np.ndarray | None = None, n_axial_modes: int = 0
+    system: System,
+    boundary: np.ndarray,
+    n_modes: int,
+    axial_mask: np.ndarray | None = None,
+    n_axial_modes: int = 0,
 ) -> tuple[System, np.ndarray]:
     """Return (reduced System, transformation T with q = T r).
 
@@ -39,7 +43,9 @@ def craig_bampton(
     else:
         am = np.asarray(axial_mask, bool)[i]
         axial = (phi_all[am] ** 2).sum(axis=0) > 0.5 * (phi_all**2).sum(axis=0)
-        pick = np.sort(np.concatenate([np.nonzero(~axial)[0][:n_modes], np.nonzero(axial)[0][:n_axial_modes]]))
+        pick = np.sort(
+            np.concatenate([np.nonzero(~axial)[0][:n_modes], np.nonzero(axial)[0][:n_axial_modes]])
+        )
     phi = phi_all[:, pick]
     k = phi.shape[1]
     T = np.zeros((n, k + b.size))
@@ -47,8 +53,13 @@ def craig_bampton(
     T[np.ix_(i, k + np.arange(b.size))] = psi
     T[b, k + np.arange(b.size)] = 1.0
     red = System(
-        T.T @ M @ T, T.T @ K @ T, T.T @ system.f,
-        T.T @ system.c_x, T.T @ system.c_y, T.T @ system.c_n, T.T @ system.c_t,
+        T.T @ M @ T,
+        T.T @ K @ T,
+        T.T @ system.f,
+        T.T @ system.c_x,
+        T.T @ system.c_y,
+        T.T @ system.c_n,
+        T.T @ system.c_t,
         label=f"craig_bampton_{k}modes+{b.size}dofs",
     )
     return red, T

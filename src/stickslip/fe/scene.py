@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Mapping
-
-import numpy as np
+from typing import Any
 
 from .beam import BeamModel, assemble_beam
 from .contact import ContactGeometry, contact_geometry
@@ -21,7 +20,7 @@ class SceneParams:
     solver: SolverParams
 
     @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> "SceneParams":
+    def from_mapping(cls, data: Mapping[str, Any]) -> SceneParams:
         allowed = {"beam", "disc", "contact", "solver", "description", "figures", "reduced"}
         unknown = set(data) - allowed
         if unknown:

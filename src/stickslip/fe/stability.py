@@ -70,7 +70,9 @@ def sliding_state(system: System, law: ContactLaw) -> np.ndarray:
     return np.linalg.solve(system.K, system.f + N0 * (system.c_n + mu * system.c_t))
 
 
-def transient_growth_rate(system: System, law: ContactLaw, duration: float, perturbation: float = 1e-3) -> float:
+def transient_growth_rate(
+    system: System, law: ContactLaw, duration: float, perturbation: float = 1e-3
+) -> float:
     """Growth rate [s-1] of the tangential velocity envelope in an explicit run started from steady sliding
     with a small tangential velocity perturbation [mm s-1]; fitted while the envelope stays below 30 % of
     the disc speed (before stick/separation limits it)."""

@@ -30,14 +30,16 @@ def summarize_benchmarks(root: Path) -> list[dict]:
         wall = [_num(r.get("s")) for r in records]
         rss = [_num(r.get("max_rss")) for r in records]
         cpu = [_num(r.get("cpu_time")) for r in records]
-        rows.append({
-            "rule": rule,
-            "jobs": len(records),
-            "wall_s_total": round(sum(w for w in wall if math.isfinite(w)), 3),
-            "wall_s_max": round(max((w for w in wall if math.isfinite(w)), default=math.nan), 3),
-            "cpu_s_total": round(sum(c for c in cpu if math.isfinite(c)), 3),
-            "peak_rss_mb": round(max((m for m in rss if math.isfinite(m)), default=math.nan), 1),
-        })
+        rows.append(
+            {
+                "rule": rule,
+                "jobs": len(records),
+                "wall_s_total": round(sum(w for w in wall if math.isfinite(w)), 3),
+                "wall_s_max": round(max((w for w in wall if math.isfinite(w)), default=math.nan), 3),
+                "cpu_s_total": round(sum(c for c in cpu if math.isfinite(c)), 3),
+                "peak_rss_mb": round(max((m for m in rss if math.isfinite(m)), default=math.nan), 1),
+            }
+        )
     return rows
 
 
@@ -52,5 +54,7 @@ def write_summary(rows: list[dict], csv_path, md_path) -> None:
     total = sum(r["wall_s_total"] for r in rows)
     lines = ["| " + " | ".join(fields) + " |", "|" + "---|" * len(fields)]
     lines += ["| " + " | ".join(str(r[f]) for f in fields) + " |" for r in rows]
-    lines.append(f"\nSum of job wall times: {total:.1f} s (jobs run in parallel, so the elapsed time is less).")
+    lines.append(
+        f"\nSum of job wall times: {total:.1f} s (jobs run in parallel, so the elapsed time is less)."
+    )
     md_path.write_text("\n".join(lines) + "\n")

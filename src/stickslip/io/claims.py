@@ -7,7 +7,8 @@ dataset path makes the claim be checked once per reading of the paper's equation
 ``ratio``    lhs / rhs vs the reported number within a tolerance
 ``compare``  lhs <relation> rhs
 ``trend``    sign of the least-squares slope of ``variable`` along ``coord`` of a sweep dataset; ``sign: 0``
-             claims "no effect"; ``coord_scale: log`` fits against log10(coord). A change below ``min_relative_change`` (default TREND_FLOOR) is no trend.
+             claims "no effect"; ``coord_scale: log`` fits against log10(coord). A change below
+             ``min_relative_change`` (default TREND_FLOOR) is no trend.
 
 Status is ``reproduced``, ``deviates`` or ``not-comparable`` (nothing measurable, or the paper contradicts
 itself: rows with ``comparable: false``). ``expected`` pins the status (one string, or one per reading);
@@ -164,7 +165,10 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         if kind == "value":
             measured = _scalar(open_dataset, claim, reading)
         else:
-            lhs, rhs = _scalar(open_dataset, claim["lhs"], reading), _scalar(open_dataset, claim["rhs"], reading)
+            lhs, rhs = (
+                _scalar(open_dataset, claim["lhs"], reading),
+                _scalar(open_dataset, claim["rhs"], reading),
+            )
             measured = lhs / rhs if rhs != 0 else float("nan")
             quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
         if math.isfinite(measured):
@@ -214,9 +218,20 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
     reason = "; ".join(s for s in (detail, note if status != "reproduced" else "") if s)
     expected = _per_reading(claim["expected"], reading, default="(not pinned)")
     return ClaimResult(
-        claim=claim["id"], reading=reading, section=str(claim["section"]), figure=str(claim["figure"]),
-        kind=kind, quantity=quantity, reported=reported, unit=unit, measured=measured, deviation=deviation,
-        status=status, expected=expected, matches_expected=(status == expected), reason=reason,
+        claim=claim["id"],
+        reading=reading,
+        section=str(claim["section"]),
+        figure=str(claim["figure"]),
+        kind=kind,
+        quantity=quantity,
+        reported=reported,
+        unit=unit,
+        measured=measured,
+        deviation=deviation,
+        status=status,
+        expected=expected,
+        matches_expected=(status == expected),
+        reason=reason,
         quote=" ".join(str(claim["quote"]).split()),
     )
 
@@ -241,12 +256,17 @@ def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
     tmp.replace(csv_path)
     if md_path:
         md_path = Path(md_path)
-        lines = ["| claim | reading | figure | quantity | reported | measured | unit | status | expected | reason |",
-                 "|---|---|---|---|---|---|---|---|---|---|"]
+        lines = [
+            "| claim | reading | figure | quantity | reported | measured | unit | status | expected "
+            "| reason |",
+            "|---|---|---|---|---|---|---|---|---|---|",
+        ]
         for r in results:
             flag = "" if r.matches_expected else " **(changed)**"
-            lines.append(f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {r.reported:.4g} | "
-                         f"{r.measured:.4g} | {r.unit} | {r.status}{flag} | {r.expected} | {r.reason} |")
+            lines.append(
+                f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {r.reported:.4g} | "
+                f"{r.measured:.4g} | {r.unit} | {r.status}{flag} | {r.expected} | {r.reason} |"
+            )
         tmp = md_path.with_suffix(".md.tmp")
         tmp.write_text("\n".join(lines) + "\n")
         tmp.replace(md_path)
@@ -270,11 +290,16 @@ def main(argv=None) -> int:
     rows = read_table(argv[1])
     bad = unexpected(rows)
     for r in bad:
-        print(f"CHANGED {r['claim']} [{r['reading'] or '-'}]: measured status {r['status']}, "
-              f"pinned {r['expected']} ({r['reason']})")
+        print(
+            f"CHANGED {r['claim']} [{r['reading'] or '-'}]: measured status {r['status']}, "
+            f"pinned {r['expected']} ({r['reason']})"
+        )
     counts = {s: sum(r["status"] == s for r in rows) for s in STATUSES}
-    print(f"{len(rows)} claim checks: " + ", ".join(f"{v} {k}" for k, v in counts.items())
-          + f"; {len(bad)} differ from the pinned status")
+    print(
+        f"{len(rows)} claim checks: "
+        + ", ".join(f"{v} {k}" for k, v in counts.items())
+        + f"; {len(bad)} differ from the pinned status"
+    )
     return 1 if bad else 0
 
 
