@@ -28,6 +28,8 @@ rule claims_table:
         "results/logs/claims_table.log",
     benchmark:
         "results/benchmarks/claims_table/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         readings=CLAIM_READINGS,
     script:
@@ -44,6 +46,8 @@ rule claims_check:
         "results/logs/claims_check.log",
     benchmark:
         "results/benchmarks/claims_check/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         python=sys.executable,
     shell:

@@ -9,34 +9,7 @@ FE_FRICTION = config["fe"]["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
 
 
-def check_fe_config(fe_cfg, producible):
-    """Resolve every FE scene and reference at parse time, so a bad value fails before any job starts,
-    with the config key named (the schema cannot see NaN, unknown scene names or a missing table)."""
-    from stickslip.fe.pipeline import scene_mapping
-    from stickslip.fe.scene import SceneParams
-
-    for name in fe_cfg["scenes"]:
-        mapping = scene_mapping(fe_cfg, name)
-        try:
-            SceneParams.from_mapping(
-                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-            )
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"fe.scenes.{name}: {exc}") from None
-    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
-    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in FE_STUDIES]
-    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
-    for key, scene in refs:
-        if scene not in fe_cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
-    table = fe_cfg["friction_table"]
-    if table not in producible and not Path(table).is_file():
-        raise ValueError(
-            f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes {producible})"
-        )
-
-
-check_fe_config(config["fe"], ["results/onedof/friction_mu_vr.csv"])
+check_fe_config(config["fe"], ["results/onedof/friction_mu_vr.csv"], FE_STUDIES)
 
 
 rule fe_scene:
@@ -50,6 +23,8 @@ rule fe_scene:
         "results/benchmarks/fe_scene/{scene}.tsv"
     wildcard_constraints:
         scene="|".join(FE_SCENES),
+    conda:
+        CONDA_ENV
     script:
         "../scripts/fe_scene.py"
 
@@ -65,6 +40,8 @@ rule fe_sweep:
         "results/benchmarks/fe_sweep/{sweep}.tsv"
     wildcard_constraints:
         sweep="|".join(FE_SWEEPS),
+    conda:
+        CONDA_ENV
     script:
         "../scripts/fe_sweep.py"
 
@@ -80,6 +57,8 @@ rule fe_study:
         "results/benchmarks/fe_study/{study}.tsv"
     wildcard_constraints:
         study="|".join(FE_STUDIES),
+    conda:
+        CONDA_ENV
     params:
         kind=lambda wc: wc.study,
     script:
@@ -95,6 +74,8 @@ rule fe_cross_scene:
         "results/logs/fe_cross_scene/cross_scene.log",
     benchmark:
         "results/benchmarks/fe_cross_scene/cross_scene.tsv"
+    conda:
+        CONDA_ENV
     script:
         "../scripts/fe_cross.py"
 
@@ -115,6 +96,8 @@ rule fe_figure:
         "results/benchmarks/fe_figure/{scene}.tsv"
     wildcard_constraints:
         scene="|".join(FE_SCENES),
+    conda:
+        CONDA_ENV
     script:
         "../scripts/fe_figure.py"
 
@@ -143,6 +126,8 @@ rule fe_notebook:
         "results/logs/fe_notebook/section_09_12_beam_on_disc.log",
     benchmark:
         "results/benchmarks/fe_notebook/section_09_12_beam_on_disc.tsv"
+    conda:
+        CONDA_ENV
     params:
         python=sys.executable,
     shell:

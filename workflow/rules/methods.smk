@@ -6,37 +6,6 @@ validate(config, "../schemas/methods.schema.yaml")
 METHODS_SCENES = list(config["methods_study"]["scenes"])
 
 
-def check_methods_config(cfg):
-    """Build every scene model and method of the study at parse time, so a bad value fails before any job
-    starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from stickslip.model import BeltModel, BeltParams
-    from stickslip.model.params import ParameterError
-    from stickslip.solvers import make_solver
-
-    fm = cfg["failure_map"]
-    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
-    runs += [
-        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
-        for i, v in enumerate(fm["values"])
-    ]
-    for key, scene, overrides in runs:
-        if scene not in cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
-        spec = cfg["scenes"][scene]
-        try:
-            BeltModel.build(
-                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
-                spec["variant"],
-            )
-        except (ParameterError, ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"{key} (with methods_study.base_params): {exc}") from None
-    for i, entry in enumerate(cfg["methods"] + fm["methods"] + [cfg["paper_method"]]):
-        try:
-            make_solver(entry["solver"], **entry.get("settings", {}))
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"methods_study.methods: solver {entry.get('solver')!r}: {exc}") from None
-
-
 check_methods_config(config["methods_study"])
 METHODS_NC = expand("results/methods/{scene}_work_precision.nc", scene=METHODS_SCENES)
 METHODS_PNG = expand("results/figures/methods/{scene}_work_precision.png", scene=METHODS_SCENES)
@@ -60,6 +29,8 @@ rule methods_work_precision:
         "results/benchmarks/methods_work_precision/{scene}.tsv"
     wildcard_constraints:
         scene="|".join(METHODS_SCENES),
+    conda:
+        CONDA_ENV
     params:
         study=config["methods_study"],  # rerun when the study config changes
     script:
@@ -73,6 +44,8 @@ rule methods_failure_map:
         "results/logs/methods_failure_map/all.log",
     benchmark:
         "results/benchmarks/methods_failure_map/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         study=config["methods_study"],
     script:
@@ -103,6 +76,8 @@ rule methods_figures:
         "results/logs/methods_figures/all.log",
     benchmark:
         "results/benchmarks/methods_figures/all.tsv"
+    conda:
+        CONDA_ENV
     script:
         "../scripts/methods_figures.py"
 
@@ -123,6 +98,8 @@ rule methods_notebook:
         "results/logs/methods_notebook/all.log",
     benchmark:
         "results/benchmarks/methods_notebook/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         python=sys.executable,
     shell:

@@ -4,14 +4,14 @@
 rule simulate_onedof:
     output:
         "results/onedof/{scene}/{reading}/{method}.nc",
-    wildcard_constraints:
-        scene="|".join(ONEDOF["scenes"]),
-        reading="|".join(ONEDOF["readings"]),
-        method="|".join(ONEDOF["methods"]),
     log:
         "results/logs/simulate_onedof/{scene}/{reading}/{method}.log",
     benchmark:
         "results/benchmarks/simulate_onedof/{scene}/{reading}/{method}.tsv"
+    wildcard_constraints:
+        scene="|".join(ONEDOF["scenes"]),
+        reading="|".join(ONEDOF["readings"]),
+        method="|".join(ONEDOF["methods"]),
     params:
         config=lambda wc: config,
     script:
@@ -27,12 +27,12 @@ rule onedof_figure:
         ],
     output:
         "results/figures/{figure}/{reading}.png",
-    wildcard_constraints:
-        figure="|".join(ONEDOF["figures"]),
     log:
         "results/logs/onedof_figure/{figure}/{reading}.log",
     benchmark:
         "results/benchmarks/onedof_figure/{figure}/{reading}.tsv"
+    wildcard_constraints:
+        figure="|".join(ONEDOF["figures"]),
     params:
         figure=lambda wc: ONEDOF["figures"][wc.figure],
         methods=lambda wc: ONEDOF["figures"][wc.figure]["methods"],
@@ -60,7 +60,9 @@ rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
     input:
         lambda wc: onedof_dataset(
-            ONEDOF["friction_table"]["scene"], ONEDOF["friction_table"]["reading"], ONEDOF["friction_table"]["method"]
+            ONEDOF["friction_table"]["scene"],
+            ONEDOF["friction_table"]["reading"],
+            ONEDOF["friction_table"]["method"],
         ),
     output:
         csv="results/onedof/friction_mu_vr.csv",

@@ -12,6 +12,8 @@ rule report_captions:
         "results/logs/report_captions/all.log",
     benchmark:
         "results/benchmarks/report_captions/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         figures=lambda wc: sorted(ONEDOF["figures"]),  # rerun when the figure list changes
     script:

@@ -10,8 +10,10 @@ rule benchmark_summary:
         md="results/benchmarks/summary.md",
     log:
         "results/logs/benchmark_summary.log",
+    conda:
+        CONDA_ENV
     params:
-        root="results/benchmarks",
+        root=lambda wc, output: str(Path(output.csv).parent),
     script:
         "../scripts/benchmark_summary.py"
 
