@@ -33,3 +33,13 @@ def test_format_seconds():
     assert format_seconds(float("nan")) == "unknown"
     assert format_seconds(185) == "3 min 05 s"
     assert format_seconds(3720) == "1 h 02 min"
+
+
+def test_step_callback_reports_time_steps_with_an_estimate():
+    from stickslip.io.progress import step_callback
+
+    lines = []
+    report = step_callback("fe", every=0.0, sink=lines.append)
+    for done in (10_000, 20_000, 40_000):
+        report(done, 40_000)
+    assert lines and "40000/40000" in lines[-1].replace(" ", "").replace(",", "")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 import os
 import subprocess
 import sys
@@ -70,7 +71,8 @@ def track_calls(module, name: str, total: int, label: str, every: float = 10.0):
 
 
 def log_to(snakemake) -> None:
-    """Send stdout/stderr of a script run to the rule's log file."""
+    """Send stdout/stderr and the progress log of a script run to the rule's log file (line-buffered)."""
     if snakemake.log:
-        f = open(snakemake.log[0], "w")
+        f = open(snakemake.log[0], "w", buffering=1)
         sys.stdout = sys.stderr = f
+        logging.basicConfig(stream=f, level=logging.INFO, format="%(asctime)s %(message)s", force=True)

@@ -140,8 +140,11 @@ def integrate(
     mass_damping: float = 0.0,
     record_state: bool = False,
     blowup: float = 1e6,
+    progress=None,
 ) -> ExplicitResult:
     """Integrate ``duration`` seconds. ``dt`` defaults to safety_factor * 2/omega_max.
+
+    ``progress(done, total)``, if given, is called every 10 000 steps with the step count.
 
     Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
     """
@@ -210,6 +213,8 @@ def integrate(
     j = 1
     t0 = time.process_time()
     for n in range(1, n_steps + 1):
+        if progress is not None and n % 10_000 == 0:
+            progress(n, n_steps)
         if damp:
             v = c1 * v + c2 * (af - G @ u)
         else:

@@ -100,8 +100,11 @@ def run_scene(
     *,
     duration: float | None = None,
     reduced: Mapping | None = None,
+    progress=None,
 ):
     """Run one scene (full FE, or Craig-Bampton reduced if ``reduced`` is given).
+
+    ``progress(done, total)`` is passed to the integrator (time steps done out of total).
 
     Returns (result, metrics, scene).
     """
@@ -128,6 +131,7 @@ def run_scene(
         output_interval=sp.output_interval,
         initial_state=sp.initial_state,
         mass_damping=sp.mass_damping,
+        progress=progress,
     )
     m = trajectory_metrics(r, _natural_frequencies(scene))
     m["disc_surface_speed"] = p.disc.surface_speed

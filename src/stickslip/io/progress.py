@@ -107,3 +107,18 @@ class Progress:
         """Log the final line if the last :meth:`advance` did not."""
         if not self.lines or self.lines[-1] != self.message():
             self._emit()
+
+
+def step_callback(label: str, every: float = 10.0, sink: Callable[[str], None] | None = None):
+    """A ``progress(done, total)`` callback for loops that report their own position (e.g. FE time steps).
+
+    The :class:`Progress` is created on the first call, when the total is known.
+    """
+    state: dict = {}
+
+    def report(done: int, total: int) -> None:
+        if "progress" not in state:
+            state["progress"] = Progress(total, label=label, every=every, sink=sink)
+        state["progress"].update(done)
+
+    return report
