@@ -40,7 +40,11 @@ class DenseMap:
                 "count_window": self.spec.count_window}
 
     def scene_attrs(self) -> dict:
-        return {**self.spec.scene_attrs(), "map": self.name,
+        base = self.spec.scene_attrs()
+        for axis in self.axes:  # a swept parameter's base value is not used: point to the coordinate
+            for name in (axis.name, *axis.linked):
+                base[name] = f"swept (coordinate {axis.name})"
+        return {**base, "map": self.name,
                 "swept": ", ".join(f"{a.name} ({len(a.values)} values, {min(a.values):g}..{max(a.values):g})"
                                    for a in self.axes)}
 
