@@ -27,9 +27,18 @@ for ax, name in zip(axes[0], names):
         ax.plot(x, data, "k.-")
         ax.set_ylabel(f"{var.long_name} [{var.units}]")
     else:
-        mesh = ax.pcolormesh(x, ds[ydim].values, data, shading="nearest", cmap="viridis")
+        # Colour limits from the 1st-99th percentile: a few runaway runs (the linear friction law changes
+        # sign for |v_r| > 1/sigma) would otherwise flatten the map; arrows on the colour bar mark them.
+        values = data.compressed()
+        vmin, vmax = np.percentile(values, [1, 99]) if values.size else (0.0, 1.0)
+        extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
+            (bool(values.size and values.min() < vmin), bool(values.size and values.max() > vmax))]
+        norm = matplotlib.colors.Normalize(vmin, vmax)
+        if values.size and values.min() > 0 and values.max() > 1e3 * values.min():  # spans decades: log scale
+            norm, extend = matplotlib.colors.LogNorm(values.min(), values.max()), "neither"
+        mesh = ax.pcolormesh(x, ds[ydim].values, data, shading="nearest", cmap="viridis", norm=norm)
         mesh.cmap.set_bad("0.85")  # no value (failed run, or no stick-slip): light grey
-        fig.colorbar(mesh, ax=ax, label=f"[{var.units}]")
+        fig.colorbar(mesh, ax=ax, label=f"[{var.units}]", extend=extend)
         ax.set_ylabel(f"{ds[ydim].long_name} [{ds[ydim].units}]")
         if failed.any():
             ax.contourf(x, ds[ydim].values, failed.astype(float), levels=[0.5, 1.5], colors="none",
