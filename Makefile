@@ -8,7 +8,7 @@ STAMP := $(VENV)/.installed
 JOBS ?= 2
 export PATH := $(BIN):$(PATH)
 
-.PHONY: setup figures test lint bench report clean
+.PHONY: setup figures test lint bench report clean slurm-test
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -39,3 +39,9 @@ bench: $(STAMP)
 
 clean:
 	rm -rf results .snakemake
+
+# Opt-in (root, Debian/Ubuntu): a single-node SLURM on localhost runs a small chunked map through the
+# official executor plugin and the merged dataset is compared with the local run.
+slurm-test: $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[pipeline,test,slurm]'
+	STICKSLIP_SLURM_TEST=1 $(BIN)/python -m pytest -q -rA tests/slurm

@@ -5,8 +5,9 @@ import time
 
 from dense_map_common import dense_map, log_to
 
-from stickslip.analysis.sweep import ProgressLog, chunk_dataset, chunk_points, run_points
+from stickslip.analysis.sweep import chunk_dataset, chunk_points, run_points
 from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import step_callback
 
 log_to(snakemake)  # noqa: F821
 name, chunk = snakemake.wildcards.map, int(snakemake.wildcards.chunk)  # noqa: F821
@@ -15,7 +16,7 @@ points = chunk_points(dm.axes, dm.chunk_size, chunk)
 logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chunks, len(points), dm.points)
 start = time.perf_counter()
 results = run_points(dm.spec.params, dm.spec.variant, points, dm.spec.solver(), dm.spec.t_end, dm.spec.t_eval,
-                     dm.spec.transient, dm.spec.count_window, progress=ProgressLog(logging.info, every=5.0))
+                     dm.spec.transient, dm.spec.count_window, progress=step_callback(f"map {name} chunk {chunk}", every=5.0, sink=logging.info))
 ds = chunk_dataset(dm.axes, dm.chunk_size, chunk, results)
 failed = int((ds.solver_ok.values != 1).sum())
 if failed:
