@@ -31,7 +31,9 @@ from project_run import copy_project  # noqa: E402
 
 
 def load_common():
-    spec = importlib.util.spec_from_file_location("dense_map_common", ROOT / "workflow/scripts/dense_map_common.py")
+    spec = importlib.util.spec_from_file_location(
+        "dense_map_common", ROOT / "workflow/scripts/dense_map_common.py"
+    )
     module = importlib.util.module_from_spec(spec)
     sys.modules["dense_map_common"] = module
     spec.loader.exec_module(module)
@@ -43,6 +45,7 @@ def pipeline_config(extra: list[Path]) -> dict:
         for k, v in b.items():
             a[k] = merge(a.get(k, {}), v) if isinstance(v, dict) and isinstance(a.get(k), dict) else v
         return a
+
     config = {}
     for path in sorted((ROOT / "config").glob("*.yaml")) + extra:
         merge(config, yaml.safe_load(path.read_text()))
@@ -52,11 +55,20 @@ def pipeline_config(extra: list[Path]) -> dict:
 def floor_cost(dm, n: int = 60) -> float:
     """Seconds per point of run_points alone, over n points spread across the grid."""
     from stickslip.analysis.sweep import chunk_points, run_points
+
     every = max(1, dm.points // n)
     points = [p for i in range(0, dm.points, every) for p in chunk_points(dm.axes, 1, i)][:n]
     start = time.process_time()
-    run_points(dm.spec.params, dm.spec.variant, points, dm.spec.solver(), dm.spec.t_end, dm.spec.t_eval,
-               dm.spec.transient, dm.spec.count_window)
+    run_points(
+        dm.spec.params,
+        dm.spec.variant,
+        points,
+        dm.spec.solver(),
+        dm.spec.t_end,
+        dm.spec.t_eval,
+        dm.spec.transient,
+        dm.spec.count_window,
+    )
     return (time.process_time() - start) / len(points)
 
 
@@ -72,7 +84,9 @@ def chunk_cpu(work: Path, name: str) -> tuple[float, int]:
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="16 x 16 grid in 8 chunks instead of the configured map")
+    ap.add_argument(
+        "--quick", action="store_true", help="16 x 16 grid in 8 chunks instead of the configured map"
+    )
     ap.add_argument("--jobs", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--map", default="speed_damping")
     args = ap.parse_args()
@@ -84,20 +98,33 @@ def main():
             quick = work / "bench_quick.yaml"
             cfg = pipeline_config([])["dense_map"]["maps"][args.map]
             axes = [{**a, "num": 16} if "num" in a else a for a in cfg["axes"]]
-            quick.write_text(yaml.safe_dump({"dense_map": {"chunk_size": 32, "maps": {args.map: {"axes": axes}}}}))
+            quick.write_text(
+                yaml.safe_dump({"dense_map": {"chunk_size": 32, "maps": {args.map: {"axes": axes}}}})
+            )
             extra = [quick]
         dm = load_common().dense_map(pipeline_config(extra), args.map)
-        print(f"map {args.map}: {' x '.join(str(len(a.values)) for a in dm.axes)} = {dm.points} points, "
-              f"{dm.chunks} chunks of {dm.chunk_size}, t_end {dm.spec.t_end:g} s, solver {dm.spec.method}; "
-              f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} at start")
+        print(
+            f"map {args.map}: {' x '.join(str(len(a.values)) for a in dm.axes)} = {dm.points} points, "
+            f"{dm.chunks} chunks of {dm.chunk_size}, t_end {dm.spec.t_end:g} s, solver {dm.spec.method}; "
+            f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} at start"
+        )
         floor = floor_cost(dm)
         target = f"results/dense_map/{args.map}.nc"
         rows = []
         for jobs in args.jobs:
             shutil.rmtree(work / "results", ignore_errors=True)
             shutil.rmtree(work / ".snakemake", ignore_errors=True)
-            cmd = [sys.executable, "-m", "snakemake", f"-j{jobs}", "--directory", str(work), "--snakefile",
-                   str(work / "Snakefile"), "--quiet"]
+            cmd = [
+                sys.executable,
+                "-m",
+                "snakemake",
+                f"-j{jobs}",
+                "--directory",
+                str(work),
+                "--snakefile",
+                str(work / "Snakefile"),
+                "--quiet",
+            ]
             if extra:
                 cmd += ["--configfile", *map(str, extra)]
             load = os.getloadavg()[0]
@@ -112,13 +139,19 @@ def main():
 
     base = rows[0][1]
     print()
-    print(f"{'jobs':>4} {'wall [s]':>9} {'speed-up':>9} {'wall/pt [ms]':>13} {'chunk CPU [s]':>14} "
-          f"{'CPU/pt [ms]':>12} {'load':>5}")
+    print(
+        f"{'jobs':>4} {'wall [s]':>9} {'speed-up':>9} {'wall/pt [ms]':>13} {'chunk CPU [s]':>14} "
+        f"{'CPU/pt [ms]':>12} {'load':>5}"
+    )
     for jobs, wall, cpu, load in rows:
-        print(f"{jobs:>4} {wall:9.1f} {base / wall:9.2f} {1e3 * wall / dm.points:13.2f} {cpu:14.1f} "
-              f"{1e3 * cpu / dm.points:12.2f} {load:5.1f}")
-    print(f"floor: one exact run + metrics in-process = {1e3 * floor:.2f} ms CPU per point "
-          f"(=> {floor * dm.points:.1f} s CPU for the map; 200 x 200 = {floor * 40000 / 60:.1f} CPU-minutes)")
+        print(
+            f"{jobs:>4} {wall:9.1f} {base / wall:9.2f} {1e3 * wall / dm.points:13.2f} {cpu:14.1f} "
+            f"{1e3 * cpu / dm.points:12.2f} {load:5.1f}"
+        )
+    print(
+        f"floor: one exact run + metrics in-process = {1e3 * floor:.2f} ms CPU per point "
+        f"(=> {floor * dm.points:.1f} s CPU for the map; 200 x 200 = {floor * 40000 / 60:.1f} CPU-minutes)"
+    )
     print("speed-up = wall(-j1) / wall(-jN) measured in this run; chunk CPU from Snakemake benchmark files")
 
 

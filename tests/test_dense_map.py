@@ -9,14 +9,16 @@ import pytest
 import xarray as xr
 import yaml
 
-from project_run import ROOT, copy_project, run_snakemake
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
 from stickslip.model import ParameterError
 
+from project_run import ROOT, copy_project, run_snakemake
+
 
 def _common():
-    spec = importlib.util.spec_from_file_location("dense_map_common",
-                                                  ROOT / "workflow" / "scripts" / "dense_map_common.py")
+    spec = importlib.util.spec_from_file_location(
+        "dense_map_common", ROOT / "workflow" / "scripts" / "dense_map_common.py"
+    )
     module = importlib.util.module_from_spec(spec)
     sys.modules["dense_map_common"] = module
     spec.loader.exec_module(module)
@@ -28,10 +30,12 @@ dmc = _common()
 
 def load_config(*names):
     """The pipeline config as Snakemake merges it: config/*.yaml, then the given overrides."""
+
     def merge(a, b):
         for k, v in b.items():
             a[k] = merge(a.get(k, {}), v) if isinstance(v, dict) and isinstance(a.get(k), dict) else v
         return a
+
     config = {}
     for path in sorted((ROOT / "config").glob("*.yaml")) + [ROOT / "config" / "test" / n for n in names]:
         merge(config, yaml.safe_load(path.read_text()))
@@ -47,8 +51,16 @@ def small_config(**changes):
 def build(dm, chunk_size):
     parts = []
     for c in range(-(-dm.points // chunk_size)):
-        res = run_points(dm.spec.params, dm.spec.variant, chunk_points(dm.axes, chunk_size, c), dm.spec.solver(),
-                         dm.spec.t_end, dm.spec.t_eval, dm.spec.transient, dm.spec.count_window)
+        res = run_points(
+            dm.spec.params,
+            dm.spec.variant,
+            chunk_points(dm.axes, chunk_size, c),
+            dm.spec.solver(),
+            dm.spec.t_end,
+            dm.spec.t_eval,
+            dm.spec.transient,
+            dm.spec.count_window,
+        )
         parts.append(chunk_dataset(dm.axes, chunk_size, c, res))
     return merge_chunks(dm.axes, align_chunks(parts))
 
@@ -67,8 +79,16 @@ def test_chunked_map_equals_unchunked_and_single_runs():
     whole, chunked = build(dm, dm.points), build(dm, dm.chunk_size)
     xr.testing.assert_identical(whole, chunked)
     assert whole.stick_fraction.dims == ("belt_velocity", "damping")
-    single = run_points(dm.spec.params.with_(belt_velocity=0.9, damping=2.5), dm.spec.variant, [{}],
-                        dm.spec.solver(), dm.spec.t_end, dm.spec.t_eval, dm.spec.transient, dm.spec.count_window)
+    single = run_points(
+        dm.spec.params.with_(belt_velocity=0.9, damping=2.5),
+        dm.spec.variant,
+        [{}],
+        dm.spec.solver(),
+        dm.spec.t_end,
+        dm.spec.t_eval,
+        dm.spec.transient,
+        dm.spec.count_window,
+    )
     for name in ("stick_fraction", "amplitude_peak_to_peak", "frequency_peaks"):
         np.testing.assert_equal(float(whole[name].sel(belt_velocity=0.9, damping=2.5)), single[name][0])
 
@@ -76,9 +96,23 @@ def test_chunked_map_equals_unchunked_and_single_runs():
 def test_a_chunk_of_failed_runs_merges_as_nan():
     dm = dmc.dense_map(small_config(), "speed_damping")
     good = build(dm, dm.points)
-    flat = [chunk_dataset(dm.axes, 6, c, run_points(dm.spec.params, dm.spec.variant, chunk_points(dm.axes, 6, c),
-                                                   dm.spec.solver(), 2.0, np.linspace(0, 2, 21), 0.5))
-            for c in range(2)]
+    flat = [
+        chunk_dataset(
+            dm.axes,
+            6,
+            c,
+            run_points(
+                dm.spec.params,
+                dm.spec.variant,
+                chunk_points(dm.axes, 6, c),
+                dm.spec.solver(),
+                2.0,
+                np.linspace(0, 2, 21),
+                0.5,
+            ),
+        )
+        for c in range(2)
+    ]
     failed = flat[1][["solver_ok"]].copy()
     failed["solver_ok"][:] = 0.0
     merged = merge_chunks(dm.axes, align_chunks([flat[0], failed]))
@@ -99,12 +133,18 @@ def test_chunk_size_making_too_many_jobs_names_the_key():
         dmc.dense_map(small_config(chunk_size=1, max_chunks=10), "speed_damping")
 
 
-@pytest.mark.parametrize("axis, match", [
-    ({"name": "dampening", "values": [1.0]}, r"axes\[0\]\.name: 'dampening' is not a parameter"),
-    ({"name": "damping", "start": -1.0, "stop": 1.0, "num": 3}, r"axes\[0\] \(damping = -1\): damping"),
-    ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]\.num: missing"),
-    ({"name": "damping", "start": 0.0, "stop": 1.0, "num": 3, "spacing": "log"}, r"axes\[0\]: log spacing"),
-])
+@pytest.mark.parametrize(
+    "axis, match",
+    [
+        ({"name": "dampening", "values": [1.0]}, r"axes\[0\]\.name: 'dampening' is not a parameter"),
+        ({"name": "damping", "start": -1.0, "stop": 1.0, "num": 3}, r"axes\[0\] \(damping = -1\): damping"),
+        ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]\.num: missing"),
+        (
+            {"name": "damping", "start": 0.0, "stop": 1.0, "num": 3, "spacing": "log"},
+            r"axes\[0\]: log spacing",
+        ),
+    ],
+)
 def test_bad_axis_names_the_key(axis, match):
     config = small_config()
     config["dense_map"]["maps"]["speed_damping"]["axes"] = [axis]
@@ -133,7 +173,10 @@ def test_pipeline_merged_map_has_dims_coords_units_and_equals_one_chunk_run(proj
     chunked = xr.load_dataset(project / "results" / "dense_map" / "speed_damping.nc")
     assert (project / TARGET).stat().st_size > 0
     assert not list((project / "results" / "dense_map" / "chunks").rglob("*.nc"))  # temp() chunks removed
-    assert len(list((project / "results" / "benchmarks" / "dense_map_chunk" / "speed_damping").glob("*.tsv"))) == 3
+    assert (
+        len(list((project / "results" / "benchmarks" / "dense_map_chunk" / "speed_damping").glob("*.tsv")))
+        == 3
+    )
     assert dict(chunked.sizes) == {"belt_velocity": 4, "damping": 3}
     np.testing.assert_allclose(chunked.damping.values, [0.5, 1.5, 2.5])
     assert chunked.belt_velocity.attrs == {"units": "mm s-1", "long_name": "belt velocity V_b"}
@@ -147,18 +190,31 @@ def test_pipeline_merged_map_has_dims_coords_units_and_equals_one_chunk_run(proj
 
     one_chunk = tmp_path / "one_chunk.yaml"
     one_chunk.write_text("dense_map:\n  chunk_size: 12\n")
-    run_snakemake(project, *snakemake_args(project), str(one_chunk), "--forcerun", "dense_map_chunk", "--",
-                  "results/dense_map/speed_damping.nc")
+    run_snakemake(
+        project,
+        *snakemake_args(project),
+        str(one_chunk),
+        "--forcerun",
+        "dense_map_chunk",
+        "--",
+        "results/dense_map/speed_damping.nc",
+    )
     whole = xr.load_dataset(project / "results" / "dense_map" / "speed_damping.nc")
     assert whole.attrs["method_chunks"] == 1
     xr.testing.assert_equal(whole, chunked)  # data, dims, coords and variable attrs
 
 
 @pytest.mark.pipeline
-@pytest.mark.parametrize("override, match", [
-    ("dense_map:\n  chunk_size: 0\n", "chunk_size"),
-    ("dense_map:\n  chunk_size: 1\n  max_chunks: 4\n", "dense_map.chunk_size: 1 points per chunk make 12 jobs"),
-])
+@pytest.mark.parametrize(
+    "override, match",
+    [
+        ("dense_map:\n  chunk_size: 0\n", "chunk_size"),
+        (
+            "dense_map:\n  chunk_size: 1\n  max_chunks: 4\n",
+            "dense_map.chunk_size: 1 points per chunk make 12 jobs",
+        ),
+    ],
+)
 def test_bad_chunk_size_fails_at_parse_time(project, tmp_path, override, match):
     bad = tmp_path / "bad.yaml"
     bad.write_text(override)

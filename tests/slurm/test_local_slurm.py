@@ -9,8 +9,10 @@ import pytest
 
 SCRIPT = Path(__file__).with_name("run_local_slurm_test.sh")
 
-pytestmark = pytest.mark.skipif(os.environ.get("STICKSLIP_SLURM_TEST") != "1",
-                                reason="opt-in: set STICKSLIP_SLURM_TEST=1 (installs and starts SLURM, needs root)")
+pytestmark = pytest.mark.skipif(
+    os.environ.get("STICKSLIP_SLURM_TEST") != "1",
+    reason="opt-in: set STICKSLIP_SLURM_TEST=1 (installs and starts SLURM, needs root)",
+)
 
 
 def test_chunked_map_through_slurm_equals_local_run():

@@ -23,27 +23,30 @@ DENSE_RESOURCES = config["dense_map"]["resources"]
 
 
 def dense_map_chunks(wildcards):
-    return expand("results/dense_map/chunks/{map}/{chunk}.nc", map=wildcards.map,
-                  chunk=range(DENSE_MAPS[wildcards.map].chunks))
+    return expand(
+        "results/dense_map/chunks/{map}/{chunk}.nc",
+        map=wildcards.map,
+        chunk=range(DENSE_MAPS[wildcards.map].chunks),
+    )
 
 
 rule dense_map_chunk:
     """Metrics of one contiguous slice of a map's grid (flattened C order)."""
     output:
         temp("results/dense_map/chunks/{map}/{chunk}.nc"),
-    wildcard_constraints:
-        map="|".join(DENSE_MAPS),
-        chunk=r"\d+",
     log:
         "results/logs/dense_map_chunk/{map}/{chunk}.log",
     benchmark:
         "results/benchmarks/dense_map_chunk/{map}/{chunk}.tsv"
-    params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],  # rerun when the map's config changes
-        chunk_size=lambda wc: DENSE_MAPS[wc.map].chunk_size,
+    wildcard_constraints:
+        map="|".join(DENSE_MAPS),
+        chunk=r"\d+",
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_chunk", {}),
+    params:
+        map=lambda wc: config["dense_map"]["maps"][wc.map],  # rerun when the map's config changes
+        chunk_size=lambda wc: DENSE_MAPS[wc.map].chunk_size,
     script:
         "../scripts/dense_map_chunk.py"
 
@@ -54,17 +57,17 @@ rule dense_map_merge:
         dense_map_chunks,
     output:
         "results/dense_map/{map}.nc",
-    wildcard_constraints:
-        map="|".join(DENSE_MAPS),
     log:
         "results/logs/dense_map_merge/{map}.log",
     benchmark:
         "results/benchmarks/dense_map_merge/{map}.tsv"
-    params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],
+    wildcard_constraints:
+        map="|".join(DENSE_MAPS),
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_merge", {}),
+    params:
+        map=lambda wc: config["dense_map"]["maps"][wc.map],
     script:
         "../scripts/dense_map_merge.py"
 
@@ -75,18 +78,18 @@ rule dense_map_figure:
         "results/dense_map/{map}.nc",
     output:
         "results/figures/dense_map/{map}.png",
-    wildcard_constraints:
-        map="|".join(DENSE_MAPS),
     log:
         "results/logs/dense_map_figure/{map}.log",
     benchmark:
         "results/benchmarks/dense_map_figure/{map}.tsv"
-    params:
-        plot=lambda wc: list(DENSE_MAPS[wc.map].plot),
-        title=lambda wc: DENSE_MAPS[wc.map].title,
+    wildcard_constraints:
+        map="|".join(DENSE_MAPS),
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_figure", {}),
+    params:
+        plot=lambda wc: list(DENSE_MAPS[wc.map].plot),
+        title=lambda wc: DENSE_MAPS[wc.map].title,
     script:
         "../scripts/dense_map_figure.py"
 

@@ -15,13 +15,31 @@ dm = dense_map(snakemake.config, name)  # noqa: F821
 points = chunk_points(dm.axes, dm.chunk_size, chunk)
 logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chunks, len(points), dm.points)
 start = time.perf_counter()
-results = run_points(dm.spec.params, dm.spec.variant, points, dm.spec.solver(), dm.spec.t_end, dm.spec.t_eval,
-                     dm.spec.transient, dm.spec.count_window, progress=step_callback(f"map {name} chunk {chunk}", every=5.0, sink=logging.info))
+results = run_points(
+    dm.spec.params,
+    dm.spec.variant,
+    points,
+    dm.spec.solver(),
+    dm.spec.t_end,
+    dm.spec.t_eval,
+    dm.spec.transient,
+    dm.spec.count_window,
+    progress=step_callback(f"map {name} chunk {chunk}", every=5.0, sink=logging.info),
+)
 ds = chunk_dataset(dm.axes, dm.chunk_size, chunk, results)
 failed = int((ds.solver_ok.values != 1).sum())
 if failed:
     logging.warning("%d of %d runs failed (NaN metrics, solver_ok = 0)", failed, len(points))
-write_dataset(ds, snakemake.output[0], scene=dm.scene_attrs(), interpretation=dm.spec.interpretation(),  # noqa: F821
-              method={**dm.method_attrs(), "chunk": chunk}, title=f"{dm.title}: chunk {chunk}")
-logging.info("done: %.2f s, %.2f ms per point", time.perf_counter() - start,
-             1e3 * (time.perf_counter() - start) / len(points))
+write_dataset(
+    ds,
+    snakemake.output[0],
+    scene=dm.scene_attrs(),
+    interpretation=dm.spec.interpretation(),  # noqa: F821
+    method={**dm.method_attrs(), "chunk": chunk},
+    title=f"{dm.title}: chunk {chunk}",
+)
+logging.info(
+    "done: %.2f s, %.2f ms per point",
+    time.perf_counter() - start,
+    1e3 * (time.perf_counter() - start) / len(points),
+)

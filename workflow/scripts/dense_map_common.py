@@ -34,19 +34,30 @@ class DenseMap:
         return grid_size(self.axes)
 
     def method_attrs(self) -> dict:
-        return {"name": self.spec.method, **self.spec.solver_settings, "chunk_size": self.chunk_size,
-                "chunks": self.chunks, "grid_points": self.points, "t_end": self.spec.t_end,
-                "output_dt": self.spec.output_dt, "transient": self.spec.transient,
-                "count_window": self.spec.count_window}
+        return {
+            "name": self.spec.method,
+            **self.spec.solver_settings,
+            "chunk_size": self.chunk_size,
+            "chunks": self.chunks,
+            "grid_points": self.points,
+            "t_end": self.spec.t_end,
+            "output_dt": self.spec.output_dt,
+            "transient": self.spec.transient,
+            "count_window": self.spec.count_window,
+        }
 
     def scene_attrs(self) -> dict:
         base = self.spec.scene_attrs()
         for axis in self.axes:  # a swept parameter's base value is not used: point to the coordinate
             for name in (axis.name, *axis.linked):
                 base[name] = f"swept (coordinate {axis.name})"
-        return {**base, "map": self.name,
-                "swept": ", ".join(f"{a.name} ({len(a.values)} values, {min(a.values):g}..{max(a.values):g})"
-                                   for a in self.axes)}
+        return {
+            **base,
+            "map": self.name,
+            "swept": ", ".join(
+                f"{a.name} ({len(a.values)} values, {min(a.values):g}..{max(a.values):g})" for a in self.axes
+            ),
+        }
 
 
 def dense_map(config: dict, name: str) -> DenseMap:
@@ -67,10 +78,18 @@ def dense_map(config: dict, name: str) -> DenseMap:
     chunk_size = cfg.get("chunk_size", section.get("chunk_size"))
     chunks = check_chunking(axes, chunk_size, chunk_key, section.get("max_chunks", DEFAULT_MAX_CHUNKS))
     plot = tuple(cfg.get("plot", ("amplitude_peak_to_peak", "frequency_peaks", "stick_fraction")))
-    return DenseMap(name=name, spec=spec, axes=axes, chunk_size=chunk_size, chunks=chunks,
-                    title=str(cfg.get("title", name)), plot=plot)
+    return DenseMap(
+        name=name,
+        spec=spec,
+        axes=axes,
+        chunk_size=chunk_size,
+        chunks=chunks,
+        title=str(cfg.get("title", name)),
+        plot=plot,
+    )
 
 
 def log_to(snakemake) -> None:
-    logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s",
-                        force=True)
+    logging.basicConfig(
+        filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s", force=True
+    )

@@ -14,5 +14,11 @@ ds = merge_chunks(dm.axes, chunks)
 failed = int((ds.solver_ok.values != 1).sum())
 ds.attrs["failed_runs"] = failed
 logging.info("merged %d chunks into %s, %d failed runs", len(chunks), dict(ds.sizes), failed)
-write_dataset(ds, snakemake.output[0], scene=dm.scene_attrs(), interpretation=dm.spec.interpretation(),  # noqa: F821
-              method=dm.method_attrs(), title=dm.title)
+write_dataset(
+    ds,
+    snakemake.output[0],
+    scene=dm.scene_attrs(),
+    interpretation=dm.spec.interpretation(),  # noqa: F821
+    method=dm.method_attrs(),
+    title=dm.title,
+)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -15,9 +15,21 @@ def default_t_eval(t_end: float, t_eval) -> np.ndarray:
     return np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
 
 
-def integrate(model: BeltModel, rhs: Callable, t_end: float, t_eval: np.ndarray, *, method: str, rtol: float,
-              atol: float, max_step: float, stick_tolerance: float, label: str, settings: dict,
-              jac: Callable | None = None) -> Trajectory:
+def integrate(
+    model: BeltModel,
+    rhs: Callable,
+    t_end: float,
+    t_eval: np.ndarray,
+    *,
+    method: str,
+    rtol: float,
+    atol: float,
+    max_step: float,
+    stick_tolerance: float,
+    label: str,
+    settings: dict,
+    jac: Callable | None = None,
+) -> Trajectory:
     """Integrate ``rhs`` from the model's initial state; a solver error or non-finite state is a failed run.
 
     ``rhs`` and ``jac`` are counted here, so the counters are the same for every method.
@@ -31,6 +43,7 @@ def integrate(model: BeltModel, rhs: Callable, t_end: float, t_eval: np.ndarray,
 
     kwargs = {}
     if jac is not None:
+
         def counted_jac(t, y):
             counts["jac"] += 1
             return jac(t, y)
@@ -39,8 +52,17 @@ def integrate(model: BeltModel, rhs: Callable, t_end: float, t_eval: np.ndarray,
     sol = None
     with Timer() as timer:
         try:
-            sol = solve_ivp(counted_rhs, (0.0, t_end), [model.params.x0, model.params.v0], method=method,
-                            rtol=rtol, atol=atol, max_step=max_step, dense_output=True, **kwargs)
+            sol = solve_ivp(
+                counted_rhs,
+                (0.0, t_end),
+                [model.params.x0, model.params.v0],
+                method=method,
+                rtol=rtol,
+                atol=atol,
+                max_step=max_step,
+                dense_output=True,
+                **kwargs,
+            )
         except (ValueError, ArithmeticError) as exc:  # e.g. a non-finite Jacobian
             stats.message = f"{type(exc).__name__}: {exc}"
     stats.cpu_time = timer.elapsed
@@ -58,5 +80,13 @@ def integrate(model: BeltModel, rhs: Callable, t_end: float, t_eval: np.ndarray,
         if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
             stats.status, stats.message, stats.failures = "failed", "non-finite state", 1
     vb = model.belt_velocity(t_eval)
-    return Trajectory(t=t_eval, x=x, v=v, phase=classify_phase(v, vb, stick_tolerance), belt_velocity=vb,
-                      stats=stats, method=label, settings=settings)
+    return Trajectory(
+        t=t_eval,
+        x=x,
+        v=v,
+        phase=classify_phase(v, vb, stick_tolerance),
+        belt_velocity=vb,
+        stats=stats,
+        method=label,
+        settings=settings,
+    )
