@@ -16,7 +16,8 @@ data = {r: read_dataset(p) for r, p in zip(readings, snakemake.input)}
 def verdict(ds):
     vc = float(ds.critical_belt_speed)
     if np.isnan(vc):
-        return "every run failed or diverged"
+        return ("undetermined: every run failed or diverged" if np.all(ds.solver_ok.values != 1) else
+                "undetermined: runs faster than the last sticking one diverge (friction falls without bound)")
     if vc == 0:
         return "never sticks at any swept speed: no stick-slip to lose"
     if np.isinf(vc):

@@ -30,6 +30,10 @@ def sweep_dataset(spec, dense: bool) -> xr.Dataset:
     results = run_points(base.params, base.variant, points, solver, base.t_end, base.t_eval, base.transient,
                          base.count_window, progress=ProgressLog(logging.info))
     ds = merge_chunks([axis], [chunk_dataset([axis], n, 0, results)])
+    for m in ("stick_fraction", "stick_time", "slip_time", "frequency_peaks", "amplitude_peak_to_peak",
+              "amplitude_peak_to_zero"):  # every run failed: keep the variables, all NaN
+        if m not in ds:
+            ds[m] = (spec.parameter, np.full(n, np.nan), {"units": "1", "long_name": f"{m} (no successful run)"})
     ds["slip_fraction"] = (spec.parameter, 1.0 - ds.stick_fraction.values,
                            {"units": "1", "long_name": "fraction of steady-window samples in slip"})
     messages = []

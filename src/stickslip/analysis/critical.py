@@ -52,7 +52,8 @@ def continuation(base: BeltParams, variant: str, speeds, solver, t_end: float, t
 
 def critical_speed(speeds, stick_fraction, ok) -> float:
     """Smallest speed from which on every successful run has zero stick fraction; 0 if none ever sticks,
-    inf if the fastest successful run still sticks (no critical speed in the swept range)."""
+    inf if the fastest successful run still sticks (no critical speed in the swept range), NaN if
+    runs faster than the last sticking one failed (undetermined)."""
     speeds, sf, ok = (np.asarray(a, dtype=float) for a in (speeds, stick_fraction, ok))
     good = ok == 1
     if not good.any():
@@ -61,5 +62,7 @@ def critical_speed(speeds, stick_fraction, ok) -> float:
     if not sticks.any():
         return 0.0
     last = int(np.nonzero(sticks)[0][-1])
+    if np.any((ok != 1) & (np.arange(len(speeds)) > last)):
+        return float("nan")  # faster runs failed or diverged: whether stick-slip ends is undetermined
     after = np.nonzero(good & (np.arange(len(speeds)) > last))[0]
     return float(speeds[after[0]]) if after.size else float("inf")
