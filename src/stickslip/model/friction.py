@@ -12,6 +12,10 @@ one right-hand side serve all variants. F is the force on the mass in the +x dir
 ``consistent``   F = -mu_s N (sgn(v_r) - sigma v_r): friction drives the mass toward the belt velocity,
                  its magnitude mu_s N (1 - sigma |v_r|) falling linearly with the relative speed
 
+Optionally the affine part saturates: beyond a relative speed ``plateau_speed`` (v_p) the law uses
+v_r clipped to +-v_p, so the coefficient levels off (the plateau Fig. 17's text describes). Slip is then
+piecewise affine with one more switching surface, |v_r| = v_p, which the exact solver handles as an event.
+
 The printed sign makes friction push the mass *away* from the belt velocity, so v_r = 0 repels and the
 printed variants cannot stick at all (see ``can_stick``).
 """
@@ -38,6 +42,19 @@ class AffineFriction:
     """Coefficient of the mass velocity [N s/mm]; enters the slip damping as C - b."""
     kappa: float
     """Coefficient of the belt velocity [N s/mm]."""
+    plateau_speed: float = float("inf")
+    """|v_r| [mm/s] beyond which the affine part stops changing (inf: no plateau)."""
+
+    @property
+    def has_plateau(self) -> bool:
+        return bool(np.isfinite(self.plateau_speed))
+
+    def outer(self, s: int) -> tuple[float, float, float]:
+        """(slip damping coefficient b', constant force, belt-velocity coefficient) beyond the plateau on side s.
+
+        F = a s + b (s v_p) + (b + kappa) V_b: no velocity dependence left, so the slip damping is C alone.
+        """
+        return 0.0, self.a * s + self.b * s * self.plateau_speed, self.b + self.kappa
 
     @property
     def can_stick(self) -> bool:
@@ -47,6 +64,9 @@ class AffineFriction:
     def force(self, v, vb, sign=np.sign):
         """Friction force for mass velocity v and belt velocity vb; ``sign`` may be a smoothed sign."""
         v = np.asarray(v, dtype=float)
+        if self.has_plateau:
+            vr = np.clip(v - vb, -self.plateau_speed, self.plateau_speed)
+            return self.a * sign(v - vb) + self.b * vr + (self.b + self.kappa) * vb
         return self.a * sign(v - vb) + self.b * v + self.kappa * vb
 
     def coefficient(self, v, vb, normal_force: float):
@@ -58,15 +78,16 @@ def friction_law(params: BeltParams, variant: str) -> AffineFriction:
     """The friction law of ``variant`` for the given parameters."""
     mu_n = params.mu_s * params.normal_force
     s = params.sigma
+    vp = float(getattr(params, "plateau_speed", float("inf")))
     if variant == "eq3_printed":
-        return AffineFriction(variant, a=mu_n, b=-mu_n * s, kappa=mu_n * s)
+        return AffineFriction(variant, a=mu_n, b=-mu_n * s, kappa=mu_n * s, plateau_speed=vp)
     if variant == "eq4_printed":
-        return AffineFriction(variant, a=mu_n, b=-mu_n * s, kappa=s)
+        return AffineFriction(variant, a=mu_n, b=-mu_n * s, kappa=s, plateau_speed=vp)
     if variant == "consistent":
-        return AffineFriction(variant, a=-mu_n, b=mu_n * s, kappa=-mu_n * s)
+        return AffineFriction(variant, a=-mu_n, b=mu_n * s, kappa=-mu_n * s, plateau_speed=vp)
     raise ParameterError(f"variant: {variant!r} is not one of {VARIANTS}")
 
 
-def friction_coefficient_consistent(relative_speed, mu_s: float, sigma: float):
-    """|mu|(|v_r|) of the consistent reading: mu_s (1 - sigma |v_r|), unbounded linear fall."""
-    return mu_s * (1.0 - sigma * np.abs(relative_speed))
+def friction_coefficient_consistent(relative_speed, mu_s: float, sigma: float, plateau_speed: float = np.inf):
+    """|mu|(|v_r|) of the consistent reading: mu_s (1 - sigma min(|v_r|, v_p)); v_p = inf: unbounded fall."""
+    return mu_s * (1.0 - sigma * np.minimum(np.abs(relative_speed), plateau_speed))

@@ -47,6 +47,9 @@ class BeltParams:
     """Belt deceleration [mm/s^2]; the belt speed is max(V_b - d t, 0) (Section 6: 0.025)."""
     units: str = "as_given"
     """Unit reading, one of UNIT_READINGS."""
+    plateau_speed: float = math.inf
+    """Relative speed [mm/s] beyond which the friction coefficient stays constant (Fig. 17's text: it levels
+    off at 0.6 mm/s); inf = the printed law, falling linearly without bound."""
 
     def __post_init__(self) -> None:
         for f in fields(self):
@@ -57,9 +60,11 @@ class BeltParams:
                 continue
             if isinstance(value, bool) or not isinstance(value, (int, float)):
                 raise ParameterError(f"{f.name}: expected a number, got {type(value).__name__} {value!r}")
+            if f.name == "plateau_speed" and value == math.inf:
+                continue
             if not math.isfinite(value):
                 raise ParameterError(f"{f.name}: must be finite, got {value!r}")
-        for key in ("mass", "stiffness", "normal_force", "mu_s"):
+        for key in ("mass", "stiffness", "normal_force", "mu_s", "plateau_speed"):
             if getattr(self, key) <= 0:
                 raise ParameterError(f"{key}: must be > 0, got {getattr(self, key)!r}")
         for key in ("damping", "sigma", "belt_velocity", "belt_deceleration"):

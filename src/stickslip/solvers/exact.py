@@ -205,21 +205,50 @@ class ExactSwitchSolver:
         return Segment(t0, t0 + tau, STICK, motion), release
 
     def _slip(self, model: BeltModel, t0: float, x0: float, v0: float, s: int, t_limit: float):
+        """One slip segment in direction s; returns (segment, hit) with hit = reached v_r = 0.
+
+        With a friction plateau the slip is split at |v_r| = v_p: inside, the affine law (slip damping
+        C - b); outside, a constant force (slip damping C). Crossing v_p ends the segment with hit = False
+        and the next segment continues in the same direction from the same state (v is continuous there).
+        """
         p = model.params
         f = model.friction
         m = model.mass
         vb0 = float(model.belt_velocity(t0))
         slope = float(p.belt_acceleration_at(t0))
-        seg = LinearSegment(m=m, c=model.slip_damping(), k=p.stiffness,
-                            g0=f.a * s + f.kappa * vb0, g1=f.kappa * slope, x0=x0, v0=v0)
-        tau_max = t_limit - t0
+        vp = f.plateau_speed
+        outside = False
+        if f.has_plateau:
+            rel = s * (v0 - vb0)
+            if rel > vp * (1 + 1e-12):
+                outside = True
+            elif rel >= vp * (1 - 1e-12):  # on the surface: go where the outer law's acceleration points
+                _, force, kv = f.outer(s)
+                acc = (force + kv * vb0 - p.damping * v0 - p.stiffness * x0) / m
+                outside = s * (acc - slope) > 0
+        if outside:
+            b_eff, g0, kv = f.outer(s)
+            seg = LinearSegment(m=m, c=p.damping - b_eff, k=p.stiffness, g0=g0 + kv * vb0, g1=kv * slope,
+                                x0=x0, v0=v0)
 
-        def gap(tau):  # s * v_r: positive while the slip lasts
-            return s * (seg.state(tau)[1] - (vb0 + slope * tau))
+            def gap(tau):  # s v_r - v_p: positive while outside the plateau surface
+                return s * (seg.state(tau)[1] - (vb0 + slope * tau)) - vp
+        else:
+            seg = LinearSegment(m=m, c=model.slip_damping(), k=p.stiffness,
+                                g0=f.a * s + f.kappa * vb0, g1=f.kappa * slope, x0=x0, v0=v0)
+
+            def gap(tau):  # s * v_r: positive while the slip lasts (and below v_p with a plateau)
+                g = s * (seg.state(tau)[1] - (vb0 + slope * tau))
+                return np.minimum(g, vp - g) if f.has_plateau else g
 
         def gap_rate(tau):
-            return s * (seg.acceleration(tau) - slope)
+            rate = s * (seg.acceleration(tau) - slope)
+            if not f.has_plateau or outside:
+                return rate
+            g = s * (seg.state(tau)[1] - (vb0 + slope * tau))
+            return np.where(g <= vp - g, rate, -rate)
 
+        tau_max = t_limit - t0
         vscale = max(abs(vb0), abs(f.a) / math.sqrt(p.stiffness * m), abs(v0), 1e-300)
         tol = self.graze_tolerance * vscale
         timescale = 2.0 * math.pi * math.sqrt(m / p.stiffness)
@@ -227,12 +256,19 @@ class ExactSwitchSolver:
             timescale = min(timescale, 2.0 * math.pi / abs(seg._alpha))
         h = timescale / self.samples_per_period
 
+        def finish(tau_hit):
+            if not f.has_plateau:
+                return Segment(t0, t0 + tau_hit, s, seg), True
+            rel = s * (float(seg.state(tau_hit)[1]) - (vb0 + slope * tau_hit))
+            hit = (not outside) and rel < 0.5 * vp  # v_r = 0 (contact) rather than the plateau surface
+            return Segment(t0, t0 + tau_hit, s, seg), hit
+
         # A slip that starts at v_r = 0 leaves it with zero gap: find a first positive sample.
         start = min(h, tau_max)
         while gap(start) <= 0.0 and start > 1e-13 * h:
             start *= 0.125
         if gap(start) <= 0.0:
-            return Segment(t0, t0, s, seg), True
+            return finish(0.0)
         lo_tau, lo_gap = 0.0, 0.0
         tau_k = start
         while True:
@@ -244,8 +280,7 @@ class ExactSwitchSolver:
             gaps = np.concatenate(([lo_gap], values))
             event = self._first_event(taus, gaps, gap, gap_rate, tol)
             if event is not None:
-                tau_hit = event
-                return Segment(t0, t0 + tau_hit, s, seg), True
+                return finish(event)
             if grid[-1] >= tau_max:
                 return Segment(t0, t_limit, s, seg), False
             # overlap the next window by one sample so a minimum of the gap that falls exactly on a

@@ -1,0 +1,35 @@
+"""The interpretation study: rank the readings of the paper by how many claim checks they reproduce."""
+
+from __future__ import annotations
+
+STATUSES = ("reproduced", "deviates", "not-comparable")
+
+
+def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
+    """Per reading: counts of each status over the per-reading claim rows, best first (most reproduced,
+    then fewest deviations)."""
+    table = []
+    for r in readings:
+        mine = [row for row in rows if row["reading"] == r]
+        counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
+        comparable = counts["reproduced"] + counts["deviates"]
+        table.append({"reading": r, **counts, "total": len(mine),
+                      "reproduced_fraction_of_comparable": counts["reproduced"] / comparable if comparable else 0.0})
+    return sorted(table, key=lambda t: (-t["reproduced"], t["deviates"], t["reading"]))
+
+
+def unreproduced_claims(rows: list[dict], readings: list[str]) -> list[dict]:
+    """Claims that no reading reproduces (reading-independent rows included), with every reading's reason."""
+    by_claim: dict[str, list[dict]] = {}
+    for row in rows:
+        if row["reading"] in readings or row["reading"] == "":
+            by_claim.setdefault(row["claim"], []).append(row)
+    out = []
+    for claim, mine in by_claim.items():
+        if any(r["status"] == "reproduced" for r in mine):
+            continue
+        statuses = "; ".join(f"{r['reading'] or '-'}: {r['status']}" for r in mine)
+        reasons = sorted({r["reason"].split("; ", 1)[-1] for r in mine if r["reason"]}, key=len)
+        out.append({"claim": claim, "figure": mine[0]["figure"], "statuses": statuses,
+                    "why": reasons[-1] if reasons else "", "quote": mine[0]["quote"]})
+    return out

