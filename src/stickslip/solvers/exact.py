@@ -317,16 +317,23 @@ class ExactSwitchSolver:
 
 
 def sample_segments(segments: list[Segment], t_eval: np.ndarray):
-    """Evaluate a piecewise solution at ``t_eval``; samples past a failed solve are NaN."""
+    """Evaluate a piecewise solution at sorted ``t_eval``; samples past a failed solve are NaN.
+
+    Each segment owns the samples in [t0, t1) (the last one also t1), found by binary search, so the cost is
+    O(samples + segments log samples) even for runs with many thousands of segments.
+    """
     x = np.full(t_eval.shape, np.nan)
     v = np.full(t_eval.shape, np.nan)
     phase = np.zeros(t_eval.shape, dtype=np.int8)
-    for i, seg in enumerate(segments):
-        last = i == len(segments) - 1
-        mask = (t_eval >= seg.t0) & ((t_eval < seg.t1) | (last & (t_eval <= seg.t1)))
-        if not mask.any() or seg.t1 <= seg.t0 and not last:
+    if not segments:
+        return x, v, phase
+    starts = np.searchsorted(t_eval, [seg.t0 for seg in segments], side="left")
+    ends = np.searchsorted(t_eval, [seg.t1 for seg in segments], side="left")
+    ends[-1] = np.searchsorted(t_eval, segments[-1].t1, side="right")
+    for seg, lo, hi in zip(segments, starts, ends):
+        if hi <= lo:
             continue
-        xs, vs = seg.state(t_eval[mask])
-        x[mask], v[mask] = xs, vs
-        phase[mask] = seg.phase
+        xs, vs = seg.state(t_eval[lo:hi])
+        x[lo:hi], v[lo:hi] = xs, vs
+        phase[lo:hi] = seg.phase
     return x, v, phase
