@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import importlib.util
 import os
 import shutil
 import subprocess
@@ -31,13 +30,9 @@ from project_run import copy_project  # noqa: E402
 
 
 def load_common():
-    spec = importlib.util.spec_from_file_location(
-        "dense_map_common", ROOT / "workflow/scripts/dense_map_common.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["dense_map_common"] = module
-    spec.loader.exec_module(module)
-    return module
+    from stickslip.io import dense_map
+
+    return dense_map
 
 
 def pipeline_config(extra: list[Path]) -> dict:

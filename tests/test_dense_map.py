@@ -1,8 +1,6 @@
 """Dense maps (issue 7): config -> chunks -> one merged dataset; chunking never changes a number."""
 
-import importlib.util
 import json
-import sys
 
 import numpy as np
 import pytest
@@ -10,22 +8,10 @@ import xarray as xr
 import yaml
 
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
+from stickslip.io import dense_map as dmc  # noqa: E402
 from stickslip.model import ParameterError
 
 from project_run import ROOT, copy_project, run_snakemake
-
-
-def _common():
-    spec = importlib.util.spec_from_file_location(
-        "dense_map_common", ROOT / "workflow" / "scripts" / "dense_map_common.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["dense_map_common"] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-dmc = _common()
 
 
 def load_config(*names):

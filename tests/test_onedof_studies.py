@@ -1,4 +1,6 @@
-"""Eq. 6 closed-form maxima, the friction plateau in the exact solver, divergence as failure, critical speed."""
+"""Eq. 6 closed-form maxima, the friction plateau in the exact solver, divergence as failure,
+critical speed.
+"""
 
 import math
 
@@ -12,8 +14,9 @@ from stickslip.model import BeltModel, BeltParams
 from stickslip.model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
 from stickslip.solvers import make_solver
 
-BASE = BeltParams(mass=1, stiffness=5, damping=1.5, mu_s=0.5, sigma=0.5, normal_force=10, x0=0, v0=0.5,
-                  belt_velocity=0.5)
+BASE = BeltParams(
+    mass=1, stiffness=5, damping=1.5, mu_s=0.5, sigma=0.5, normal_force=10, x0=0, v0=0.5, belt_velocity=0.5
+)
 
 
 def test_eq6_printed_peak_closed_form():
@@ -56,6 +59,7 @@ def test_plateau_exact_solver_matches_fine_time_stepping():
 def test_without_plateau_unchanged_baseline():
     tr = make_solver("exact").solve(BeltModel.build(BASE, "consistent"), 40.0, np.linspace(0, 40, 4001))
     from stickslip.analysis.metrics import limit_cycle_metrics
+
     m = limit_cycle_metrics(tr, 10.0)
     assert m["stick_time"].value == pytest.approx(1.378, abs=2e-3)
     assert m["slip_time"].value == pytest.approx(2.210, abs=2e-3)
@@ -82,10 +86,19 @@ def test_critical_speed_rules():
 
 
 def test_ranking_counts_and_unreproduced():
-    rows = [{"claim": "a", "reading": "r1", "status": "reproduced", "figure": "F", "reason": "", "quote": "q"},
-            {"claim": "a", "reading": "r2", "status": "deviates", "figure": "F", "reason": "x", "quote": "q"},
-            {"claim": "b", "reading": "r1", "status": "deviates", "figure": "F", "reason": "why", "quote": "q"},
-            {"claim": "b", "reading": "r2", "status": "not-comparable", "figure": "F", "reason": "", "quote": "q"}]
+    rows = [
+        {"claim": "a", "reading": "r1", "status": "reproduced", "figure": "F", "reason": "", "quote": "q"},
+        {"claim": "a", "reading": "r2", "status": "deviates", "figure": "F", "reason": "x", "quote": "q"},
+        {"claim": "b", "reading": "r1", "status": "deviates", "figure": "F", "reason": "why", "quote": "q"},
+        {
+            "claim": "b",
+            "reading": "r2",
+            "status": "not-comparable",
+            "figure": "F",
+            "reason": "",
+            "quote": "q",
+        },
+    ]
     table = rank_readings(rows, ["r1", "r2"])
     assert [t["reading"] for t in table] == ["r1", "r2"]
     assert table[0]["reproduced"] == 1 and table[0]["deviates"] == 1

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import numpy as np
 import matplotlib.pyplot as plt
+import numpy as np
 
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
 
@@ -25,9 +25,13 @@ def onedof_figure(datasets: dict, spec: dict, reading: str):
         fig, (ax_x, ax_v) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
         for method, ds in datasets.items():
             if int(ds["solver_status"]) != 0:
-                ax_x.text(0.02, 0.9 - 0.1 * list(datasets).index(method),
-                          f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
-                          transform=ax_x.transAxes, color="red")
+                ax_x.text(
+                    0.02,
+                    0.9 - 0.1 * list(datasets).index(method),
+                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
+                    transform=ax_x.transAxes,
+                    color="red",
+                )
                 continue
             ax_x.plot(ds.time, ds.displacement, label=_label(ds, method), **_style(method))
             ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
@@ -43,9 +47,14 @@ def onedof_figure(datasets: dict, spec: dict, reading: str):
         fig, ax_v = plt.subplots(figsize=(8, 3.5))
         for method, ds in datasets.items():
             if int(ds["solver_status"]) != 0:
-                ax_v.text(0.02, 0.9 - 0.1 * list(datasets).index(method),
-                          f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
-                          transform=ax_v.transAxes, color="red", fontsize=8)
+                ax_v.text(
+                    0.02,
+                    0.9 - 0.1 * list(datasets).index(method),
+                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
+                    transform=ax_v.transAxes,
+                    color="red",
+                    fontsize=8,
+                )
                 continue
             ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
         ds0 = next(iter(datasets.values()))
@@ -58,8 +67,14 @@ def onedof_figure(datasets: dict, spec: dict, reading: str):
         fig, ax = plt.subplots(figsize=(6, 5))
         for i, (method, ds) in enumerate(datasets.items()):
             if int(ds["solver_status"]) != 0:
-                ax.text(0.02, 0.9 - 0.1 * i, f"{method}: solver failed ({ds['solver_status'].attrs.get('message')})"
-                        " - not a result", transform=ax.transAxes, color="red", fontsize=8)
+                ax.text(
+                    0.02,
+                    0.9 - 0.1 * i,
+                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
+                    transform=ax.transAxes,
+                    color="red",
+                    fontsize=8,
+                )
                 continue
             ax.plot(ds.displacement, ds.velocity, label=_label(ds, method), **_style(method))
         ax.set_xlabel("displacement x [mm]")
@@ -89,8 +104,19 @@ def claims_frame(csv_path, sections=None, claims=None):
 
 def styled_claims(frame):
     """Colour each status cell; a status that differs from its pin is marked in bold red text."""
-    cols = ["claim", "reading", "figure", "quantity", "reported", "measured", "unit", "deviation", "status",
-            "expected", "reason"]
+    cols = [
+        "claim",
+        "reading",
+        "figure",
+        "quantity",
+        "reported",
+        "measured",
+        "unit",
+        "deviation",
+        "status",
+        "expected",
+        "reason",
+    ]
 
     def colour(row):
         styles = [""] * len(row)
@@ -100,9 +126,12 @@ def styled_claims(frame):
             styles[i] += "; color: red; font-weight: bold"
         return styles
 
-    return (frame[cols].style.apply(colour, axis=1)
-            .format({"reported": "{:.4g}", "measured": "{:.4g}", "deviation": "{:+.1%}"}, na_rep="–")
-            .hide(axis="index"))
+    return (
+        frame[cols]
+        .style.apply(colour, axis=1)
+        .format({"reported": "{:.4g}", "measured": "{:.4g}", "deviation": "{:+.1%}"}, na_rep="–")
+        .hide(axis="index")
+    )
 
 
 def status_counts(frame):
@@ -114,12 +143,27 @@ def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
     """Dotted reference line for a number the paper reports."""
     if y is not None:
         ax.axhline(y, color=color, ls=":", lw=1)
-        ax.annotate(label or f"paper: {y:g}", (1.0, y), xycoords=("axes fraction", "data"), ha="right",
-                    va="bottom", fontsize=8, color=color)
+        ax.annotate(
+            label or f"paper: {y:g}",
+            (1.0, y),
+            xycoords=("axes fraction", "data"),
+            ha="right",
+            va="bottom",
+            fontsize=8,
+            color=color,
+        )
     if x is not None:
         ax.axvline(x, color=color, ls=":", lw=1)
-        ax.annotate(label or f"paper: {x:g}", (x, 1.0), xycoords=("data", "axes fraction"), ha="left",
-                    va="top", fontsize=8, color=color, rotation=90)
+        ax.annotate(
+            label or f"paper: {x:g}",
+            (x, 1.0),
+            xycoords=("data", "axes fraction"),
+            ha="left",
+            va="top",
+            fontsize=8,
+            color=color,
+            rotation=90,
+        )
 
 
 FE_PANELS = (
@@ -140,8 +184,9 @@ def fe_scene_figure(ds, periods: int = 6):
     f_dom = float(ds["dominant_frequency"]) if "dominant_frequency" in ds else float("nan")
     span = periods / f_dom if f_dom > 0 else (t[-1] - t[0]) / 50
     zoom = t >= t[-1] - span
-    fig, axes = plt.subplots(len(FE_PANELS), 2, figsize=(12, 9), sharex="col",
-                             gridspec_kw={"width_ratios": [2, 1]})
+    fig, axes = plt.subplots(
+        len(FE_PANELS), 2, figsize=(12, 9), sharex="col", gridspec_kw={"width_ratios": [2, 1]}
+    )
     for row, (names, label) in zip(axes, FE_PANELS):
         for name in names:
             if name not in ds:
@@ -155,7 +200,7 @@ def fe_scene_figure(ds, periods: int = 6):
         meanings = ds["contact_state"].attrs.get("flag_meanings", "")
         axes[-1, 0].set_title(f"flags: {meanings}", fontsize=8)
     axes[-1, 0].set_xlabel("time [s]")
-    axes[-1, 1].set_xlabel("time [s] (last %d periods of %.4g Hz)" % (periods, f_dom))
+    axes[-1, 1].set_xlabel(f"time [s] (last {periods} periods of {f_dom:.4g} Hz)")
     fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
 
 
@@ -163,11 +208,18 @@ def eq6_figure(ds):
     """Fig. 4: Eq. 6 as printed and the dimensionally correct 1-DOF amplitude curve, peaks marked."""
     fig, ax = plt.subplots(figsize=(7, 4.5))
     f = ds.frequency.values
-    for var, peak_f, peak_a, style in (("amplitude_printed", "peak_frequency_printed", "peak_amplitude_printed", "C0"),
-                                       ("amplitude_correct", "peak_frequency_correct", "peak_amplitude_correct", "C2")):
+    for var, peak_f, peak_a, style in (
+        ("amplitude_printed", "peak_frequency_printed", "peak_amplitude_printed", "C0"),
+        ("amplitude_correct", "peak_frequency_correct", "peak_amplitude_correct", "C2"),
+    ):
         ax.plot(f, ds[var], color=style, label=ds[var].attrs["long_name"])
-        ax.plot(float(ds[peak_f]), float(ds[peak_a]), "o", color=style,
-                label=f"peak {float(ds[peak_f]):.3f} Hz, {float(ds[peak_a]):.3f} mm")
+        ax.plot(
+            float(ds[peak_f]),
+            float(ds[peak_a]),
+            "o",
+            color=style,
+            label=f"peak {float(ds[peak_f]):.3f} Hz, {float(ds[peak_a]):.3f} mm",
+        )
     ax.plot(0.33, 1.85, "kx", ms=9, label="paper: 0.33 Hz, 1.85 mm")
     ax.set_xlabel("frequency [Hz]")
     ax.set_ylabel("amplitude (peak-zero) [mm]")
@@ -177,8 +229,12 @@ def eq6_figure(ds):
     return fig
 
 
-SWEEP_METRICS = (("frequency_peaks", "frequency [Hz]"), ("amplitude_peak_to_peak", "x peak-peak [mm]"),
-                 ("amplitude_peak_to_zero", "x peak-zero [mm]"), ("stick_fraction", "stick / slip fraction"))
+SWEEP_METRICS = (
+    ("frequency_peaks", "frequency [Hz]"),
+    ("amplitude_peak_to_peak", "x peak-peak [mm]"),
+    ("amplitude_peak_to_zero", "x peak-zero [mm]"),
+    ("stick_fraction", "stick / slip fraction"),
+)
 
 
 def sweep_figure(paper, dense, title: str, reading: str):
@@ -191,8 +247,14 @@ def sweep_figure(paper, dense, title: str, reading: str):
     for i, value in enumerate(paper[param].values):
         sel = paper.isel({param: i})
         if int(sel.solver_ok) != 1:
-            ax_x.text(0.02, 0.92 - 0.08 * i, f"{param} = {value:g}: run failed ({sel.failure_message.item()})"
-                      " - not a result", transform=ax_x.transAxes, color="red", fontsize=7)
+            ax_x.text(
+                0.02,
+                0.92 - 0.08 * i,
+                f"{param} = {value:g}: run failed ({sel.failure_message.item()}) - not a result",
+                transform=ax_x.transAxes,
+                color="red",
+                fontsize=7,
+            )
             continue
         ax_x.plot(sel.time, sel.displacement, lw=1, label=f"{param} = {value:g}")
         ax_v.plot(sel.time, sel.velocity, lw=1)
@@ -214,8 +276,10 @@ def sweep_figure(paper, dense, title: str, reading: str):
                 ax.axvline(xf, color="red", alpha=0.15, lw=2)
         ax.set_ylabel(label, fontsize=8)
         if row == len(SWEEP_METRICS) - 1:
-            ax.set_xlabel(f"{param} [{dense[param].attrs.get('units', '')}] (red bands: failed / diverging runs)",
-                          fontsize=8)
+            ax.set_xlabel(
+                f"{param} [{dense[param].attrs.get('units', '')}] (red bands: failed / diverging runs)",
+                fontsize=8,
+            )
     fig.tight_layout()
     return fig
 
@@ -223,10 +287,10 @@ def sweep_figure(paper, dense, title: str, reading: str):
 def critical_speed_figure(datasets: dict):
     """Continuation over belt speed: stick fraction and amplitude per reading, critical speed marked."""
     fig, (ax_s, ax_a) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    for i, (reading, ds) in enumerate(datasets.items()):
+    for reading, ds in datasets.items():
         vb = ds.belt_velocity.values
         ok = ds.solver_ok.values == 1
-        line, = ax_s.plot(vb[ok], ds.stick_fraction.values[ok], ".-", label=reading)
+        (line,) = ax_s.plot(vb[ok], ds.stick_fraction.values[ok], ".-", label=reading)
         ax_a.plot(vb[ok], ds.amplitude_peak_to_peak.values[ok], ".-", color=line.get_color())
         vc = float(ds.critical_belt_speed)
         if np.isfinite(vc):

@@ -6,6 +6,8 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
+from stickslip.io.dense_map import dense_map
+
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
 
 validate(config, "../schemas/config.schema.yaml")
@@ -113,3 +115,18 @@ def notebook_inputs(name):
         files += figure_datasets(fig)
         files += [f"results/figures/{fig}/{r}.png" for r in ONEDOF["figures"][fig]["readings"]]
     return files + ["results/claims/deviations.csv"]
+
+
+# -- sweeps and maps ----------------------------------------------------------------------------------
+
+
+def sweep_dataset(sweep, reading, dense=False):
+    return f"results/onedof/sweeps/{sweep}{'_dense' if dense else ''}/{reading}.nc"
+
+
+def dense_map_chunks(wildcards):
+    return expand(
+        "results/dense_map/chunks/{map}/{chunk}.nc",
+        map=wildcards.map,
+        chunk=range(dense_map(config, wildcards.map).chunks),
+    )

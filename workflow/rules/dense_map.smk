@@ -1,33 +1,15 @@
 # Dense parameter maps (issue 7): a grid of exact-solver runs split into chunks, one job per chunk, merged
 # into one netCDF per map with the swept parameters as dimensions. Sizes live in config/dense_map.yaml.
-import importlib.util
-
 from snakemake.utils import validate
+
+from stickslip.io.dense_map import dense_map
 
 validate(config, "../schemas/dense_map.schema.yaml")
 
 
-def _load_dense_map_common():
-    path = Path(workflow.basedir) / "workflow" / "scripts" / "dense_map_common.py"
-    spec = importlib.util.spec_from_file_location("dense_map_common", path)
-    loaded = importlib.util.module_from_spec(spec)
-    sys.modules["dense_map_common"] = loaded  # dataclasses look their module up there
-    spec.loader.exec_module(loaded)
-    return loaded
-
-
 # Parse every map now: a bad axis, parameter or chunk size fails here, naming its config key.
-_dense_map_common = _load_dense_map_common()
-DENSE_MAPS = {name: _dense_map_common.dense_map(config, name) for name in config["dense_map"]["maps"]}
+DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["maps"]}
 DENSE_RESOURCES = config["dense_map"]["resources"]
-
-
-def dense_map_chunks(wildcards):
-    return expand(
-        "results/dense_map/chunks/{map}/{chunk}.nc",
-        map=wildcards.map,
-        chunk=range(DENSE_MAPS[wildcards.map].chunks),
-    )
 
 
 rule dense_map_chunk:
@@ -41,6 +23,8 @@ rule dense_map_chunk:
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
         chunk=r"\d+",
+    conda:
+        CONDA_ENV
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_chunk", {}),
@@ -63,6 +47,8 @@ rule dense_map_merge:
         "results/benchmarks/dense_map_merge/{map}.tsv"
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
+    conda:
+        CONDA_ENV
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_merge", {}),
@@ -84,6 +70,8 @@ rule dense_map_figure:
         "results/benchmarks/dense_map_figure/{map}.tsv"
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
+    conda:
+        CONDA_ENV
     threads: 1
     resources:
         **DENSE_RESOURCES.get("dense_map_figure", {}),

@@ -12,6 +12,8 @@ rule simulate_onedof:
         scene="|".join(ONEDOF["scenes"]),
         reading="|".join(ONEDOF["readings"]),
         method="|".join(ONEDOF["methods"]),
+    conda:
+        CONDA_ENV
     params:
         config=lambda wc: config,
     script:
@@ -33,6 +35,8 @@ rule onedof_figure:
         "results/benchmarks/onedof_figure/{figure}/{reading}.tsv"
     wildcard_constraints:
         figure="|".join(ONEDOF["figures"]),
+    conda:
+        CONDA_ENV
     params:
         figure=lambda wc: ONEDOF["figures"][wc.figure],
         methods=lambda wc: ONEDOF["figures"][wc.figure]["methods"],
@@ -71,6 +75,8 @@ rule friction_table:
         "results/logs/friction_table/all.log",
     benchmark:
         "results/benchmarks/friction_table/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         table=ONEDOF["friction_table"],
         config=config,

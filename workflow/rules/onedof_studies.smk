@@ -12,10 +12,6 @@ for _sw in SWEEPS:
         sweep_spec(config, _sw, _r)
 
 
-def sweep_dataset(sweep, reading, dense=False):
-    return f"results/onedof/sweeps/{sweep}{'_dense' if dense else ''}/{reading}.nc"
-
-
 rule eq6_curve:
     """Fig. 4: Eq. 6 as printed and the dimensionally correct amplitude curve, with their peaks."""
     output:
@@ -25,6 +21,8 @@ rule eq6_curve:
         "results/logs/eq6_curve/all.log",
     benchmark:
         "results/benchmarks/eq6_curve/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         config=config,
     script:
@@ -35,12 +33,14 @@ rule onedof_sweeps:
     """Every sweep for one reading, in one job (each run takes milliseconds; jobs cost seconds)."""
     output:
         [sweep_dataset(s, "{reading}", d) for s in SWEEPS for d in (False, True)],
-    wildcard_constraints:
-        reading="|".join(ONEDOF["readings"]),
     log:
         "results/logs/onedof_sweeps/{reading}.log",
     benchmark:
         "results/benchmarks/onedof_sweeps/{reading}.tsv"
+    wildcard_constraints:
+        reading="|".join(ONEDOF["readings"]),
+    conda:
+        CONDA_ENV
     params:
         config=config,
     script:
@@ -53,12 +53,14 @@ rule sweep_figure:
         dense=lambda wc: sweep_dataset(SWEEP_FIGURES[wc.figure]["sweep"], wc.reading, True),
     output:
         "results/figures/{figure}/{reading}.png",
-    wildcard_constraints:
-        figure="|".join(SWEEP_FIGURES) or "none",
     log:
         "results/logs/sweep_figure/{figure}/{reading}.log",
     benchmark:
         "results/benchmarks/sweep_figure/{figure}/{reading}.tsv"
+    wildcard_constraints:
+        figure="|".join(SWEEP_FIGURES) or "none",
+    conda:
+        CONDA_ENV
     params:
         title=lambda wc: SWEEP_FIGURES[wc.figure].get("title", wc.figure),
     script:
@@ -69,12 +71,14 @@ rule critical_speed:
     """Continuation over belt speed with the exact solver for one reading."""
     output:
         "results/onedof/critical_speed/{reading}.nc",
-    wildcard_constraints:
-        reading="|".join(ONEDOF["readings"]),
     log:
         "results/logs/critical_speed/{reading}.log",
     benchmark:
         "results/benchmarks/critical_speed/{reading}.tsv"
+    wildcard_constraints:
+        reading="|".join(ONEDOF["readings"]),
+    conda:
+        CONDA_ENV
     params:
         config=config,
     script:
@@ -92,6 +96,8 @@ rule critical_speed_summary:
         "results/logs/critical_speed_summary/all.log",
     benchmark:
         "results/benchmarks/critical_speed_summary/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         readings=CRITICAL["readings"] if CRITICAL else [],
     script:
@@ -110,6 +116,8 @@ rule reading_ranking:
         "results/logs/reading_ranking/all.log",
     benchmark:
         "results/benchmarks/reading_ranking/all.tsv"
+    conda:
+        CONDA_ENV
     params:
         readings=config["claims"]["readings"],
     script:
@@ -117,8 +125,12 @@ rule reading_ranking:
 
 
 ALL_TARGETS.append("results/onedof/fig04/eq6.nc")
-ALL_TARGETS.extend(sweep_dataset(s, r, d) for s in SWEEPS for r in config["claims"]["readings"] for d in (False, True))
-ALL_TARGETS.extend(f"results/figures/{f}/{r}.png" for f, spec in SWEEP_FIGURES.items() for r in spec["readings"])
+ALL_TARGETS.extend(
+    sweep_dataset(s, r, d) for s in SWEEPS for r in config["claims"]["readings"] for d in (False, True)
+)
+ALL_TARGETS.extend(
+    f"results/figures/{f}/{r}.png" for f, spec in SWEEP_FIGURES.items() for r in spec["readings"]
+)
 if CRITICAL:
     ALL_TARGETS.append("results/onedof/critical_speed.csv")
 ALL_TARGETS.append("results/claims/reading_ranking.csv")

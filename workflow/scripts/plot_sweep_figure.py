@@ -7,6 +7,10 @@ matplotlib.use("Agg")
 from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.plots import sweep_figure  # noqa: E402
 
-fig = sweep_figure(read_dataset(snakemake.input.paper), read_dataset(snakemake.input.dense), snakemake.params.title,
-                   snakemake.wildcards.reading)
+fig = sweep_figure(
+    read_dataset(snakemake.input.paper),
+    read_dataset(snakemake.input.dense),
+    snakemake.params.title,
+    snakemake.wildcards.reading,
+)
 fig.savefig(snakemake.output[0], dpi=100)

@@ -18,16 +18,43 @@ print(open(snakemake.output.csv).read())
 unrep = unreproduced_claims(rows, list(snakemake.params.readings))
 with open(snakemake.output.unreproduced, "w", newline="") as fh:
     import csv
+
     w = csv.DictWriter(fh, fieldnames=["claim", "figure", "statuses", "why", "quote"])
     w.writeheader()
     w.writerows(unrep)
 ds = xr.Dataset(
-    {c: ("reading", np.array([t[c] for t in table], dtype=float if c.startswith("reproduced_f") else np.int32),
-         {"units": "1", "long_name": f"number of claim checks: {c}" if c != "reproduced_fraction_of_comparable"
-          else "reproduced / (reproduced + deviates)"}) for c in cols[1:]},
-    coords={"reading": ("reading", np.array([t["reading"] for t in table], dtype=object),
-                        {"long_name": "reading of the paper's equations, best first"}),
-            "rank": ("reading", np.arange(1, len(table) + 1, dtype=np.int32), {"units": "1", "long_name": "rank"})})
+    {
+        c: (
+            "reading",
+            np.array([t[c] for t in table], dtype=float if c.startswith("reproduced_f") else np.int32),
+            {
+                "units": "1",
+                "long_name": f"number of claim checks: {c}"
+                if c != "reproduced_fraction_of_comparable"
+                else "reproduced / (reproduced + deviates)",
+            },
+        )
+        for c in cols[1:]
+    },
+    coords={
+        "reading": (
+            "reading",
+            np.array([t["reading"] for t in table], dtype=object),
+            {"long_name": "reading of the paper's equations, best first"},
+        ),
+        "rank": (
+            "reading",
+            np.arange(1, len(table) + 1, dtype=np.int32),
+            {"units": "1", "long_name": "rank"},
+        ),
+    },
+)
 ds.attrs["claims_no_reading_reproduces"] = len(unrep)
-write_dataset(ds, snakemake.output.nc, scene={"name": "interpretation_study"}, interpretation="all readings",
-              method={"name": "claims check"}, title="Readings ranked by reproduced claims")
+write_dataset(
+    ds,
+    snakemake.output.nc,
+    scene={"name": "interpretation_study"},
+    interpretation="all readings",
+    method={"name": "claims check"},
+    title="Readings ranked by reproduced claims",
+)

@@ -20,16 +20,30 @@ if not traj.ok:
 metrics = limit_cycle_metrics(traj, spec.transient, spec.count_window)
 ds = trajectory_dataset(traj, metrics)
 if "stick_fraction" in ds:
-    ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), {"units": "1",
-                           "long_name": "fraction of steady-window samples in slip"})
+    ds["slip_fraction"] = (
+        (),
+        1.0 - float(ds.stick_fraction),
+        {"units": "1", "long_name": "fraction of steady-window samples in slip"},
+    )
 if traj.ok:
-    for name, (value, units, long_name) in extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase,
-                                                         spec.model.friction, spec.params.normal_force).items():
+    for name, (value, units, long_name) in extra_metrics(
+        traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, spec.model.friction, spec.params.normal_force
+    ).items():
         ds[name] = ((), value, {"units": units, "long_name": long_name})
 write_dataset(
-    ds, snakemake.output[0], scene=spec.scene_attrs(), interpretation=spec.interpretation(),
+    ds,
+    snakemake.output[0],
+    scene=spec.scene_attrs(),
+    interpretation=spec.interpretation(),
     method={"name": spec.method, **spec.solver_settings, **traj.settings},
     title=f"{spec.figure} {spec.scene}: reading {spec.reading}, method {spec.method}",
 )
-logging.info("%s %s %s: %s, %d segments/steps, cpu %.3f s", wc.scene, wc.reading, wc.method, traj.stats.status,
-             traj.stats.steps, traj.stats.cpu_time)
+logging.info(
+    "%s %s %s: %s, %d segments/steps, cpu %.3f s",
+    wc.scene,
+    wc.reading,
+    wc.method,
+    traj.stats.status,
+    traj.stats.steps,
+    traj.stats.cpu_time,
+)

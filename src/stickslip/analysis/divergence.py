@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-#: Growth of the steady window's amplitude from its third quarter to its last quarter that counts as unbounded.
+#: Growth of the steady window's amplitude from its third quarter to its last quarter that counts as
+#: unbounded.
 GROWTH_FACTOR = 1.05
 #: |x| beyond this many static deflections mu_s N / K counts as having left any physical range.
 BLOWUP_FACTOR = 1.0e3
@@ -61,12 +62,20 @@ class BoundedSolver:
                 traj = self.inner.solve(model, t_end, t_eval)
         except (ValueError, ArithmeticError) as exc:  # e.g. a root search on an overflowing segment
             from ..solvers.base import SolverStats, Trajectory
+
             t = np.asarray(t_eval if t_eval is not None else np.linspace(0, t_end, 2001), dtype=float)
             nan = np.full(t.shape, np.nan)
             stats = SolverStats(status="failed", message=f"diverged: {exc}", failures=1)
-            return Trajectory(t=t, x=nan, v=nan.copy(), phase=np.zeros(t.shape, dtype=np.int8),
-                              belt_velocity=model.belt_velocity(t), stats=stats, method=self.name,
-                              settings=self.settings)
+            return Trajectory(
+                t=t,
+                x=nan,
+                v=nan.copy(),
+                phase=np.zeros(t.shape, dtype=np.int8),
+                belt_velocity=model.belt_velocity(t),
+                stats=stats,
+                method=self.name,
+                settings=self.settings,
+            )
         if traj.ok:
             p = model.params
             with np.errstate(all="ignore"):

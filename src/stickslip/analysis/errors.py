@@ -28,8 +28,12 @@ def state_error(traj, ref) -> dict:
     if not (np.all(np.isfinite(dx)) and np.all(np.isfinite(dv))):
         return {"state": math.inf, "state_rms": math.inf, "x_max": math.inf, "v_max": math.inf}
     e = np.maximum(dx / xs, dv / vs)
-    return {"state": float(e.max()), "state_rms": float(np.sqrt(np.mean(e * e))),
-            "x_max": float(dx.max()), "v_max": float(dv.max())}
+    return {
+        "state": float(e.max()),
+        "state_rms": float(np.sqrt(np.mean(e * e))),
+        "x_max": float(dx.max()),
+        "v_max": float(dv.max()),
+    }
 
 
 def _hermite_extremum(t0, t1, x0, x1, v0, v1):
@@ -38,6 +42,7 @@ def _hermite_extremum(t0, t1, x0, x1, v0, v1):
     # x(s) = x0 + h v0 s + (3dx - h(2v0+v1)) s^2 + (h(v0+v1) - 2dx) s^3,  s in [0, 1]
     dx = x1 - x0
     c1, c2, c3 = h * v0, 3 * dx - h * (2 * v0 + v1), h * (v0 + v1) - 2 * dx
+
     # derivative c1 + 2 c2 s + 3 c3 s^2 = 0; pick the root in [0, 1] (bisection-safe via brentq)
     def d(s):
         return c1 + 2 * c2 * s + 3 * c3 * s * s
@@ -66,8 +71,12 @@ def sampled_extrema(t, x, v):
             te, xe = _hermite_extremum(t[i], t[i + 1], x[i], x[i + 1], v[i], v[i + 1])
             out[kind][0].append(te)
             out[kind][1].append(xe)
-    return (np.array(out["max"][0]), np.array(out["max"][1]),
-            np.array(out["min"][0]), np.array(out["min"][1]))
+    return (
+        np.array(out["max"][0]),
+        np.array(out["max"][1]),
+        np.array(out["min"][0]),
+        np.array(out["min"][1]),
+    )
 
 
 def cycle_metrics(t, x, v, cycles: int = 3) -> dict:
@@ -76,7 +85,7 @@ def cycle_metrics(t, x, v, cycles: int = 3) -> dict:
     if len(tmax) < 2 or len(tmin) < 1 or not np.all(np.isfinite(x)):
         return {"period": math.nan, "amplitude": math.nan}
     n = min(cycles, len(tmax) - 1)
-    period = float(np.mean(np.diff(tmax[-(n + 1):])))
+    period = float(np.mean(np.diff(tmax[-(n + 1) :])))
     amplitude = float(np.mean(xmax[-n:]) - np.mean(xmin[-n:]))
     return {"period": period, "amplitude": amplitude}
 
@@ -94,8 +103,17 @@ def segment_cycle_metrics(segments, cycles: int = 3) -> dict:
         _, vg = seg.state(grid)
         for i in range(len(grid) - 1):
             if vg[i] == 0.0 or vg[i] * vg[i + 1] < 0:
-                tz = grid[i] if vg[i] == 0.0 else brentq(lambda s: float(seg.state(s)[1]), grid[i],
-                                                         grid[i + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps)
+                tz = (
+                    grid[i]
+                    if vg[i] == 0.0
+                    else brentq(
+                        lambda s, seg=seg: float(seg.state(s)[1]),
+                        grid[i],
+                        grid[i + 1],
+                        xtol=1e-15,
+                        rtol=4 * np.finfo(float).eps,
+                    )
+                )
                 xz = float(seg.state(tz)[0])
                 going_down = (vg[i] > 0) if vg[i] != 0 else (vg[i + 1] < 0)
                 (tmax if going_down else tmin).append(tz)
@@ -103,7 +121,7 @@ def segment_cycle_metrics(segments, cycles: int = 3) -> dict:
     if len(tmax) < 2 or not xmin:
         return {"period": math.nan, "amplitude": math.nan}
     n = min(cycles, len(tmax) - 1)
-    period = float(np.mean(np.diff(tmax[-(n + 1):])))
+    period = float(np.mean(np.diff(tmax[-(n + 1) :])))
     amplitude = float(np.mean(xmax[-n:]) - np.mean(xmin[-n:]))
     return {"period": period, "amplitude": amplitude}
 
@@ -126,9 +144,21 @@ def compare(traj, ref, ref_cycle: dict | None = None) -> dict:
     return out
 
 
-def measure_run(solver, model, t_end: float, t_eval, ref, ref_cycle: dict, *, max_rhs: int = 2_000_000,
-                max_cpu: float = 20.0, min_repeats: int = 3, max_repeats: int = 25,
-                min_total_cpu: float = 0.3, slow_run: float = 1.0):
+def measure_run(
+    solver,
+    model,
+    t_end: float,
+    t_eval,
+    ref,
+    ref_cycle: dict,
+    *,
+    max_rhs: int = 2_000_000,
+    max_cpu: float = 20.0,
+    min_repeats: int = 3,
+    max_repeats: int = 25,
+    min_total_cpu: float = 0.3,
+    slow_run: float = 1.0,
+):
     """Run ``solver`` under a work budget, time it, and measure its error against ``ref``.
 
     CPU time is the minimum of repeated runs (process time): repeated until ``min_total_cpu`` seconds
@@ -147,9 +177,15 @@ def measure_run(solver, model, t_end: float, t_eval, ref, ref_cycle: dict, *, ma
         if len(times) >= max_repeats or (len(times) >= min_repeats and sum(times) >= min_total_cpu):
             break
     record = compare(traj, ref, ref_cycle)
-    record.update({
-        "cpu_time": float(min(times)), "cpu_time_median": float(np.median(times)), "repeats": len(times),
-        "rhs_evaluations": int(traj.stats.rhs_evaluations), "steps": int(traj.stats.steps),
-        "status": traj.stats.status, "message": traj.stats.message,
-    })
+    record.update(
+        {
+            "cpu_time": float(min(times)),
+            "cpu_time_median": float(np.median(times)),
+            "repeats": len(times),
+            "rhs_evaluations": int(traj.stats.rhs_evaluations),
+            "steps": int(traj.stats.steps),
+            "status": traj.stats.status,
+            "message": traj.stats.message,
+        }
+    )
     return traj, record

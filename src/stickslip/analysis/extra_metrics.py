@@ -1,5 +1,8 @@
-"""Scalars some claims need beyond the limit-cycle table: early vs late amplitude (decelerating belt, Fig. 15),
-the friction coefficient range along the solution (Fig. 17), the final speed (Fig. 16 settles)."""
+"""Scalars some claims need beyond the limit-cycle table.
+
+Early vs late amplitude (decelerating belt, Fig. 15), the friction coefficient range along the solution
+(Fig. 17), the final speed (Fig. 16 settles).
+"""
 
 from __future__ import annotations
 
@@ -15,12 +18,35 @@ def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str
     mu = np.abs(friction.force(v, vb)) / normal_force
     with np.errstate(all="ignore"):
         return {
-            "early_amplitude": (float(np.ptp(x[half])), "mm", "peak-to-peak displacement, first half of the run"),
-            "late_amplitude": (float(np.ptp(x[~half])), "mm", "peak-to-peak displacement, second half of the run"),
-            "early_velocity_amplitude": (float(np.ptp(v[half])), "mm s-1", "peak-to-peak velocity, first half"),
-            "late_velocity_amplitude": (float(np.ptp(v[~half])), "mm s-1", "peak-to-peak velocity, second half"),
+            "early_amplitude": (
+                float(np.ptp(x[half])),
+                "mm",
+                "peak-to-peak displacement, first half of the run",
+            ),
+            "late_amplitude": (
+                float(np.ptp(x[~half])),
+                "mm",
+                "peak-to-peak displacement, second half of the run",
+            ),
+            "early_velocity_amplitude": (
+                float(np.ptp(v[half])),
+                "mm s-1",
+                "peak-to-peak velocity, first half",
+            ),
+            "late_velocity_amplitude": (
+                float(np.ptp(v[~half])),
+                "mm s-1",
+                "peak-to-peak velocity, second half",
+            ),
             "final_speed": (float(abs(v[-1])), "mm s-1", "|velocity| at the end of the run"),
-            "friction_min_slip": (float(np.min(mu[slip])) if slip.any() else np.nan, "1",
-                                  "smallest |F|/N while slipping (Fig. 17 plateau level)"),
-            "relative_speed_max": (float(np.max(np.abs(v - vb))), "mm s-1", "largest |v_r| along the solution"),
+            "friction_min_slip": (
+                float(np.min(mu[slip])) if slip.any() else np.nan,
+                "1",
+                "smallest |F|/N while slipping (Fig. 17 plateau level)",
+            ),
+            "relative_speed_max": (
+                float(np.max(np.abs(v - vb))),
+                "mm s-1",
+                "largest |v_r| along the solution",
+            ),
         }

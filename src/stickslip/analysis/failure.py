@@ -35,12 +35,16 @@ def stick_intervals(ref_segments, min_length: float = 0.0):
     """(t0, t1) of the reference's stick segments longer than ``min_length``."""
     if ref_segments is None:
         return []
-    return [(float(a), float(b)) for a, b, ph in np.asarray(ref_segments).reshape(-1, 3)
-            if ph == 0 and b - a > min_length]
+    return [
+        (float(a), float(b))
+        for a, b, ph in np.asarray(ref_segments).reshape(-1, 3)
+        if ph == 0 and b - a > min_length
+    ]
 
 
-def classify(traj, ref, params, *, creep_tolerance: float = 1e-3, chatter_count: int = 2,
-             band: float | None = None) -> dict:
+def classify(
+    traj, ref, params, *, creep_tolerance: float = 1e-3, chatter_count: int = 2, band: float | None = None
+) -> dict:
     """Failure indicators of ``traj`` against the exact ``ref`` (same samples, ``ref.segments`` set).
 
     creep_tolerance: allowed drift relative to the reference's peak-to-peak x.
@@ -52,8 +56,16 @@ def classify(traj, ref, params, *, creep_tolerance: float = 1e-3, chatter_count:
     vb = traj.belt_velocity
     band = band if band is not None else 0.01 * max(params.belt_velocity, 1e-12)
     scale = max(float(np.ptp(ref.x)), 1e-12)
-    out = {"diverged": False, "step_collapse": False, "missed_stick": False, "chatter": False,
-           "creep": False, "creep_mm": 0.0, "sign_changes_in_stick": 0.0, "stick_time_ratio": math.nan}
+    out = {
+        "diverged": False,
+        "step_collapse": False,
+        "missed_stick": False,
+        "chatter": False,
+        "creep": False,
+        "creep_mm": 0.0,
+        "sign_changes_in_stick": 0.0,
+        "stick_time_ratio": math.nan,
+    }
     msg = (traj.stats.message or "").lower()
     finite = bool(np.all(np.isfinite(x)) and np.all(np.isfinite(v)))
     if traj.stats.status != "ok":

@@ -1,4 +1,4 @@
-"""Fig. 17: the friction coefficient versus relative velocity along a solution, as a table for the FE scenes."""
+"""Fig. 17: the friction coefficient versus relative velocity along a solution, as the FE scenes' table."""
 
 from __future__ import annotations
 

@@ -14,7 +14,6 @@ from scipy.signal import find_peaks
 
 from ..solvers.base import STICK, Trajectory
 
-
 #: A steady window whose peak-to-peak displacement is below this fraction of the whole run's is at rest.
 REST_FRACTION = 1e-4
 
@@ -102,7 +101,7 @@ def frequency_from_spectrum(t: np.ndarray, x: np.ndarray, pad: int = 16) -> floa
         return np.nan
     shift = 0.0
     if 0 < k < len(power) - 1:
-        a, b, c = np.log(power[k - 1:k + 2] + 1e-300)
+        a, b, c = np.log(power[k - 1 : k + 2] + 1e-300)
         denom = a - 2 * b + c
         shift = 0.5 * (a - c) / denom if denom != 0 else 0.0
     return (k + shift) / (n * dt[0])
@@ -151,18 +150,28 @@ def limit_cycle_metrics(traj: Trajectory, transient: float, count_window: float 
 
     return {
         "solver_ok": Metric(1.0, "1", "solver finished without failure (1) or failed (0)"),
-        "stick_time": Metric(mean(stick_len), "s", "mean duration of complete stick intervals (steady window)"),
+        "stick_time": Metric(
+            mean(stick_len), "s", "mean duration of complete stick intervals (steady window)"
+        ),
         "slip_time": Metric(mean(slip_len), "s", "mean duration of complete slip intervals (steady window)"),
         "first_stick_time": Metric(
-            float(stick[0, 1] - stick[0, 0]) if len(stick) else nan, "s", "duration of the first stick interval"),
+            float(stick[0, 1] - stick[0, 0]) if len(stick) else nan,
+            "s",
+            "duration of the first stick interval",
+        ),
         "stick_count": Metric(float(len(stick_c)), "1", "number of complete stick intervals (steady window)"),
         "stick_fraction": Metric(
-            float(np.mean(traj.phase[window] == STICK)) if window.any() else nan, "1",
-            "fraction of steady-window samples in stick"),
+            float(np.mean(traj.phase[window] == STICK)) if window.any() else nan,
+            "1",
+            "fraction of steady-window samples in stick",
+        ),
         "period": Metric(mean(stick_len) + mean(slip_len), "s", "mean stick plus mean slip duration"),
-        "amplitude_peak_to_peak": Metric(float(np.ptp(xw)), "mm", "peak-to-peak displacement (steady window)"),
-        "amplitude_peak_to_zero": Metric(float(np.max(np.abs(xw))), "mm",
-                                         "largest |displacement| from zero (steady window)"),
+        "amplitude_peak_to_peak": Metric(
+            float(np.ptp(xw)), "mm", "peak-to-peak displacement (steady window)"
+        ),
+        "amplitude_peak_to_zero": Metric(
+            float(np.max(np.abs(xw))), "mm", "largest |displacement| from zero (steady window)"
+        ),
         "max_displacement": Metric(float(np.max(xw)), "mm", "largest displacement (steady window)"),
         "min_displacement": Metric(float(np.min(xw)), "mm", "smallest displacement (steady window)"),
         "max_velocity": Metric(float(np.max(vw)), "mm s-1", "largest velocity (steady window)"),
@@ -170,12 +179,17 @@ def limit_cycle_metrics(traj: Trajectory, transient: float, count_window: float 
         "max_speed": Metric(float(np.abs(vw[speed_at])), "mm s-1", "largest |velocity| (steady window)"),
         "max_speed_position": Metric(float(xw[speed_at]), "mm", "displacement where |velocity| is largest"),
         "stick_velocity": Metric(
-            float(np.mean(v[traj.phase == STICK])) if np.any(traj.phase == STICK) else nan, "mm s-1",
-            "mean velocity while sticking"),
+            float(np.mean(v[traj.phase == STICK])) if np.any(traj.phase == STICK) else nan,
+            "mm s-1",
+            "mean velocity while sticking",
+        ),
         "stick_end_position": Metric(mean(release), "mm", "displacement at which stick ends (steady window)"),
         "frequency_peaks": Metric(freq_peaks, "Hz", "frequency from displacement peak spacing"),
         "frequency_spectrum": Metric(freq_spectrum, "Hz", "frequency of the spectral peak"),
-        "peaks_in_count_window": Metric(float(count_peaks(t, x, 0.0, count_window)), "1",
-                                        f"displacement maxima in the first {count_window:g} s"),
+        "peaks_in_count_window": Metric(
+            float(count_peaks(t, x, 0.0, count_window)),
+            "1",
+            f"displacement maxima in the first {count_window:g} s",
+        ),
         "periodic": Metric(periodic, "1", "last two cycles repeat to 1e-3 (1) or not (0)"),
     }

@@ -13,8 +13,14 @@ def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
         mine = [row for row in rows if row["reading"] == r]
         counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
         comparable = counts["reproduced"] + counts["deviates"]
-        table.append({"reading": r, **counts, "total": len(mine),
-                      "reproduced_fraction_of_comparable": counts["reproduced"] / comparable if comparable else 0.0})
+        table.append(
+            {
+                "reading": r,
+                **counts,
+                "total": len(mine),
+                "reproduced_fraction_of_comparable": counts["reproduced"] / comparable if comparable else 0.0,
+            }
+        )
     return sorted(table, key=lambda t: (-t["reproduced"], t["deviates"], t["reading"]))
 
 
@@ -30,6 +36,13 @@ def unreproduced_claims(rows: list[dict], readings: list[str]) -> list[dict]:
             continue
         statuses = "; ".join(f"{r['reading'] or '-'}: {r['status']}" for r in mine)
         reasons = sorted({r["reason"].split("; ", 1)[-1] for r in mine if r["reason"]}, key=len)
-        out.append({"claim": claim, "figure": mine[0]["figure"], "statuses": statuses,
-                    "why": reasons[-1] if reasons else "", "quote": mine[0]["quote"]})
+        out.append(
+            {
+                "claim": claim,
+                "figure": mine[0]["figure"],
+                "statuses": statuses,
+                "why": reasons[-1] if reasons else "",
+                "quote": mine[0]["quote"],
+            }
+        )
     return out

@@ -11,8 +11,8 @@ import dataclasses
 import itertools
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 import xarray as xr
@@ -67,9 +67,17 @@ def chunk_points(axes: list[SweepAxis], chunk_size: int, chunk: int) -> list[dic
     return points
 
 
-def run_points(base: BeltParams, variant: str, points: list[dict], solver, t_end: float, t_eval: np.ndarray,
-               transient: float, count_window: float = 18.0,
-               progress: Callable[[int, int], None] | None = None) -> dict[str, np.ndarray]:
+def run_points(
+    base: BeltParams,
+    variant: str,
+    points: list[dict],
+    solver,
+    t_end: float,
+    t_eval: np.ndarray,
+    transient: float,
+    count_window: float = 18.0,
+    progress: Callable[[int, int], None] | None = None,
+) -> dict[str, np.ndarray]:
     """Metric arrays (one entry per point); a failed run gives NaN metrics and solver_ok = 0."""
     rows = []
     for i, point in enumerate(points):
@@ -80,7 +88,7 @@ def run_points(base: BeltParams, variant: str, points: list[dict], solver, t_end
         if progress is not None:
             progress(i + 1, len(points))
     names, meta = {}, {}
-    for values, metrics in rows:
+    for _values, metrics in rows:
         for k, m in metrics.items():
             names.setdefault(k, None)
             meta.setdefault(k, m)
@@ -110,15 +118,25 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
         raise ValueError(f"chunks cover {flat.sizes['point']} of {n} grid points or overlap")
     shape = [len(a.values) for a in axes]
     dims = [a.name for a in axes]
-    out = xr.Dataset(coords={a.name: (a.name, np.asarray(a.values, dtype=float),
-                                      {"units": a.units or "1", "long_name": a.long_name or a.name})
-                             for a in axes})
+    out = xr.Dataset(
+        coords={
+            a.name: (
+                a.name,
+                np.asarray(a.values, dtype=float),
+                {"units": a.units or "1", "long_name": a.long_name or a.name},
+            )
+            for a in axes
+        }
+    )
     for name, var in flat.data_vars.items():
         out[name] = (dims, var.values.reshape(shape), dict(var.attrs))
     for axis in axes:
         for other, factor in axis.linked.items():
-            out[other] = (axis.name, float(factor) * np.asarray(axis.values, dtype=float),
-                          {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"})
+            out[other] = (
+                axis.name,
+                float(factor) * np.asarray(axis.values, dtype=float),
+                {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"},
+            )
     return out
 
 
@@ -140,6 +158,7 @@ class ProgressLog:
 
 
 # --- Building sweeps from configuration (dense maps) -------------------------------------------------------
+
 
 def axis_from_config(spec: dict, key: str) -> SweepAxis:
     """A sweep axis from a config mapping; every error names ``key`` (the config path of the axis).
@@ -170,13 +189,20 @@ def axis_from_config(spec: dict, key: str) -> SweepAxis:
             values = tuple(float(v) for v in np.linspace(start, stop, num))
         elif spacing == "log":
             if not (start > 0 and stop > 0):
-                raise ParameterError(f"{key}: log spacing needs start > 0 and stop > 0, got {start!r}, {stop!r}")
+                raise ParameterError(
+                    f"{key}: log spacing needs start > 0 and stop > 0, got {start!r}, {stop!r}"
+                )
             values = tuple(float(v) for v in np.geomspace(start, stop, num))
         else:
             raise ParameterError(f"{key}.spacing: {spacing!r} is not one of ['linear', 'log']")
     try:
-        return SweepAxis(name, values, str(spec.get("units", "")), str(spec.get("long_name", "")),
-                         dict(spec.get("linked", {})))
+        return SweepAxis(
+            name,
+            values,
+            str(spec.get("units", "")),
+            str(spec.get("long_name", "")),
+            dict(spec.get("linked", {})),
+        )
     except ParameterError as exc:
         raise ParameterError(f"{key}: {exc}") from None
 
@@ -213,7 +239,9 @@ def check_chunking(axes: list[SweepAxis], chunk_size, key: str, max_chunks: int 
     if max_chunks is not None and count > max_chunks:
         raise ParameterError(
             f"{key}: {chunk_size} points per chunk make {count} jobs for {grid_size(axes)} points, more than "
-            f"max_chunks = {max_chunks}; use at least {math.ceil(grid_size(axes) / max_chunks)} points per chunk")
+            f"max_chunks = {max_chunks}; use at least "
+            f"{math.ceil(grid_size(axes) / max_chunks)} points per chunk"
+        )
     return count
 
 

@@ -46,14 +46,25 @@ class RunSpec:
         return np.linspace(0.0, n * self.output_dt, n + 1)
 
     def interpretation(self) -> dict:
-        return {"reading": self.reading, "variant": self.variant, "sigma": self.params.sigma,
-                "units": self.params.units, "plateau_speed": self.params.plateau_speed,
-                "equation": EQUATIONS[self.variant]}
+        return {
+            "reading": self.reading,
+            "variant": self.variant,
+            "sigma": self.params.sigma,
+            "units": self.params.units,
+            "plateau_speed": self.params.plateau_speed,
+            "equation": EQUATIONS[self.variant],
+        }
 
     def scene_attrs(self) -> dict:
-        return {"name": self.scene, "figure": self.figure, "description": self.description,
-                "t_end": self.t_end, "output_dt": self.output_dt, "transient": self.transient,
-                **self.params.as_dict()}
+        return {
+            "name": self.scene,
+            "figure": self.figure,
+            "description": self.description,
+            "t_end": self.t_end,
+            "output_dt": self.output_dt,
+            "transient": self.transient,
+            **self.params.as_dict(),
+        }
 
 
 def _section(config: dict, *keys):
@@ -84,9 +95,11 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
         belt = BeltParams.from_mapping(params)
     except ParameterError as exc:
         raise ParameterError(f"onedof.scenes.{scene}.params.{exc}") from None
-    run = {**{k: defaults[k] for k in ("t_end", "output_dt", "transient", "count_window") if k in defaults},
-           **{k: scene_cfg[k] for k in ("t_end", "output_dt", "transient", "count_window") if k in scene_cfg},
-           **{k: reading_cfg[k] for k in ("output_dt",) if k in reading_cfg}}
+    run = {
+        **{k: defaults[k] for k in ("t_end", "output_dt", "transient", "count_window") if k in defaults},
+        **{k: scene_cfg[k] for k in ("t_end", "output_dt", "transient", "count_window") if k in scene_cfg},
+        **{k: reading_cfg[k] for k in ("output_dt",) if k in reading_cfg},
+    }
     for key in ("t_end", "output_dt"):
         if key not in run:
             raise ParameterError(f"onedof.scenes.{scene}.{key}: missing (and no default)")
@@ -95,10 +108,17 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
     if "solver" not in method_cfg:
         raise ParameterError(f"onedof.methods.{method}.solver: missing")
     spec = RunSpec(
-        scene=scene, reading=reading, method=method, params=belt, variant=variant,
-        t_end=float(run["t_end"]), output_dt=float(run["output_dt"]),
-        transient=float(run.get("transient", 0.0)), count_window=float(run.get("count_window", 18.0)),
-        solver_settings=dict(method_cfg), figure=str(scene_cfg.get("figure", "")),
+        scene=scene,
+        reading=reading,
+        method=method,
+        params=belt,
+        variant=variant,
+        t_end=float(run["t_end"]),
+        output_dt=float(run["output_dt"]),
+        transient=float(run.get("transient", 0.0)),
+        count_window=float(run.get("count_window", 18.0)),
+        solver_settings=dict(method_cfg),
+        figure=str(scene_cfg.get("figure", "")),
         description=str(scene_cfg.get("description", "")),
     )
     spec.solver()  # fail now, naming the key, if the method settings are wrong
@@ -108,7 +128,9 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
 EQUATIONS = {
     "eq3_printed": "Eq. 3 as printed: F = mu_s N (sgn(v_r) - sigma v_r)",
     "eq4_printed": "Eq. 4 as printed: (C + mu_s N sigma) x' ... = mu_s N sgn(v_r) + sigma V_b",
-    "consistent": "F = -mu_s N (sgn(v_r) - sigma v_r'), v_r' = v_r clipped at +-plateau_speed (inf: no plateau)",
+    "consistent": (
+        "F = -mu_s N (sgn(v_r) - sigma v_r'), v_r' = v_r clipped at +-plateau_speed (inf: no plateau)"
+    ),
 }
 
 #: Keys a reading may set on top of a scene's parameters (which sigma, which units, a friction plateau).
@@ -135,8 +157,14 @@ class SweepSpec:
 
     def axis(self, dense: bool):
         from ..analysis.sweep import SweepAxis
-        return SweepAxis(self.parameter, self.dense if dense else self.values, units=self.units,
-                         long_name=self.long_name, linked=dict(self.linked))
+
+        return SweepAxis(
+            self.parameter,
+            self.dense if dense else self.values,
+            units=self.units,
+            long_name=self.long_name,
+            linked=dict(self.linked),
+        )
 
 
 def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
@@ -146,12 +174,16 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
     base = run_spec(config, cfg.get("scene", "fig02"), reading, cfg.get("method", "exact"))
     param = cfg.get("parameter")
     from dataclasses import fields as _fields
+
     known = {f.name for f in _fields(BeltParams)}
     if param not in known:
         raise ParameterError(f"{where}.parameter: {param!r} is not a parameter ({sorted(known)})")
     values = cfg.get("values")
-    if not isinstance(values, list) or not values or not all(
-            isinstance(v, (int, float)) and np.isfinite(v) for v in values):
+    if (
+        not isinstance(values, list)
+        or not values
+        or not all(isinstance(v, (int, float)) and np.isfinite(v) for v in values)
+    ):
         raise ParameterError(f"{where}.values: must be a non-empty list of finite numbers")
     dense_cfg = cfg.get("dense", {})
     try:
@@ -173,10 +205,18 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
             base.params.with_(**{param: float(v)}, **{k: f * float(v) for k, f in linked.items()})
         except ParameterError as exc:
             raise ParameterError(f"{where}.values: {exc}") from None
-    return SweepSpec(name=sweep, figure=str(cfg.get("figure", "")), parameter=param,
-                     values=tuple(float(v) for v in values), dense=tuple(float(v) for v in dense),
-                     linked=dict(linked), units=str(cfg.get("units", "1")),
-                     long_name=str(cfg.get("long_name", param)), base=base, coord_scale=scale)
+    return SweepSpec(
+        name=sweep,
+        figure=str(cfg.get("figure", "")),
+        parameter=param,
+        values=tuple(float(v) for v in values),
+        dense=tuple(float(v) for v in dense),
+        linked=dict(linked),
+        units=str(cfg.get("units", "1")),
+        long_name=str(cfg.get("long_name", param)),
+        base=base,
+        coord_scale=scale,
+    )
 
 
 def figure_runs(config: dict, figure: str) -> list[tuple[str, str, str]]:

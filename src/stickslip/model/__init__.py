@@ -5,6 +5,12 @@ from .friction import VARIANTS, AffineFriction, friction_law
 from .params import PAPER_BASELINE, UNIT_READINGS, BeltParams, ParameterError
 
 __all__ = [
-    "BeltModel", "VARIANTS", "AffineFriction", "friction_law",
-    "PAPER_BASELINE", "UNIT_READINGS", "BeltParams", "ParameterError",
+    "BeltModel",
+    "VARIANTS",
+    "AffineFriction",
+    "friction_law",
+    "PAPER_BASELINE",
+    "UNIT_READINGS",
+    "BeltParams",
+    "ParameterError",
 ]

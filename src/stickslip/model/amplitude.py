@@ -26,12 +26,20 @@ def amplitude_correct(omega, force: float, stiffness: float, damping: float, mas
 
 
 def printed_peak(force: float, stiffness: float, damping: float) -> tuple[float, float]:
-    """(f_peak [Hz], A_peak): d/d(w^2) of (K - w^2)^2 + c w^2 vanishes at w^2 = K - c/2 (w = 0 if that is < 0)."""
+    """(f_peak [Hz], A_peak) of the printed curve.
+
+    d/d(w^2) of (K - w^2)^2 + c w^2 vanishes at w^2 = K - c/2 (w = 0 if that is < 0).
+    """
     w2 = max(stiffness - 0.5 * damping, 0.0)
     return math.sqrt(w2) / (2 * math.pi), float(amplitude_printed(math.sqrt(w2), force, stiffness, damping))
 
 
 def correct_peak(force: float, stiffness: float, damping: float, mass: float) -> tuple[float, float]:
-    """(f_peak [Hz], A_peak): resonance at w^2 = K/M - C^2/(2 M^2); no peak (w = 0, A = F/K) if that is < 0."""
+    """(f_peak [Hz], A_peak) of the 1-DOF curve.
+
+    Resonance at w^2 = K/M - C^2/(2 M^2); no peak (w = 0, A = F/K) if that is < 0.
+    """
     w2 = max(stiffness / mass - damping**2 / (2 * mass**2), 0.0)
-    return math.sqrt(w2) / (2 * math.pi), float(amplitude_correct(math.sqrt(w2), force, stiffness, damping, mass))
+    return math.sqrt(w2) / (2 * math.pi), float(
+        amplitude_correct(math.sqrt(w2), force, stiffness, damping, mass)
+    )

@@ -18,7 +18,7 @@ class BeltModel:
     friction: AffineFriction
 
     @classmethod
-    def build(cls, params: BeltParams, variant: str) -> "BeltModel":
+    def build(cls, params: BeltParams, variant: str) -> BeltModel:
         return cls(params, friction_law(params, variant))
 
     @property
@@ -62,4 +62,6 @@ class BeltModel:
         """x at which a constant-belt stick ends (D = |a|), for the attracting variants."""
         p = self.params
         vb = p.belt_velocity
-        return (abs(self.friction.a) + (self.friction.b + self.friction.kappa) * vb - p.damping * vb) / p.stiffness
+        return (
+            abs(self.friction.a) + (self.friction.b + self.friction.kappa) * vb - p.damping * vb
+        ) / p.stiffness

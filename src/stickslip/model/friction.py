@@ -50,7 +50,7 @@ class AffineFriction:
         return bool(np.isfinite(self.plateau_speed))
 
     def outer(self, s: int) -> tuple[float, float, float]:
-        """(slip damping coefficient b', constant force, belt-velocity coefficient) beyond the plateau on side s.
+        """Beyond the plateau on side s: (slip damping coefficient b', constant force, V_b coefficient).
 
         F = a s + b (s v_p) + (b + kappa) V_b: no velocity dependence left, so the slip damping is C alone.
         """

@@ -72,7 +72,7 @@ class BeltParams:
                 raise ParameterError(f"{key}: must be >= 0, got {getattr(self, key)!r}")
 
     @classmethod
-    def from_mapping(cls, values: dict) -> "BeltParams":
+    def from_mapping(cls, values: dict) -> BeltParams:
         """Build from a config mapping; unknown keys are an error naming the key."""
         known = {f.name for f in fields(cls)}
         unknown = sorted(set(values) - known)
@@ -83,7 +83,7 @@ class BeltParams:
             raise ParameterError(f"{missing[0]}: required parameter is missing")
         return cls(**values)
 
-    def with_(self, **changes) -> "BeltParams":
+    def with_(self, **changes) -> BeltParams:
         return replace(self, **changes)
 
     def as_dict(self) -> dict:
@@ -129,6 +129,13 @@ def effective_mass(mass: float, units: str) -> float:
 
 #: The paper's baseline (Section 3) with sigma as printed in the text.
 PAPER_BASELINE = BeltParams(
-    mass=1.0, stiffness=5.0, damping=1.5, mu_s=0.5, sigma=0.3, normal_force=10.0,
-    x0=0.0, v0=0.5, belt_velocity=0.5,
+    mass=1.0,
+    stiffness=5.0,
+    damping=1.5,
+    mu_s=0.5,
+    sigma=0.3,
+    normal_force=10.0,
+    x0=0.0,
+    v0=0.5,
+    belt_velocity=0.5,
 )

@@ -2,10 +2,10 @@
 
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
 from .exact import ExactSwitchSolver
-from .sign_rk import SignRungeKutta
-from .smooth import SmoothedSign  # noqa: E402
 from .karnopp import Karnopp  # noqa: E402
 from .moreau import MoreauJean  # noqa: E402
+from .sign_rk import SignRungeKutta
+from .smooth import SmoothedSign  # noqa: E402
 
 #: Method registry: config ``solver`` name -> class. Later methods register here.
 METHODS = {"exact": ExactSwitchSolver, "sign_rk": SignRungeKutta}
@@ -26,5 +26,15 @@ def make_solver(name: str, **settings):
         raise ParameterError(f"solver settings for {name!r}: {exc}") from None
 
 
-__all__ = ["SLIP_BACKWARD", "SLIP_FORWARD", "STICK", "SolverError", "SolverStats", "Trajectory",
-           "ExactSwitchSolver", "SignRungeKutta", "METHODS", "make_solver"]
+__all__ = [
+    "SLIP_BACKWARD",
+    "SLIP_FORWARD",
+    "STICK",
+    "SolverError",
+    "SolverStats",
+    "Trajectory",
+    "ExactSwitchSolver",
+    "SignRungeKutta",
+    "METHODS",
+    "make_solver",
+]

@@ -112,8 +112,15 @@ class ExactSwitchSolver:
         x, v, phase = sample_segments(segments, t_eval)
         table = np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3)
         return Trajectory(
-            t=t_eval, x=x, v=v, phase=phase, belt_velocity=model.belt_velocity(t_eval), stats=stats,
-            method=self.name, settings=self.settings, segments=table,
+            t=t_eval,
+            x=x,
+            v=v,
+            phase=phase,
+            belt_velocity=model.belt_velocity(t_eval),
+            stats=stats,
+            method=self.name,
+            settings=self.settings,
+            segments=table,
         )
 
     def segments(self, model: BeltModel, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
@@ -228,14 +235,22 @@ class ExactSwitchSolver:
                 outside = s * (acc - slope) > 0
         if outside:
             b_eff, g0, kv = f.outer(s)
-            seg = LinearSegment(m=m, c=p.damping - b_eff, k=p.stiffness, g0=g0 + kv * vb0, g1=kv * slope,
-                                x0=x0, v0=v0)
+            seg = LinearSegment(
+                m=m, c=p.damping - b_eff, k=p.stiffness, g0=g0 + kv * vb0, g1=kv * slope, x0=x0, v0=v0
+            )
 
             def gap(tau):  # s v_r - v_p: positive while outside the plateau surface
                 return s * (seg.state(tau)[1] - (vb0 + slope * tau)) - vp
         else:
-            seg = LinearSegment(m=m, c=model.slip_damping(), k=p.stiffness,
-                                g0=f.a * s + f.kappa * vb0, g1=f.kappa * slope, x0=x0, v0=v0)
+            seg = LinearSegment(
+                m=m,
+                c=model.slip_damping(),
+                k=p.stiffness,
+                g0=f.a * s + f.kappa * vb0,
+                g1=f.kappa * slope,
+                x0=x0,
+                v0=v0,
+            )
 
             def gap(tau):  # s * v_r: positive while the slip lasts (and below v_p with a plateau)
                 g = s * (seg.state(tau)[1] - (vb0 + slope * tau))

@@ -40,6 +40,7 @@ class Karnopp:
         a_abs = abs(f.a)
         eta = self.eta
         sticky = f.can_stick
+
         def rhs(t, y):
             x, v = y
             vb = float(p.belt_velocity_at(t))
@@ -50,6 +51,16 @@ class Karnopp:
                 return np.array([v, model.acceleration(t, x, v, sign=lambda _u: s_eff)])
             return np.array([v, model.acceleration(t, x, v)])
 
-        return integrate(model, rhs, t_end, t_eval, method=self.method, rtol=self.rtol, atol=self.atol,
-                         max_step=self.max_step, stick_tolerance=eta, label=f"{self.name}_{self.method}",
-                         settings=self.settings)
+        return integrate(
+            model,
+            rhs,
+            t_end,
+            t_eval,
+            method=self.method,
+            rtol=self.rtol,
+            atol=self.atol,
+            max_step=self.max_step,
+            stick_tolerance=eta,
+            label=f"{self.name}_{self.method}",
+            settings=self.settings,
+        )

@@ -61,8 +61,16 @@ class MoreauJean:
             v = np.interp(t_eval, ts, vs)
             idx = np.clip(np.searchsorted(ts, t_eval, side="right"), 1, len(ts) - 1)
             phase = ph[idx - 1].astype(np.int8)  # the step that contains the sample
-        return Trajectory(t=t_eval, x=x, v=v, phase=phase, belt_velocity=vb, stats=stats,
-                          method=f"{self.name}_theta{self.theta:g}", settings=self.settings)
+        return Trajectory(
+            t=t_eval,
+            x=x,
+            v=v,
+            phase=phase,
+            belt_velocity=vb,
+            stats=stats,
+            method=f"{self.name}_theta{self.theta:g}",
+            settings=self.settings,
+        )
 
     def _march(self, model, t_end, stats):
         p, f, m = model.params, model.friction, model.mass

@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from ..model.equations import BeltModel
 from .base import Trajectory
 from .ivp import default_t_eval, integrate
@@ -26,11 +27,25 @@ class SignRungeKutta:
 
     @property
     def settings(self) -> dict:
-        return {"method": self.method, "rtol": self.rtol, "atol": self.atol,
-                "max_step": self.max_step, "stick_tolerance": self.stick_tolerance}
+        return {
+            "method": self.method,
+            "rtol": self.rtol,
+            "atol": self.atol,
+            "max_step": self.max_step,
+            "stick_tolerance": self.stick_tolerance,
+        }
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        return integrate(model, model.rhs, t_end, default_t_eval(t_end, t_eval), method=self.method,
-                         rtol=self.rtol, atol=self.atol, max_step=self.max_step,
-                         stick_tolerance=self.stick_tolerance, label=f"{self.name}_{self.method}",
-                         settings=self.settings)
+        return integrate(
+            model,
+            model.rhs,
+            t_end,
+            default_t_eval(t_end, t_eval),
+            method=self.method,
+            rtol=self.rtol,
+            atol=self.atol,
+            max_step=self.max_step,
+            stick_tolerance=self.stick_tolerance,
+            label=f"{self.name}_{self.method}",
+            settings=self.settings,
+        )

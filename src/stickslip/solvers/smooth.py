@@ -26,8 +26,10 @@ def smooth_sign(kind: str, eps: float):
     if kind == "tanh":
         return (lambda u: np.tanh(u / eps)), (lambda u: (1.0 - np.tanh(u / eps) ** 2) / eps)
     if kind == "arctan":
-        return ((lambda u: (2.0 / np.pi) * np.arctan(u / eps)),
-                (lambda u: (2.0 / np.pi) / (eps * (1.0 + (u / eps) ** 2))))
+        return (
+            (lambda u: (2.0 / np.pi) * np.arctan(u / eps)),
+            (lambda u: (2.0 / np.pi) / (eps * (1.0 + (u / eps) ** 2))),
+        )
     raise ValueError(f"regularization: {kind!r} is not one of {REGULARIZATIONS}")
 
 
@@ -45,13 +47,20 @@ class SmoothedSign:
 
     @property
     def settings(self) -> dict:
-        return {"regularization": self.regularization, "eps": self.eps, "method": self.method,
-                "rtol": self.rtol, "atol": self.atol, "stick_tolerance": self.stick_tolerance}
+        return {
+            "regularization": self.regularization,
+            "eps": self.eps,
+            "method": self.method,
+            "rtol": self.rtol,
+            "atol": self.atol,
+            "stick_tolerance": self.stick_tolerance,
+        }
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
         t_eval = default_t_eval(t_end, t_eval)
         sgn, dsgn = smooth_sign(self.regularization, self.eps)
         p, f, m = model.params, model.friction, model.mass
+
         def rhs(t, y):
             return model.rhs(t, y, sign=sgn)
 
@@ -61,7 +70,17 @@ class SmoothedSign:
             return np.array([[0.0, 1.0], [-p.stiffness / m, dfdv / m]])
 
         explicit = self.method in ("RK45", "DOP853", "RK23")
-        return integrate(model, rhs, t_end, t_eval, method=self.method, rtol=self.rtol, atol=self.atol,
-                         max_step=self.max_step, stick_tolerance=self.stick_tolerance,
-                         label=f"{self.name}_{self.regularization}_{self.method}", settings=self.settings,
-                         jac=None if explicit else jac)
+        return integrate(
+            model,
+            rhs,
+            t_end,
+            t_eval,
+            method=self.method,
+            rtol=self.rtol,
+            atol=self.atol,
+            max_step=self.max_step,
+            stick_tolerance=self.stick_tolerance,
+            label=f"{self.name}_{self.regularization}_{self.method}",
+            settings=self.settings,
+            jac=None if explicit else jac,
+        )
