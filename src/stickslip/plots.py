@@ -5,6 +5,9 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+#: What a plot says instead of drawing a failed run (a failed run is never drawn as a result).
+FAILED_TEXT = "failed – not a result"
+
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
 
 
@@ -13,76 +16,64 @@ def _style(method):
 
 
 def _label(ds, method):
-    failed = int(ds["solver_status"]) != 0
-    return f"{method}" + (" (FAILED: not a result)" if failed else "")
+    return method
+
+
+def _failed_note(ax, ds, method, row):
+    """Red note in place of a failed run's curve: the method, the exact wording, the solver's message."""
+    message = ds["solver_status"].attrs.get("message") or ""
+    ax.text(
+        0.02,
+        0.92 - 0.1 * row,
+        f"{method}: {FAILED_TEXT}" + (f" ({message})" if message else ""),
+        transform=ax.transAxes,
+        color="red",
+        fontsize=8,
+        va="top",
+    )
 
 
 def onedof_figure(datasets: dict, spec: dict, reading: str):
-    """Fig. 2-style time series (displacement and velocity) or Fig. 3-style phase plot."""
+    """Fig. 2-style time series (displacement and velocity), Fig. 8-style velocity or Fig. 3-style phase plot,
+    every method overlaid; a failed run is written out in red, never drawn."""
     kind = spec.get("plot", "timeseries")
-    title = f"{spec.get('title', '')} [reading: {reading}]"
+    if kind not in ("timeseries", "velocity", "phase"):
+        raise ValueError(f"plot: {kind!r} is not one of ['timeseries', 'velocity', 'phase']")
+    title = f"{spec.get('title', '')}\nreading: {reading}"
     if kind == "timeseries":
         fig, (ax_x, ax_v) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
-        for method, ds in datasets.items():
-            if int(ds["solver_status"]) != 0:
-                ax_x.text(
-                    0.02,
-                    0.9 - 0.1 * list(datasets).index(method),
-                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
-                    transform=ax_x.transAxes,
-                    color="red",
-                )
-                continue
-            ax_x.plot(ds.time, ds.displacement, label=_label(ds, method), **_style(method))
-            ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
-        ds0 = next(iter(datasets.values()))
-        ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
-        ax_x.set_ylabel("displacement x [mm]")
-        ax_v.set_ylabel("velocity dx/dt [mm/s]")
-        ax_v.set_xlabel("time [s]")
-        ax_x.legend(loc="upper right", fontsize=8)
-        ax_v.legend(loc="lower right", fontsize=8)
-        ax_x.set_title(title, fontsize=10)
     elif kind == "velocity":
-        fig, ax_v = plt.subplots(figsize=(8, 3.5))
-        for method, ds in datasets.items():
-            if int(ds["solver_status"]) != 0:
-                ax_v.text(
-                    0.02,
-                    0.9 - 0.1 * list(datasets).index(method),
-                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
-                    transform=ax_v.transAxes,
-                    color="red",
-                    fontsize=8,
-                )
-                continue
+        fig, ax_v = plt.subplots(figsize=(8, 3.8))
+        ax_x = ax_v
+    else:
+        fig, ax_x = plt.subplots(figsize=(6.5, 5.2))
+        ax_v = None
+    for row, (method, ds) in enumerate(datasets.items()):
+        if int(ds["solver_status"]) != 0:
+            _failed_note(ax_x, ds, method, row)
+            continue
+        if kind == "timeseries":
+            ax_x.plot(ds.time, ds.displacement, label=_label(ds, method), **_style(method))
+        if kind in ("timeseries", "velocity"):
             ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
+        else:
+            ax_x.plot(ds.displacement, ds.velocity, label=_label(ds, method), **_style(method))
+    if ax_v is not None:
         ds0 = next(iter(datasets.values()))
         ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
         ax_v.set_ylabel("velocity dx/dt [mm/s]")
         ax_v.set_xlabel("time [s]")
         ax_v.legend(loc="lower right", fontsize=8)
-        ax_v.set_title(title, fontsize=10)
+    if kind == "timeseries":
+        ax_x.set_ylabel("displacement x [mm]")
+        if ax_x.get_legend_handles_labels()[0]:
+            ax_x.legend(loc="upper right", fontsize=8)
     elif kind == "phase":
-        fig, ax = plt.subplots(figsize=(6, 5))
-        for i, (method, ds) in enumerate(datasets.items()):
-            if int(ds["solver_status"]) != 0:
-                ax.text(
-                    0.02,
-                    0.9 - 0.1 * i,
-                    f"{method}: solver failed ({ds['solver_status'].attrs.get('message')}) - not a result",
-                    transform=ax.transAxes,
-                    color="red",
-                    fontsize=8,
-                )
-                continue
-            ax.plot(ds.displacement, ds.velocity, label=_label(ds, method), **_style(method))
-        ax.set_xlabel("displacement x [mm]")
-        ax.set_ylabel("velocity dx/dt [mm/s]")
-        ax.legend(fontsize=8)
-        ax.set_title(title, fontsize=10)
-    else:
-        raise ValueError(f"plot: {kind!r} is not one of ['timeseries', 'velocity', 'phase']")
+        ax_x.set_xlabel("displacement x [mm]")
+        ax_x.set_ylabel("velocity dx/dt [mm/s]")
+        if ax_x.get_legend_handles_labels()[0]:
+            ax_x.legend(fontsize=8)
+    ax_x.set_title(title, fontsize=10)
     fig.tight_layout()
     return fig
 
@@ -250,7 +241,7 @@ def sweep_figure(paper, dense, title: str, reading: str):
             ax_x.text(
                 0.02,
                 0.92 - 0.08 * i,
-                f"{param} = {value:g}: run failed ({sel.failure_message.item()}) - not a result",
+                f"{param} = {value:g}: {FAILED_TEXT} ({sel.failure_message.item()})",
                 transform=ax_x.transAxes,
                 color="red",
                 fontsize=7,
@@ -262,7 +253,7 @@ def sweep_figure(paper, dense, title: str, reading: str):
     ax_v.set_ylabel("dx/dt [mm/s]")
     ax_v.set_xlabel("time [s]")
     ax_x.legend(fontsize=7, loc="upper right")
-    ax_x.set_title(f"{title} [reading: {reading}]", fontsize=10)
+    ax_x.set_title(f"{title}\nreading: {reading}", fontsize=10)
     x = dense[param].values
     for row, (var, label) in enumerate(SWEEP_METRICS):
         ax = fig.add_subplot(gs[row, 1])
@@ -292,13 +283,251 @@ def critical_speed_figure(datasets: dict):
         ok = ds.solver_ok.values == 1
         (line,) = ax_s.plot(vb[ok], ds.stick_fraction.values[ok], ".-", label=reading)
         ax_a.plot(vb[ok], ds.amplitude_peak_to_peak.values[ok], ".-", color=line.get_color())
+        if (~ok).any():
+            line.set_label(f"{reading} ({int((~ok).sum())} runs failed – not results)")
+            for ax in (ax_s, ax_a):
+                ax.plot(
+                    vb[~ok],
+                    np.zeros((~ok).sum()),
+                    "|",
+                    color="red",
+                    ms=12,
+                    mew=2,
+                    transform=ax.get_xaxis_transform(),
+                )
         vc = float(ds.critical_belt_speed)
-        if np.isfinite(vc):
+        if np.isfinite(vc) and vc > 0:
             ax_s.axvline(vc, color=line.get_color(), ls=":", lw=1)
     ax_s.set_xscale("log")
     ax_s.set_ylabel("stick fraction")
     ax_a.set_ylabel("x peak-peak [mm]")
-    ax_a.set_xlabel("belt speed V_b [mm/s] (continuation, increasing)")
+    ax_a.set_xlabel("belt speed V_b [mm/s] (continuation, increasing; red ticks: failed – not a result)")
+    ax_s.set_title("critical belt speed (dotted): stick-slip disappears beyond it", fontsize=10)
     ax_s.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+# -- presentation helpers for the comparison notebooks -------------------------------------------------
+
+
+def run_failed(ds) -> bool:
+    """True when the dataset's solver failed (its curves must never be drawn as a result)."""
+    if "solver_ok" in ds and ds["solver_ok"].ndim == 0:
+        return int(ds["solver_ok"]) != 1
+    return int(ds["solver_status"]) != 0
+
+
+def reading_colours(readings):
+    """One fixed colour per reading, the same in every panel of a notebook."""
+    return {r: f"C{i % 10}" for i, r in enumerate(readings)}
+
+
+def mark_failed(ax, label, *, row=0):
+    """Red 'failed - not a result' note in the axes (instead of a curve)."""
+    ax.text(
+        0.02,
+        0.92 - 0.09 * row,
+        f"{label}: {FAILED_TEXT}",
+        transform=ax.transAxes,
+        color="red",
+        fontsize=8,
+        va="top",
+    )
+
+
+def mark_reported_point(ax, x, y, label=None, color="k"):
+    """A number the paper reports at a given abscissa: black cross, labelled."""
+    ax.plot([x], [y], "x", color=color, ms=9, mew=2, zorder=5, label=label)
+
+
+def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
+    """One panel per reported quantity: the measured value of each reading (coloured dot) against the paper's
+    number (dotted line, grey band = the claim's tolerance when given). `quantities` is a list of dicts with
+    keys var, reported, label, unit and optionally tol_rel / tol_abs. A failed run is written out, not drawn;
+    a NaN (nothing to measure, e.g. no stick in a reading that never sticks) is written as 'n/a'."""
+    readings = list(datasets)
+    colours = reading_colours(readings)
+    n = len(quantities)
+    ncols = ncols or min(n, 4)
+    nrows = -(-n // ncols)
+    fig, axes = plt.subplots(
+        nrows, ncols, figsize=(3.4 * ncols, 0.32 * len(readings) + 2.2 * nrows), squeeze=False
+    )
+    for ax, q in zip(axes.flat, quantities):
+        ypos = np.arange(len(readings))
+        for i, r in enumerate(readings):
+            ds = datasets[r]
+            if run_failed(ds):
+                ax.annotate(
+                    FAILED_TEXT,
+                    (0.02, i),
+                    xycoords=("axes fraction", "data"),
+                    color="red",
+                    fontsize=7,
+                    va="center",
+                )
+                continue
+            value = float(ds[q["var"]])
+            if np.isfinite(value):
+                ax.plot(value, i, "o", color=colours[r])
+                ax.annotate(f"{value:.3g}", (value, i), xytext=(5, 3), textcoords="offset points", fontsize=7)
+            else:
+                ax.annotate(
+                    "n/a (nothing to measure)",
+                    (0.02, i),
+                    xycoords=("axes fraction", "data"),
+                    color="0.4",
+                    fontsize=7,
+                    va="center",
+                )
+        rep = q.get("reported")
+        if rep is not None:
+            ax.axvline(rep, color="k", ls=":", lw=1.2)
+            tol = q.get("tol_rel", 0) * abs(rep) + q.get("tol_abs", 0)
+            if tol:
+                ax.axvspan(rep - tol, rep + tol, color="0.85", zorder=0)
+            ax.annotate(
+                f"paper: {rep:g}",
+                (rep, 1.0),
+                xycoords=("data", "axes fraction"),
+                fontsize=8,
+                ha="left",
+                va="bottom",
+            )
+        ax.set_yticks(ypos, readings, fontsize=7)
+        ax.set_ylim(-0.7, len(readings) - 0.3)
+        ax.invert_yaxis()
+        ax.set_xlabel(f"{q['label']} [{q['unit']}]", fontsize=8)
+        ax.tick_params(axis="x", labelsize=7)
+    for ax in list(axes.flat)[n:]:
+        ax.set_visible(False)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title=""):
+    """Dense sweep metrics per reading (one panel per metric) with the paper's numbers as black crosses.
+
+    `datasets` maps reading -> dense sweep dataset; `metrics` is a list of (variable, axis label);
+    `reported` is a list of (variable, x, y, label). Failed or diverging runs are not drawn as values: they
+    are marked by red ticks on the bottom edge and counted in the legend."""
+    readings = list(datasets)
+    colours = reading_colours(readings)
+    first = next(iter(datasets.values()))
+    param = first.attrs["sweep_parameter"]
+    fig, axes = plt.subplots(1, len(metrics), figsize=(3.6 * len(metrics), 3.2), squeeze=False)
+    for ax, (var, label) in zip(axes[0], metrics):
+        for r, ds in datasets.items():
+            x = ds[param].values
+            ok = ds.solver_ok.values == 1
+            nfail = int((~ok).sum())
+            ax.plot(
+                x[ok],
+                ds[var].values[ok],
+                ".-",
+                ms=3,
+                lw=0.9,
+                color=colours[r],
+                label=r + (f" ({nfail} runs failed – not results)" if nfail else ""),
+            )
+            if nfail:
+                ax.plot(
+                    x[~ok],
+                    np.zeros(nfail),
+                    "|",
+                    color="red",
+                    ms=12,
+                    mew=2,
+                    transform=ax.get_xaxis_transform(),
+                )
+        for rvar, rx, ry, rlabel in reported:
+            if rvar == var:
+                mark_reported_point(ax, rx, ry)
+                ax.annotate(rlabel, (rx, ry), xytext=(4, 4), textcoords="offset points", fontsize=7)
+        units = first[param].attrs.get("units", "")
+        ax.set_xlabel(f"{param} [{units}]", fontsize=8)
+        ax.set_ylabel(label, fontsize=8)
+    axes[0, 0].legend(fontsize=6)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def reported_value(frame, claim):
+    """The paper's number of a claim row in the deviations table (None when the claim is not in the table)."""
+    rows = frame[frame["claim"] == claim]
+    return float(rows["reported"].iloc[0]) if len(rows) else None
+
+
+def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
+    """One row (time series: x and v side by side) or one panel (velocity, phase) per reading, every method
+    of the reading overlaid; failed runs are written out in red instead of drawn. `datasets` maps
+    reading -> {method: dataset}. `marks` is a list of dicts passed to `mark_reported` on every x panel
+    (time series), v panel (velocity) or phase panel, keyed by 'on': 'x' | 'v' | 'phase'."""
+    readings = list(datasets)
+    marks = marks or []
+    if kind == "timeseries":
+        fig, axes = plt.subplots(
+            len(readings), 2, figsize=(12, 2.2 * len(readings)), sharex=True, squeeze=False
+        )
+        panels = [(row[0], row[1]) for row in axes]
+    else:
+        ncols = min(len(readings), 2 if kind == "velocity" else 3)
+        nrows = -(-len(readings) // ncols)
+        size = (6 * ncols, 2.6 * nrows) if kind == "velocity" else (4.2 * ncols, 3.6 * nrows)
+        fig, axes = plt.subplots(nrows, ncols, figsize=size, squeeze=False)
+        panels = [(ax, None) for ax in axes.flat]
+        for ax in list(axes.flat)[len(readings) :]:
+            ax.set_visible(False)
+    for (ax_a, ax_b), reading in zip(panels, readings):
+        for i, (method, ds) in enumerate(datasets[reading].items()):
+            if run_failed(ds):
+                mark_failed(ax_a, f"{method} ({ds['solver_status'].attrs.get('message', '')})", row=i)
+                continue
+            style = _style(method)
+            if kind == "timeseries":
+                ax_a.plot(ds.time, ds.displacement, label=method, **style)
+                ax_b.plot(ds.time, ds.velocity, label=method, **style)
+            elif kind == "velocity":
+                ax_a.plot(ds.time, ds.velocity, label=method, **style)
+            else:
+                ax_a.plot(ds.displacement, ds.velocity, label=method, **style)
+        ds0 = next(iter(datasets[reading].values()))
+        if kind in ("timeseries", "velocity"):
+            ax_v = ax_b if kind == "timeseries" else ax_a
+            ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
+            ax_v.set_ylabel("dx/dt [mm/s]", fontsize=8)
+            if kind == "timeseries":
+                ax_a.set_ylabel(f"{reading}\nx [mm]", fontsize=8)
+            else:
+                ax_a.set_title(reading, fontsize=9)
+        else:
+            ax_a.set_title(reading, fontsize=9)
+            ax_a.set_xlabel("x [mm]", fontsize=8)
+            ax_a.set_ylabel("dx/dt [mm/s]", fontsize=8)
+        for m in marks:
+            target = {
+                "x": ax_a if kind == "timeseries" else None,
+                "v": ax_b if kind == "timeseries" else (ax_a if kind == "velocity" else None),
+                "phase": ax_a if kind == "phase" else None,
+            }[m.get("on", "x")]
+            if target is not None:
+                mark_reported(target, **{k: v for k, v in m.items() if k != "on"})
+    if kind == "timeseries":
+        axes[-1, 0].set_xlabel("time [s]")
+        axes[-1, 1].set_xlabel("time [s]")
+        axes[0, 1].legend(fontsize=7, loc="upper right")
+    elif kind == "velocity":
+        for ax in axes[-1]:
+            ax.set_xlabel("time [s]")
+        axes.flat[0].legend(fontsize=7, loc="upper right")
+    else:
+        axes.flat[0].legend(fontsize=7)
+    if title:
+        fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     return fig

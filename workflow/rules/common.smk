@@ -100,21 +100,39 @@ def check_methods_config(cfg):
 
 
 def notebook_params(name):
-    """What the notebook is told: its figures' specs (scene, readings, methods) and the claims readings."""
+    """What the notebook is told: its figures' and sweep figures' specs (scene, readings, methods), the
+    claims readings and the critical-speed readings, so it draws exactly what the DAG built for it."""
     spec = config["notebooks"][name]
+    critical = ONEDOF.get("critical_speed") or {}
     return {
         "figures": {fig: ONEDOF["figures"][fig] for fig in spec.get("figures", [])},
+        "sweep_figures": {fig: ONEDOF["sweep_figures"][fig] for fig in spec.get("sweep_figures", [])},
         "claims_readings": config["claims"]["readings"],
+        "critical_speed_readings": critical.get("readings", []),
     }
 
 
 def notebook_inputs(name):
+    """Every file the notebook reads. An `inputs:` entry containing `{reading}` is expanded over the claims
+    readings (the readings whose datasets the claims table already requires), `{critical_reading}` over the
+    readings of the critical-speed continuation."""
     spec = config["notebooks"][name]
-    files = list(spec.get("inputs", []))
+    expand_over = {
+        "reading": config["claims"]["readings"],
+        "critical_reading": (ONEDOF.get("critical_speed") or {}).get("readings", []),
+    }
+    files = []
+    for path in spec.get("inputs", []):
+        key = next((k for k in expand_over if "{" + k + "}" in path), None)
+        files += [path.format(**{key: r}) for r in expand_over[key]] if key else [path]
     for fig in spec.get("figures", []):
         files += figure_datasets(fig)
         files += [f"results/figures/{fig}/{r}.png" for r in ONEDOF["figures"][fig]["readings"]]
-    return files + ["results/claims/deviations.csv"]
+    for fig in spec.get("sweep_figures", []):
+        sw = ONEDOF["sweep_figures"][fig]
+        files += [sweep_dataset(sw["sweep"], r, d) for r in sw["readings"] for d in (False, True)]
+        files += [f"results/figures/{fig}/{r}.png" for r in sw["readings"]]
+    return list(dict.fromkeys(files + ["results/claims/deviations.csv"]))
 
 
 # -- sweeps and maps ----------------------------------------------------------------------------------
