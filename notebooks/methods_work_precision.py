@@ -85,7 +85,8 @@ for f in files:
         good = ok & (ds["state"].values <= level) & (ds["solver"].values != "exact")
         if good.any():
             i = np.flatnonzero(good)[np.argmin(ds["cpu_time"].values[good])]
-            print(f"  state error <= {level:g}: {ds['label'].values[i]}  ({ds['cpu_time'].values[i] * 1e3:.2f} ms)")
+            cpu_ms = ds["cpu_time"].values[i] * 1e3
+            print(f"  state error <= {level:g}: {ds['label'].values[i]}  ({cpu_ms:.2f} ms)")
         else:
             print(f"  state error <= {level:g}: only the exact solver")
 
@@ -98,4 +99,5 @@ fm = os.path.join(ROOT, "results", "methods", "failure_map.nc")
 with xr.open_dataset(fm) as ds:
     ds = ds.load()
 failure_map_figure(ds)
-print(ds["failure_kind"].to_pandas().T.to_string() if hasattr(ds["failure_kind"], "to_pandas") else ds["failure_kind"])
+kinds = ds["failure_kind"]
+print(kinds.to_pandas().T.to_string() if hasattr(kinds, "to_pandas") else kinds)

@@ -20,7 +20,7 @@
 #
 # | reading | friction law | σ |
 # |---|---|---|
-# | `consistent_caption` / `consistent_text` | friction drives the mass toward the belt velocity, μ = μ_s(1 − σ\|v_r\|) | 0.5 / 0.3 |
+# | `consistent_caption` / `consistent_text` | pulls toward the belt velocity: μ_s(1 − σ\|v_r\|) | 0.5 / 0.3 |
 # | `eq3_caption` / `eq3_text` | Eq. 3 exactly as printed: F = μ_s N (sgn(v_r) − σ v_r) | 0.5 / 0.3 |
 # | `eq4_caption` / `eq4_text` | Eq. 4 exactly as printed (σ V_b term lacks μ_s N) | 0.5 / 0.3 |
 #
@@ -36,7 +36,8 @@ from stickslip.io.netcdf import read_dataset
 from stickslip.plots import claims_frame, mark_reported, status_counts, styled_claims
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
-FIG2 = PARAMS.get("figures", {}).get("fig02", {"readings": ["consistent_caption", "consistent_text", "eq3_caption",
+FIG2 = PARAMS.get("figures", {}).get("fig02", {"readings": ["consistent_caption", "consistent_text",
+                                                            "eq3_caption",
                                                             "eq3_text", "eq4_caption", "eq4_text"],
                                                "methods": ["exact", "ode45"]})
 READINGS = FIG2["readings"]
@@ -116,7 +117,9 @@ display(styled_claims(claims))
 exact = data.get(("consistent_caption", "exact"))
 if exact is not None:
     display(Markdown(
-        f"Consistent reading, σ = 0.5: stick {float(exact.stick_time):.3f} s, slip {float(exact.slip_time):.3f} s, "
-        f"frequency {float(exact.frequency_peaks):.4f} Hz (spectrum {float(exact.frequency_spectrum):.4f} Hz), "
-        f"peak-to-peak {float(exact.amplitude_peak_to_peak):.3f} mm, max |v| {float(exact.max_speed):.3f} mm/s."
+        f"Consistent reading, σ = 0.5: stick {float(exact.stick_time):.3f} s, "
+        f"slip {float(exact.slip_time):.3f} s, frequency {float(exact.frequency_peaks):.4f} Hz "
+        f"(spectrum {float(exact.frequency_spectrum):.4f} Hz), "
+        f"peak-to-peak {float(exact.amplitude_peak_to_peak):.3f} mm, "
+        f"max |v| {float(exact.max_speed):.3f} mm/s."
     ))

@@ -42,8 +42,9 @@ for name, d in ds.items():
     ax[0].legend(fontsize=7)
     fig.suptitle(name)
     plt.show()
-    print({k: float(d[k]) for k in ("dominant_frequency", "horizontal_amplitude", "vertical_amplitude", "stick_fraction",
-                                     "slip_fraction", "separation_fraction", "stable_time_step", "increment_count_0p65s")})
+    print({k: float(d[k]) for k in ("dominant_frequency", "horizontal_amplitude", "vertical_amplitude",
+                                     "stick_fraction", "slip_fraction", "separation_fraction",
+                                     "stable_time_step", "increment_count_0p65s")})
 
 # %% [markdown]
 # ## Sweeps: contact angle (Section 12) and penalty stiffness (Section 11)
@@ -73,7 +74,8 @@ if (FE / "stability.nc").exists():
     st = xr.load_dataset(FE / "stability.nc")
     st.max_growth_rate.plot(x="friction_slope", y="contact_angle")
     plt.show()
-    print(st[["crosscheck_angle", "crosscheck_slope", "crosscheck_eigen_growth_rate", "crosscheck_transient_growth_rate"]].to_dataframe())
+    print(st[["crosscheck_angle", "crosscheck_slope", "crosscheck_eigen_growth_rate",
+              "crosscheck_transient_growth_rate"]].to_dataframe())
 
 # %% [markdown]
 # ## Claims: paper vs measured
@@ -93,6 +95,8 @@ for r in rows:
         m = measured(r)
         print(f"{r['id']:45s} paper={r['value']!s:>10} measured={m:.4g}  expected={r['expected']}")
     elif r["kind"] == "compare":
-        print(f"{r['id']:45s} {measured(r['lhs']):.4g} {r['relation']} {measured(r['rhs']):.4g}  expected={r['expected']}")
+        lhs, rhs = measured(r["lhs"]), measured(r["rhs"])
+        print(f"{r['id']:45s} {lhs:.4g} {r['relation']} {rhs:.4g}  expected={r['expected']}")
     else:
-        print(f"{r['id']:45s} trend of {r['variable']} along {r['coord']} (paper sign {r['sign']})  expected={r['expected']}")
+        print(f"{r['id']:45s} trend of {r['variable']} along {r['coord']} (paper sign {r['sign']})  "
+              f"expected={r['expected']}")

@@ -344,8 +344,9 @@ def mark_reported_point(ax, x, y, label=None, color="k"):
 def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
     """One panel per reported quantity: the measured value of each reading (coloured dot) against the paper's
     number (dotted line, grey band = the claim's tolerance when given). `quantities` is a list of dicts with
-    keys var, reported, label, unit and optionally tol_rel / tol_abs. A failed run is written out, not drawn;
-    a NaN (nothing to measure, e.g. no stick in a reading that never sticks) is written as 'n/a'."""
+    keys var, reported, label, unit and optionally tol_rel / tol_abs and ref_label (the reference line's
+    text). A failed run is written out, not drawn; a NaN (nothing to measure, e.g. no stick in a reading
+    that never sticks) is written as 'n/a'."""
     readings = list(datasets)
     colours = reading_colours(readings)
     n = len(quantities)
@@ -388,7 +389,7 @@ def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
             if tol:
                 ax.axvspan(rep - tol, rep + tol, color="0.85", zorder=0)
             ax.annotate(
-                f"paper: {rep:g}",
+                q.get("ref_label", f"paper: {rep:.4g}"),
                 (rep, 1.0),
                 xycoords=("data", "axes fraction"),
                 fontsize=8,
