@@ -487,7 +487,17 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
     for (ax_a, ax_b), reading in zip(panels, readings):
         for i, (method, ds) in enumerate(datasets[reading].items()):
             if run_failed(ds):
-                mark_failed(ax_a, f"{method} ({ds['solver_status'].attrs.get('message', '')})", row=i)
+                message = ds["solver_status"].attrs.get("message", "")
+                mark_failed(ax_a, f"{method}", row=2 * i)
+                ax_a.text(
+                    0.02,
+                    0.83 - 0.18 * i,
+                    message[:60],
+                    transform=ax_a.transAxes,
+                    color="red",
+                    fontsize=7,
+                    va="top",
+                )
                 continue
             style = _style(method)
             if kind == "timeseries":
@@ -527,7 +537,9 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
             ax.set_xlabel("time [s]")
         axes.flat[0].legend(fontsize=7, loc="upper right")
     else:
-        axes.flat[0].legend(fontsize=7)
+        with_lines = [ax for ax in axes.flat if ax.get_legend_handles_labels()[0]]
+        if with_lines:
+            with_lines[0].legend(fontsize=7)
     if title:
         fig.suptitle(title, fontsize=10)
     fig.tight_layout()
