@@ -202,6 +202,8 @@ def fe_scene_figure(ds, periods: int = 6):
     axes[-1, 0].set_xlabel("time [s]")
     axes[-1, 1].set_xlabel(f"time [s] (last {periods} periods of {f_dom:.4g} Hz)")
     fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
+    fig.tight_layout()
+    return fig
 
 
 def eq6_figure(ds):
