@@ -61,3 +61,16 @@ def test_snakemake_rejects_bad_config_before_running(tmp_path, patch, needle):
     assert proc.returncode != 0
     assert needle in proc.stdout + proc.stderr
     assert not (work / "results").exists()
+
+
+def test_a_budgeted_method_records_a_stall_as_a_failed_run(config):
+    import copy
+
+    cfg = copy.deepcopy(config)
+    cfg["onedof"]["methods"]["ode45"]["budget"] = {"max_rhs": 500}
+    spec = run_spec(cfg, "fig02", "consistent_caption", "ode45")
+    traj = spec.solver().solve(spec.model, spec.t_end, spec.t_eval)
+    assert not traj.ok and "budget" in traj.stats.message
+    cfg["onedof"]["methods"]["ode45"]["budget"] = {"max_rhs": 0}
+    with pytest.raises(ParameterError, match="onedof.methods.ode45.budget"):
+        run_spec(cfg, "fig02", "consistent_caption", "ode45")

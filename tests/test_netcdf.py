@@ -59,3 +59,4 @@ def test_interrupted_write_leaves_nothing(baseline_dataset, tmp_path, monkeypatc
 def test_missing_dataset_error_names_the_file(tmp_path):
     with pytest.raises(FileNotFoundError, match="nope.nc"):
         netcdf.read_dataset(tmp_path / "nope.nc")
+

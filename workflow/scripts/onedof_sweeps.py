@@ -11,7 +11,6 @@ import xarray as xr
 
 from stickslip.analysis.divergence import BoundedSolver
 from stickslip.analysis.sweep import (
-    ProgressLog,
     chunk_dataset,
     chunk_points,
     grid_size,
@@ -19,6 +18,7 @@ from stickslip.analysis.sweep import (
     run_points,
 )
 from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import step_callback
 from stickslip.io.scenes import sweep_spec
 from stickslip.model.equations import BeltModel
 
@@ -42,7 +42,7 @@ def sweep_dataset(spec, dense: bool) -> xr.Dataset:
         base.t_eval,
         base.transient,
         base.count_window,
-        progress=ProgressLog(logging.info),
+        progress=step_callback(f"sweep {spec.figure} ({len(points)} runs)", sink=logging.info),
     )
     ds = merge_chunks([axis], [chunk_dataset([axis], n, 0, results)])
     for m in (

@@ -10,7 +10,6 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -138,23 +137,6 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
                 {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"},
             )
     return out
-
-
-class ProgressLog:
-    """Calls ``emit(message)`` at most every ``every`` seconds with done/total, elapsed and remaining time."""
-
-    def __init__(self, emit: Callable[[str], None], every: float = 10.0):
-        self.emit, self.every = emit, every
-        self.start = self.last = time.monotonic()
-
-    def __call__(self, done: int, total: int) -> None:
-        now = time.monotonic()
-        if done < total and now - self.last < self.every:
-            return
-        self.last = now
-        elapsed = now - self.start
-        remaining = elapsed / done * (total - done) if done else float("nan")
-        self.emit(f"{done}/{total} points, {elapsed:.1f} s elapsed, about {remaining:.1f} s remaining")
 
 
 # --- Building sweeps from configuration (dense maps) -------------------------------------------------------

@@ -15,6 +15,7 @@ from ..model.equations import BeltModel
 from ..model.friction import VARIANTS
 from ..model.params import BeltParams, ParameterError
 from ..solvers import make_solver
+from ..solvers.budget import BudgetedSolver
 
 
 @dataclass(frozen=True)
@@ -37,8 +38,16 @@ class RunSpec:
         return BeltModel.build(self.params, self.variant)
 
     def solver(self):
+        """The configured method; with ``budget: {max_rhs: N}`` a stall becomes a failed run."""
         settings = dict(self.solver_settings)
-        return make_solver(settings.pop("solver"), **settings)
+        budget = settings.pop("budget", None)
+        solver = make_solver(settings.pop("solver"), **settings)
+        if budget is not None:
+            try:
+                solver = BudgetedSolver(solver, **budget)
+            except (TypeError, ValueError) as exc:
+                raise ParameterError(f"onedof.methods.{self.method}.budget: {exc}") from None
+        return solver
 
     @property
     def t_eval(self) -> np.ndarray:

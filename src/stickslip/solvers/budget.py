@@ -72,3 +72,29 @@ def run_with_budget(solver, model, t_end, t_eval, max_rhs: int = 2_000_000, max_
             method=getattr(solver, "name", type(solver).__name__),
             settings=dict(getattr(solver, "settings", {})),
         )
+
+
+class BudgetedSolver:
+    """A solver under a work budget: ``solve`` returns a failed trajectory instead of stalling.
+
+    Use a count of right-hand-side evaluations (deterministic) rather than CPU time where results must be
+    reproducible from machine to machine.
+    """
+
+    def __init__(self, inner, max_rhs: int, max_cpu: float = float("inf")):
+        if max_rhs < 1:
+            raise ValueError(f"budget.max_rhs: must be >= 1, got {max_rhs!r}")
+        self.inner, self.max_rhs, self.max_cpu = inner, int(max_rhs), float(max_cpu)
+
+    @property
+    def name(self):
+        return self.inner.name
+
+    @property
+    def settings(self):
+        return {**self.inner.settings, "budget_max_rhs": self.max_rhs, "budget_max_cpu": self.max_cpu}
+
+    def solve(self, model, t_end, t_eval=None):
+        if t_eval is None:
+            t_eval = np.linspace(0.0, t_end, 2001)
+        return run_with_budget(self.inner, model, t_end, t_eval, max_rhs=self.max_rhs, max_cpu=self.max_cpu)
