@@ -30,7 +30,7 @@ def test_all_targets_exist_and_second_run_does_nothing(small_run):
 @pytest.mark.pipeline
 def test_datasets_have_provenance(small_run):
     work, _ = small_run
-    paths = sorted((work / "results" / "onedof").rglob("*.nc"))
+    paths = sorted((work / "results" / "onedof" / "fig02").rglob("*.nc"))  # scene datasets (time series)
     assert paths
     with xr.open_dataset(paths[0]) as ds:
         assert ds.attrs["Conventions"].startswith("CF-")
