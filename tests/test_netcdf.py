@@ -60,3 +60,11 @@ def test_missing_dataset_error_names_the_file(tmp_path):
     with pytest.raises(FileNotFoundError, match="nope.nc"):
         netcdf.read_dataset(tmp_path / "nope.nc")
 
+
+def test_written_datasets_are_readable_like_any_new_file(baseline_dataset, tmp_path):
+    import os
+
+    path = netcdf.write_dataset(baseline_dataset, tmp_path / "p.nc", scene={}, interpretation="x", method={})
+    mask = os.umask(0)
+    os.umask(mask)
+    assert (path.stat().st_mode & 0o777) == (0o666 & ~mask)

@@ -26,6 +26,16 @@ REPORT_CAPTIONS = "results/report/captions.rst"
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
+def onedof_subconfig(reading=None, scene=None, method=None):
+    """The part of the config a 1-DOF job reads, passed as its params: editing a figure list, a notebook or
+    another reading then does not re-run it (Snakemake re-runs jobs whose params change)."""
+    sub = {k: v for k, v in ONEDOF.items() if k not in ("figures", "sweep_figures")}
+    for key, name in (("readings", reading), ("scenes", scene), ("methods", method)):
+        if name is not None:
+            sub[key] = {name: ONEDOF[key][name]}
+    return {"onedof": sub}
+
+
 def onedof_dataset(scene, reading, method):
     return f"results/onedof/{scene}/{reading}/{method}.nc"
 

@@ -15,7 +15,7 @@ rule simulate_onedof:
     conda:
         CONDA_ENV
     params:
-        config=lambda wc: config,
+        config=lambda wc: onedof_subconfig(wc.reading, wc.scene, wc.method),
     script:
         "../scripts/simulate_onedof.py"
 
@@ -79,7 +79,9 @@ rule friction_table:
         CONDA_ENV
     params:
         table=ONEDOF["friction_table"],
-        config=config,
+        config=onedof_subconfig(
+            ONEDOF["friction_table"]["reading"], ONEDOF["friction_table"]["scene"], ONEDOF["friction_table"]["method"]
+        ),
     script:
         "../scripts/friction_table.py"
 

@@ -24,7 +24,7 @@ rule eq6_curve:
     conda:
         CONDA_ENV
     params:
-        config=config,
+        config=onedof_subconfig(),
     script:
         "../scripts/eq6_curve.py"
 
@@ -42,7 +42,7 @@ rule onedof_sweeps:
     conda:
         CONDA_ENV
     params:
-        config=config,
+        config=lambda wc: onedof_subconfig(wc.reading),
     script:
         "../scripts/onedof_sweeps.py"
 
@@ -80,7 +80,7 @@ rule critical_speed:
     conda:
         CONDA_ENV
     params:
-        config=config,
+        config=lambda wc: onedof_subconfig(wc.reading),
     script:
         "../scripts/critical_speed.py"
 

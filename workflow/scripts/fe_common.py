@@ -3,49 +3,14 @@
 from __future__ import annotations
 
 import logging
-import os
-import subprocess
 import sys
-import tempfile
-from pathlib import Path
 
-import stickslip
+from stickslip.io.netcdf import write_dataset as shared_write_dataset
 
 
 def write_dataset(ds, path, *, scene: dict, interpretation: str, method: dict) -> None:
-    """Use the shared provenance writer when present; otherwise a minimal atomic fallback."""
-    try:
-        from stickslip.io.netcdf import write_dataset as shared
-    except ImportError:
-        shared = None
-    if shared is not None:
-        shared(ds, path, scene=scene, interpretation=interpretation, method=method)
-        return
-    import json
-
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    try:
-        rev = subprocess.run(
-            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=False
-        ).stdout.strip()
-    except OSError:
-        rev = "unknown"
-    ds = ds.copy()
-    ds.attrs.setdefault("Conventions", "CF-1.10")
-    ds.attrs["source"] = f"stickslip {stickslip.__version__}, git {rev or 'unknown'}"
-    ds.attrs["history"] = f"written by {' '.join(sys.argv[:1])} (fe_common fallback writer)"
-    ds.attrs["scene_parameters"] = json.dumps(scene, default=str)
-    ds.attrs["model_interpretation"] = interpretation
-    ds.attrs["method_settings"] = json.dumps(method, default=str)
-    fd, tmp = tempfile.mkstemp(suffix=".nc.tmp", dir=path.parent)
-    os.close(fd)
-    try:
-        ds.to_netcdf(tmp)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    """The shared provenance writer (atomic, CF attributes)."""
+    shared_write_dataset(ds, path, scene=scene, interpretation=interpretation, method=method)
 
 
 def track_calls(module, name: str, total: int, label: str, every: float = 10.0):

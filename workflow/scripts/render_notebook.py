@@ -20,6 +20,8 @@ import nbformat
 from nbclient import NotebookClient
 from nbconvert import HTMLExporter
 
+from stickslip.io.netcdf import publish
+
 
 def render(source: Path, target: Path, params: dict | None = None, timeout: int = 600) -> None:
     nb = jupytext.read(source)
@@ -38,7 +40,7 @@ def render(source: Path, target: Path, params: dict | None = None, timeout: int 
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
     with os.fdopen(fd, "w") as fh:
         fh.write(body)
-    os.replace(tmp, target)
+    publish(tmp, target)
     ipynb = target.with_suffix(".ipynb")
     nbformat.write(nb, ipynb)
 

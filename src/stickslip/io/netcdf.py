@@ -200,6 +200,17 @@ def is_machine_measurement(name: str) -> bool:
     return "cpu_" in name or name.endswith("_cpu") or name == "cpu"
 
 
+def publish(tmp: str | os.PathLike, path: str | os.PathLike) -> None:
+    """Give a finished temporary file the permissions of a normally created one, then rename it into place.
+
+    (mkstemp creates files readable by their owner only.)
+    """
+    mask = os.umask(0)
+    os.umask(mask)
+    os.chmod(tmp, 0o666 & ~mask)
+    os.replace(tmp, path)
+
+
 def write_dataset(
     ds: xr.Dataset,
     path: str | os.PathLike,
@@ -231,7 +242,7 @@ def write_dataset(
     os.close(fd)
     try:
         ds.to_netcdf(tmp, format="NETCDF4", engine="netcdf4", encoding=encoding)
-        os.replace(tmp, path)
+        publish(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
