@@ -95,3 +95,20 @@ def test_a_run_that_comes_to_rest_has_no_frequency():
     traj = _trajectory(t, x, np.gradient(x, t), np.full(t.shape, -1, np.int8))
     m = limit_cycle_metrics(traj, transient=10.0)
     assert np.isnan(m["frequency_peaks"].value) and np.isnan(m["frequency_spectrum"].value)
+
+
+def test_friction_along_a_solution_ignores_switching_samples():
+    from stickslip.analysis.extra_metrics import extra_metrics
+    from stickslip.analysis.friction_curve import friction_along_solution
+    from stickslip.model import PAPER_BASELINE, friction_law
+
+    law = friction_law(PAPER_BASELINE.with_(sigma=0.5), "consistent")
+    v = np.array([0.5, 0.5, 0.2, -0.3, 0.5])  # the second sample is slip-labelled but at v_r = 0
+    vb = np.full_like(v, 0.5)
+    phase = np.array([0, -1, -1, -1, 0], dtype=np.int8)
+    speed, mu = friction_along_solution(v, vb, phase, law, PAPER_BASELINE.normal_force)
+    np.testing.assert_allclose(speed, [0.3, 0.8])
+    np.testing.assert_allclose(mu, [0.5 * (1 - 0.5 * 0.3), 0.5 * (1 - 0.5 * 0.8)])
+    t = np.arange(5.0)
+    m = extra_metrics(t, np.zeros(5), v, vb, phase, law, PAPER_BASELINE.normal_force)
+    assert m["friction_min_slip"][0] == pytest.approx(0.5 * (1 - 0.5 * 0.8))

@@ -8,25 +8,29 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solvers.base import STICK
+from .friction_curve import friction_along_solution
 
 
 def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str, tuple[float, str, str]]:
     t, x, v, vb = (np.asarray(a, dtype=float) for a in (t, x, v, vb))
-    half = t <= 0.5 * t[-1]
-    slip = np.asarray(phase) != STICK
-    mu = np.abs(friction.force(v, vb)) / normal_force
+    # Halves of the run, or of the deceleration phase when the belt stops: comparing "before" with "after the
+    # belt has stopped" would make any decay claim true by construction.
+    stopped = vb <= 0.0
+    t_ref = float(t[np.argmax(stopped)]) if stopped.any() else float(t[-1])
+    half = t <= 0.5 * t_ref
+    late = ~half & (t <= t_ref)
+    _, mu_slip = friction_along_solution(v, vb, phase, friction, normal_force)
     with np.errstate(all="ignore"):
         return {
             "early_amplitude": (
                 float(np.ptp(x[half])),
                 "mm",
-                "peak-to-peak displacement, first half of the run",
+                "peak-to-peak displacement, first half of the run (of the deceleration if the belt stops)",
             ),
             "late_amplitude": (
-                float(np.ptp(x[~half])),
+                float(np.ptp(x[late])),
                 "mm",
-                "peak-to-peak displacement, second half of the run",
+                "peak-to-peak displacement, second half of the run (of the deceleration if the belt stops)",
             ),
             "early_velocity_amplitude": (
                 float(np.ptp(v[half])),
@@ -34,13 +38,13 @@ def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str
                 "peak-to-peak velocity, first half",
             ),
             "late_velocity_amplitude": (
-                float(np.ptp(v[~half])),
+                float(np.ptp(v[late])),
                 "mm s-1",
                 "peak-to-peak velocity, second half",
             ),
             "final_speed": (float(abs(v[-1])), "mm s-1", "|velocity| at the end of the run"),
             "friction_min_slip": (
-                float(np.min(mu[slip])) if slip.any() else np.nan,
+                float(np.min(mu_slip)) if mu_slip.size else np.nan,
                 "1",
                 "smallest |F|/N while slipping (Fig. 17 plateau level)",
             ),

@@ -9,9 +9,10 @@ from ..solvers.base import STICK
 
 
 def friction_along_solution(v, vb, phase, law: AffineFriction, normal_force: float):
-    """(|v_r|, |mu|) of every slip sample: the friction the law gives at that sample, divided by N."""
+    """(|v_r|, |mu|) of every slip sample with v_r != 0: the friction the law gives there, divided by N."""
     v, vb, phase = np.asarray(v), np.asarray(vb), np.asarray(phase)
-    slip = (phase != STICK) & np.isfinite(v)
+    # at v_r = 0 exactly (a switching sample) friction is set-valued: sgn(0) = 0 would report mu = 0 there
+    slip = (phase != STICK) & np.isfinite(v) & (v != vb)
     speed = np.abs(v[slip] - vb[slip])
     mu = np.abs(law.force(v[slip], vb[slip])) / normal_force
     return speed, mu
