@@ -61,7 +61,10 @@ out = xr.Dataset(
         ),
         "verdict": ("reading", np.array([r[4] for r in rows], dtype=object), {"long_name": "verdict"}),
     },
-    coords={"reading": ("reading", np.array(readings, dtype=object), {"long_name": "reading of the paper"})},
+    # an auxiliary (non-dimension) coordinate: CF wants dimension coordinates numeric and monotonic
+    coords={
+        "reading_name": ("reading", np.array(readings, dtype=object), {"long_name": "reading of the paper"})
+    },
 )
 write_dataset(
     out,

@@ -24,7 +24,7 @@ with open(snakemake.output.unreproduced, "w", newline="") as fh:
     w.writerows(unrep)
 ds = xr.Dataset(
     {
-        c: (
+        c.replace("-", "_"): (  # netCDF/CF names: letters, digits, underscores
             "reading",
             np.array([t[c] for t in table], dtype=float if c.startswith("reproduced_f") else np.int32),
             {
@@ -37,7 +37,8 @@ ds = xr.Dataset(
         for c in cols[1:]
     },
     coords={
-        "reading": (
+        # an auxiliary (non-dimension) coordinate: CF wants dimension coordinates numeric and monotonic
+        "reading_name": (
             "reading",
             np.array([t["reading"] for t in table], dtype=object),
             {"long_name": "reading of the paper's equations, best first"},
