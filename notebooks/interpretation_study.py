@@ -37,23 +37,17 @@ import pandas as pd
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.plots import STATUS_COLOUR, claims_frame, reading_colours, status_counts, styled_claims
+from stickslip.plots import (
+    STATUS_COLOUR,
+    claims_frame,
+    claims_readings,
+    reading_colours,
+    status_counts,
+    styled_claims,
+)
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
-READINGS = PARAMS.get(
-    "claims_readings",
-    [
-        "consistent_caption",
-        "consistent_text",
-        "eq3_caption",
-        "eq3_text",
-        "eq4_caption",
-        "eq4_text",
-        "plateau_caption",
-        "plateau_text",
-        "consistent_si",
-    ],
-)
+READINGS = claims_readings(PARAMS)
 CRIT_READINGS = PARAMS.get("critical_speed_readings") or READINGS
 ranking = pd.read_csv("results/claims/reading_ranking.csv")
 unreproduced = pd.read_csv("results/claims/unreproduced_claims.csv")

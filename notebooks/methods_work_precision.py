@@ -29,8 +29,11 @@ import numpy as np
 import xarray as xr
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
-CODE = next(d for d in (os.path.join(HERE, ".."), os.getcwd(), os.path.join(os.getcwd(), ".."))
-            if os.path.isdir(os.path.join(d, "workflow", "scripts")))
+CODE = next(
+    d
+    for d in (os.path.join(HERE, ".."), os.getcwd(), os.path.join(os.getcwd(), ".."))
+    if os.path.isdir(os.path.join(d, "workflow", "scripts"))
+)
 ROOT = os.getcwd() if os.path.isdir(os.path.join(os.getcwd(), "results")) else os.path.abspath(CODE)
 sys.path.insert(0, os.path.join(CODE, "workflow", "scripts"))
 from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
@@ -44,8 +47,17 @@ print("scenes:", [os.path.basename(f) for f in files])
 # measured in the same run.
 
 # %%
-COLS = ["label", "state", "period_error", "amplitude_error", "cpu_time", "rhs_evaluations",
-        "cpu_ratio_to_paper", "status", "failure_kind"]
+COLS = [
+    "label",
+    "state",
+    "period_error",
+    "amplitude_error",
+    "cpu_time",
+    "rhs_evaluations",
+    "cpu_ratio_to_paper",
+    "status",
+    "failure_kind",
+]
 
 
 def table(ds):
@@ -63,8 +75,10 @@ for f in files:
     with xr.open_dataset(f) as ds:
         ds = ds.load()
     name = os.path.basename(f).replace("_work_precision.nc", "")
-    print(f"\n### {name}: paper's method {ds.attrs['paper_method_cpu_time'] * 1e3:.1f} ms CPU, "
-          f"reference period {ds.attrs['reference_period']:.10g} s")
+    print(
+        f"\n### {name}: paper's method {ds.attrs['paper_method_cpu_time'] * 1e3:.1f} ms CPU, "
+        f"reference period {ds.attrs['reference_period']:.10g} s"
+    )
     print(table(ds))
     ex = ds["solver"].values == "exact"
     if ex.any():

@@ -36,10 +36,20 @@ from stickslip.io.netcdf import read_dataset
 from stickslip.plots import claims_frame, mark_reported, status_counts, styled_claims
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
-FIG2 = PARAMS.get("figures", {}).get("fig02", {"readings": ["consistent_caption", "consistent_text",
-                                                            "eq3_caption",
-                                                            "eq3_text", "eq4_caption", "eq4_text"],
-                                               "methods": ["exact", "ode45"]})
+FIG2 = PARAMS.get("figures", {}).get(
+    "fig02",
+    {
+        "readings": [
+            "consistent_caption",
+            "consistent_text",
+            "eq3_caption",
+            "eq3_text",
+            "eq4_caption",
+            "eq4_text",
+        ],
+        "methods": ["exact", "ode45"],
+    },
+)
 READINGS = FIG2["readings"]
 data = {(r, m): read_dataset(f"results/onedof/fig02/{r}/{m}.nc") for r in READINGS for m in FIG2["methods"]}
 STYLES = {"exact": dict(color="C0", lw=1.5), "ode45": dict(color="C3", lw=0.9, ls="--")}
@@ -116,10 +126,12 @@ display(styled_claims(claims))
 # %%
 exact = data.get(("consistent_caption", "exact"))
 if exact is not None:
-    display(Markdown(
-        f"Consistent reading, σ = 0.5: stick {float(exact.stick_time):.3f} s, "
-        f"slip {float(exact.slip_time):.3f} s, frequency {float(exact.frequency_peaks):.4f} Hz "
-        f"(spectrum {float(exact.frequency_spectrum):.4f} Hz), "
-        f"peak-to-peak {float(exact.amplitude_peak_to_peak):.3f} mm, "
-        f"max |v| {float(exact.max_speed):.3f} mm/s."
-    ))
+    display(
+        Markdown(
+            f"Consistent reading, σ = 0.5: stick {float(exact.stick_time):.3f} s, "
+            f"slip {float(exact.slip_time):.3f} s, frequency {float(exact.frequency_peaks):.4f} Hz "
+            f"(spectrum {float(exact.frequency_spectrum):.4f} Hz), "
+            f"peak-to-peak {float(exact.amplitude_peak_to_peak):.3f} mm, "
+            f"max |v| {float(exact.max_speed):.3f} mm/s."
+        )
+    )

@@ -34,6 +34,7 @@ from IPython.display import Markdown, display
 from stickslip.io.netcdf import read_dataset
 from stickslip.plots import (
     claims_frame,
+    claims_readings,
     eq6_figure,
     reading_colours,
     run_failed,
@@ -43,20 +44,7 @@ from stickslip.plots import (
 )
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
-READINGS = PARAMS.get(
-    "claims_readings",
-    [
-        "consistent_caption",
-        "consistent_text",
-        "eq3_caption",
-        "eq3_text",
-        "eq4_caption",
-        "eq4_text",
-        "plateau_caption",
-        "plateau_text",
-        "consistent_si",
-    ],
-)
+READINGS = claims_readings(PARAMS)
 eq6 = read_dataset("results/onedof/fig04/eq6.nc")
 fig02 = {r: read_dataset(f"results/onedof/fig02/{r}/exact.nc") for r in READINGS}
 belt = {r: read_dataset(f"results/onedof/sweeps/belt_speed_dense/{r}.nc") for r in READINGS}

@@ -38,6 +38,7 @@ from IPython.display import Markdown, display
 from stickslip.io.netcdf import read_dataset
 from stickslip.plots import (
     claims_frame,
+    claims_readings,
     mark_reported,
     reported_value,
     run_failed,
@@ -47,20 +48,7 @@ from stickslip.plots import (
 )
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
-READINGS = PARAMS.get(
-    "claims_readings",
-    [
-        "consistent_caption",
-        "consistent_text",
-        "eq3_caption",
-        "eq3_text",
-        "eq4_caption",
-        "eq4_text",
-        "plateau_caption",
-        "plateau_text",
-        "consistent_si",
-    ],
-)
+READINGS = claims_readings(PARAMS)
 table = read_dataset("results/onedof/friction_mu_vr.nc")
 fig02 = {r: read_dataset(f"results/onedof/fig02/{r}/exact.nc") for r in READINGS}
 claims = claims_frame("results/claims/deviations.csv", sections=["7"])

@@ -21,8 +21,14 @@ import xarray as xr
 import yaml
 
 FE = Path("results/fe")
-SCENES = ["section9_kinematic_0p5mm_s", "section9_kinematic_15p2rpm", "section10_fixed_normal_0p5mm_s",
-          "section11_penalty_15p2rpm", "section11_penalty_0p5mm_s", "section12_angle30_15p2rpm"]
+SCENES = [
+    "section9_kinematic_0p5mm_s",
+    "section9_kinematic_15p2rpm",
+    "section10_fixed_normal_0p5mm_s",
+    "section11_penalty_15p2rpm",
+    "section11_penalty_0p5mm_s",
+    "section12_angle30_15p2rpm",
+]
 ds = {s: xr.load_dataset(FE / f"{s}.nc") for s in SCENES if (FE / f"{s}.nc").exists()}
 print(next(iter(ds.values())).attrs.get("model_interpretation", ""))
 
@@ -42,9 +48,21 @@ for name, d in ds.items():
     ax[0].legend(fontsize=7)
     fig.suptitle(name)
     plt.show()
-    print({k: float(d[k]) for k in ("dominant_frequency", "horizontal_amplitude", "vertical_amplitude",
-                                     "stick_fraction", "slip_fraction", "separation_fraction",
-                                     "stable_time_step", "increment_count_0p65s")})
+    print(
+        {
+            k: float(d[k])
+            for k in (
+                "dominant_frequency",
+                "horizontal_amplitude",
+                "vertical_amplitude",
+                "stick_fraction",
+                "slip_fraction",
+                "separation_fraction",
+                "stable_time_step",
+                "increment_count_0p65s",
+            )
+        }
+    )
 
 # %% [markdown]
 # ## Sweeps: contact angle (Section 12) and penalty stiffness (Section 11)
@@ -74,8 +92,16 @@ if (FE / "stability.nc").exists():
     st = xr.load_dataset(FE / "stability.nc")
     st.max_growth_rate.plot(x="friction_slope", y="contact_angle")
     plt.show()
-    print(st[["crosscheck_angle", "crosscheck_slope", "crosscheck_eigen_growth_rate",
-              "crosscheck_transient_growth_rate"]].to_dataframe())
+    print(
+        st[
+            [
+                "crosscheck_angle",
+                "crosscheck_slope",
+                "crosscheck_eigen_growth_rate",
+                "crosscheck_transient_growth_rate",
+            ]
+        ].to_dataframe()
+    )
 
 # %% [markdown]
 # ## Claims: paper vs measured
@@ -98,5 +124,7 @@ for r in rows:
         lhs, rhs = measured(r["lhs"]), measured(r["rhs"])
         print(f"{r['id']:45s} {lhs:.4g} {r['relation']} {rhs:.4g}  expected={r['expected']}")
     else:
-        print(f"{r['id']:45s} trend of {r['variable']} along {r['coord']} (paper sign {r['sign']})  "
-              f"expected={r['expected']}")
+        print(
+            f"{r['id']:45s} trend of {r['variable']} along {r['coord']} (paper sign {r['sign']})  "
+            f"expected={r['expected']}"
+        )

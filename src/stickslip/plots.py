@@ -11,6 +11,16 @@ FAILED_TEXT = "failed – not a result"
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
 
 
+def claims_readings(params: dict, config_path: str = "config/config.yaml") -> list[str]:
+    """Readings a notebook shows: those the pipeline injected, else the config's claims readings."""
+    if params.get("claims_readings"):
+        return list(params["claims_readings"])
+    import yaml
+
+    with open(config_path) as fh:
+        return list(yaml.safe_load(fh)["claims"]["readings"])
+
+
 def _style(method):
     return METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
 
