@@ -196,7 +196,8 @@ def fe_scene_figure(ds, periods: int = 6):
             row[0].plot(t, ds[name].values, lw=0.5, label=f"{name} [{units}]")
             row[1].plot(t[zoom], ds[name].values[zoom], lw=0.9, label=name)
         row[0].set_ylabel(label, fontsize=8)
-        row[0].legend(fontsize=7, loc="upper right")
+        if row[0].get_legend_handles_labels()[0]:
+            row[0].legend(fontsize=7, loc="upper right")
     if "contact_state" in ds:
         meanings = ds["contact_state"].attrs.get("flag_meanings", "")
         axes[-1, 0].set_title(f"flags: {meanings}", fontsize=8)

@@ -6,9 +6,9 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
-from stickslip.io.dense_map import dense_map
-
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
+
+from stickslip.io.dense_map import dense_map  # noqa: E402
 
 validate(config, "../schemas/config.schema.yaml")
 
@@ -133,7 +133,7 @@ def notebook_inputs(name):
     }
     files = []
     for path in spec.get("inputs", []):
-        key = next((k for k in expand_over if "{" + k + "}" in path), None)
+        key = next((k for k in expand_over if f"{{{k}}}" in path), None)
         files += [path.format(**{key: r}) for r in expand_over[key]] if key else [path]
     for fig in spec.get("figures", []):
         files += figure_datasets(fig)

@@ -80,7 +80,9 @@ rule friction_table:
     params:
         table=ONEDOF["friction_table"],
         config=onedof_subconfig(
-            ONEDOF["friction_table"]["reading"], ONEDOF["friction_table"]["scene"], ONEDOF["friction_table"]["method"]
+            ONEDOF["friction_table"]["reading"],
+            ONEDOF["friction_table"]["scene"],
+            ONEDOF["friction_table"]["method"],
         ),
     script:
         "../scripts/friction_table.py"
