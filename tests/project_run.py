@@ -19,8 +19,9 @@ def copy_project(dest: Path) -> Path:
     return dest
 
 
-def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
-    cmd = [
+def snakemake_command(workdir: Path, *args) -> list[str]:
+    """`snakemake -j2` on the project copy in ``workdir`` with this interpreter."""
+    return [
         sys.executable,
         "-m",
         "snakemake",
@@ -31,6 +32,10 @@ def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
         str(workdir / "Snakefile"),
         *args,
     ]
+
+
+def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
+    cmd = snakemake_command(workdir, *args)
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     if check and proc.returncode != 0:
         raise AssertionError(
@@ -47,17 +52,7 @@ def small_config_args(workdir: Path, *extra: Path) -> list[str]:
 
 def start_snakemake(workdir: Path, *args, log: Path):
     """Snakemake in its own process group (so a test can kill it and every job it started)."""
-    cmd = [
-        sys.executable,
-        "-m",
-        "snakemake",
-        "-j2",
-        "--directory",
-        str(workdir),
-        "--snakefile",
-        str(workdir / "Snakefile"),
-        *args,
-    ]
+    cmd = snakemake_command(workdir, *args)
     fh = open(log, "w")
     return subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, start_new_session=True)
 
