@@ -49,21 +49,12 @@ def pipeline_config(extra: list[Path]) -> dict:
 
 def floor_cost(dm, n: int = 60) -> float:
     """Seconds per point of run_points alone, over n points spread across the grid."""
-    from stickslip.analysis.sweep import chunk_points, run_points
+    from stickslip.analysis.sweep import chunk_points
 
     every = max(1, dm.points // n)
     points = [p for i in range(0, dm.points, every) for p in chunk_points(dm.axes, 1, i)][:n]
     start = time.process_time()
-    run_points(
-        dm.spec.params,
-        dm.spec.variant,
-        points,
-        dm.spec.solver(),
-        dm.spec.t_end,
-        dm.spec.t_eval,
-        dm.spec.transient,
-        dm.spec.count_window,
-    )
+    dm.run(points)
     return (time.process_time() - start) / len(points)
 
 

@@ -37,16 +37,7 @@ def small_config(**changes):
 def build(dm, chunk_size):
     parts = []
     for c in range(-(-dm.points // chunk_size)):
-        res = run_points(
-            dm.spec.params,
-            dm.spec.variant,
-            chunk_points(dm.axes, chunk_size, c),
-            dm.spec.solver(),
-            dm.spec.t_end,
-            dm.spec.t_eval,
-            dm.spec.transient,
-            dm.spec.count_window,
-        )
+        res = dm.run(chunk_points(dm.axes, chunk_size, c))
         parts.append(chunk_dataset(dm.axes, chunk_size, c, res))
     return merge_chunks(dm.axes, align_chunks(parts))
 

@@ -5,7 +5,7 @@ import time
 
 from dense_map_common import dense_map, log_to
 
-from stickslip.analysis.sweep import chunk_dataset, chunk_points, run_points
+from stickslip.analysis.sweep import chunk_dataset, chunk_points
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import step_callback
 
@@ -15,15 +15,8 @@ dm = dense_map(snakemake.config, name)  # noqa: F821
 points = chunk_points(dm.axes, dm.chunk_size, chunk)
 logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chunks, len(points), dm.points)
 start = time.perf_counter()
-results = run_points(
-    dm.spec.params,
-    dm.spec.variant,
+results = dm.run(
     points,
-    dm.spec.solver(),
-    dm.spec.t_end,
-    dm.spec.t_eval,
-    dm.spec.transient,
-    dm.spec.count_window,
     progress=step_callback(f"map {name} chunk {chunk}", every=5.0, sink=logging.info),
 )
 ds = chunk_dataset(dm.axes, dm.chunk_size, chunk, results)

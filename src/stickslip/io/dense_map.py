@@ -9,7 +9,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from ..analysis.sweep import SweepAxis, axes_from_config, check_axes, check_chunking, grid_size
+from ..analysis.sweep import SweepAxis, axes_from_config, check_axes, check_chunking, grid_size, run_points
 from ..model.params import ParameterError
 from .scenes import RunSpec, run_spec
 
@@ -31,6 +31,21 @@ class DenseMap:
     @property
     def points(self) -> int:
         return grid_size(self.axes)
+
+    def run(self, points: list[dict], progress=None) -> dict:
+        """Metric arrays of the given grid points with this map's base run (run_points)."""
+        s = self.spec
+        return run_points(
+            s.params,
+            s.variant,
+            points,
+            s.solver(),
+            s.t_end,
+            s.t_eval,
+            s.transient,
+            s.count_window,
+            progress=progress,
+        )
 
     def method_attrs(self) -> dict:
         return {
