@@ -126,6 +126,121 @@ class ExplicitResult:
         return {k: v / tot for k, v in self.step_counts.items()}
 
 
+@dataclass
+class _Prepared:
+    dt: float
+    dt_crit: float
+    n_steps: int
+    every: int
+    n_out: int
+    G: np.ndarray
+    af: np.ndarray
+    Mcn: np.ndarray
+    Mct: np.ndarray
+    Wnn: float
+    Wnt: float
+    Wtt: float
+    c1: float
+    c2: float
+    u: np.ndarray
+    v: np.ndarray
+    q_stat: np.ndarray
+    N_stat: float
+
+
+def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0, alpha, beta):
+    if initial_state not in ("static", "drop", "undeformed"):
+        raise ValueError(f"initial_state: must be 'static' or 'drop', got {initial_state!r}")
+    if alpha < 0 or beta < 0:
+        raise ValueError("mass_damping: Rayleigh damping coefficients must be >= 0")
+    dt_crit = stable_time_step(system, law)
+    if beta > 0:  # lagged stiffness damping: dt_crit = 2/w (sqrt(1+xi^2) - xi), xi = beta w / 2
+        w = 2.0 / dt_crit
+        xi = 0.5 * beta * w
+        dt_crit = 2.0 / w * (math.sqrt(1.0 + xi * xi) - xi)
+    if dt is None:
+        dt = safety_factor * dt_crit
+    n_steps = int(math.ceil(duration / dt - 1e-9))
+    every = max(1, int(round((output_interval or dt) / dt)))
+    M, K, f = system.M, system.K, system.f
+    if np.allclose(M, np.diag(np.diag(M))):
+        Minv = np.diag(1.0 / np.diag(M))
+    else:
+        Minv = np.linalg.inv(M)
+    cn, ct = system.c_n, system.c_t
+    Mcn, Mct = Minv @ cn, Minv @ ct
+    q_stat, N_stat = static_state(system, law)
+    if q0 is not None:
+        u = np.array(q0, float)
+    elif initial_state == "static":
+        u = q_stat.copy()
+    else:
+        u = np.zeros(system.n)
+    v = np.zeros(system.n) if v0 is None else np.array(v0, float)
+    return _Prepared(
+        dt=dt,
+        dt_crit=dt_crit,
+        n_steps=n_steps,
+        every=every,
+        n_out=n_steps // every + 1,
+        G=dt * Minv @ K,
+        af=dt * Minv @ f,
+        Mcn=Mcn,
+        Mct=Mct,
+        Wnn=float(cn @ Mcn),
+        Wnt=float(cn @ Mct),
+        Wtt=float(ct @ Mct),
+        c1=(1 - 0.5 * alpha * dt) / (1 + 0.5 * alpha * dt),
+        c2=1.0 / (1 + 0.5 * alpha * dt),
+        u=u,
+        v=v,
+        q_stat=q_stat,
+        N_stat=N_stat,
+    )
+
+
+def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitResult:
+    res = ExplicitResult(
+        t=out[0, :m].copy(),
+        x=out[1, :m].copy(),
+        y=out[2, :m].copy(),
+        vx=out[3, :m].copy(),
+        vy=out[4, :m].copy(),
+        normal_force=out[5, :m].copy(),
+        friction_force=out[6, :m].copy(),
+        slip_velocity=out[7, :m].copy(),
+        state=st[:m].copy(),
+        dt=pr.dt,
+        dt_crit=pr.dt_crit,
+        n_steps=n_done,
+        step_counts={"separation": int(counts[0]), "stick": int(counts[1]), "slip": int(counts[2])},
+        cpu_time=cpu,
+        static_normal_force=pr.N_stat,
+        q_static=pr.q_stat,
+        q_samples=None if qs is None else qs[:m],
+        v_samples=None if vs is None else vs[:m],
+    )
+    res.extra["diverged"] = bool(diverged)
+    return res
+
+
+def _record0(pr, system, law, out, st, qs, vs):
+    u, v = pr.u, pr.v
+    out[:, 0] = (
+        0.0,
+        system.c_x @ u,
+        system.c_y @ u,
+        system.c_x @ v,
+        system.c_y @ v,
+        pr.N_stat,
+        0.0,
+        system.c_t @ v - law.disc_speed,
+    )
+    st[0] = STICK if pr.N_stat > 0 else SEPARATED
+    if qs is not None:
+        qs[0], vs[0] = u, v
+
+
 def integrate(
     system: System,
     law: ContactLaw,
@@ -138,87 +253,154 @@ def integrate(
     q0: np.ndarray | None = None,
     v0: np.ndarray | None = None,
     mass_damping: float = 0.0,
+    stiffness_damping: float = 0.0,
+    record_state: bool = False,
+    blowup: float = 1e6,
+    progress=None,
+    backend: str = "compiled",
+    chunk: int = 200_000,
+) -> ExplicitResult:
+    """Integrate ``duration`` seconds. ``dt`` defaults to safety_factor * dt_crit.
+
+    ``initial_state``: ``static`` (gravity equilibrium in contact) or ``drop`` (alias ``undeformed``:
+    undeformed, at rest, gravity applied at t = 0, as an ABAQUS/Explicit step starts).
+    ``mass_damping`` alpha [s-1] and ``stiffness_damping`` beta [s] are Rayleigh coefficients.
+    ``backend``: ``compiled`` (numba kernels of :mod:`stickslip.fe.kernel`) or ``python`` (the reference
+    loop, same algorithm step for step). ``progress(done, total)``, if given, is called between chunks of
+    ``chunk`` steps (compiled) or every 10 000 steps (python).
+
+    Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
+    """
+    if backend == "python":
+        return integrate_python(
+            system,
+            law,
+            duration,
+            dt=dt,
+            safety_factor=safety_factor,
+            output_interval=output_interval,
+            initial_state=initial_state,
+            q0=q0,
+            v0=v0,
+            mass_damping=mass_damping,
+            stiffness_damping=stiffness_damping,
+            record_state=record_state,
+            blowup=blowup,
+            progress=progress,
+        )
+    if backend != "compiled":
+        raise ValueError(f"backend: must be 'compiled' or 'python', got {backend!r}")
+    import scipy.sparse as sps
+
+    from . import kernel
+
+    pr = _prepare(
+        system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
+        mass_damping, stiffness_damping,
+    )  # fmt: skip
+    G = sps.csr_matrix(pr.G)
+    G.eliminate_zeros()
+    indptr = G.indptr.astype(np.int64)
+    indices = G.indices.astype(np.int64)
+    data = G.data.astype(np.float64)
+    out = np.zeros((8, pr.n_out))
+    st = np.zeros(pr.n_out, dtype=np.int8)
+    qs = np.zeros((pr.n_out, system.n)) if record_state else np.zeros((1, 1))
+    vs = np.zeros((pr.n_out, system.n)) if record_state else np.zeros((1, 1))
+    _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None)
+    counts = np.zeros(3, dtype=np.int64)
+    fs = np.asarray(law.friction.speeds, float)
+    fm = np.asarray(law.friction.mu, float)
+    u, v = pr.u.copy(), pr.v.copy()
+    vecs = (system.c_n, system.c_t, system.c_x, system.c_y)
+    cn, ct, cx, cy = (np.ascontiguousarray(a, dtype=float) for a in vecs)
+    beta = float(stiffness_damping)
+    ci = np.flatnonzero((cn != 0) | (ct != 0)).astype(np.int64)  # contact vectors compressed on their DOFs
+    mi = np.flatnonzero((pr.Mcn != 0) | (pr.Mct != 0)).astype(np.int64)
+    common = (
+        indptr, indices, data, pr.af, pr.c1, pr.c2, beta,
+        ci, cn[ci], ct[ci], cx, cy, mi, pr.Mcn[mi], pr.Mct[mi],
+    )  # fmt: skip
+    if law.method == "kinematic":
+        fn = kernel.run_kinematic
+        args = (pr.Wnn, pr.Wnt, pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.gap0)
+    elif law.method == "penalty":
+        fn = kernel.run_penalty
+        args = (pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.gap0, law.penalty_stiffness)
+    elif law.method == "fixed_normal":
+        fn = kernel.run_fixed_normal
+        args = (pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.fixed_normal_force)
+    else:
+        raise ValueError(f"method: unknown contact method {law.method!r}")
+    j, n_done, diverged = 1, 0, False
+    t0 = time.process_time()
+    n0 = 1
+    while n0 <= pr.n_steps:
+        n1 = min(pr.n_steps, n0 + chunk - 1)
+        j, n_done, diverged, _ = fn(
+            n0, n1, pr.every, j, u, v, *common, *args, pr.dt, blowup, out, st, counts, record_state, qs, vs
+        )
+        if progress is not None:
+            progress(n_done, pr.n_steps)
+        if diverged:
+            break
+        n0 = n1 + 1
+    cpu = time.process_time() - t0
+    if not record_state:
+        qs = vs = None
+    return _result(pr, out, st, j, n_done, counts, cpu, qs, vs, diverged)
+
+
+def integrate_python(
+    system: System,
+    law: ContactLaw,
+    duration: float,
+    *,
+    dt: float | None = None,
+    safety_factor: float = 0.9,
+    output_interval: float | None = None,
+    initial_state: str = "static",
+    q0: np.ndarray | None = None,
+    v0: np.ndarray | None = None,
+    mass_damping: float = 0.0,
+    stiffness_damping: float = 0.0,
     record_state: bool = False,
     blowup: float = 1e6,
     progress=None,
 ) -> ExplicitResult:
-    """Integrate ``duration`` seconds. ``dt`` defaults to safety_factor * 2/omega_max.
-
-    ``progress(done, total)``, if given, is called every 10 000 steps with the step count.
-
-    Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
-    """
-    dt_crit = stable_time_step(system, law)
-    if dt is None:
-        dt = safety_factor * dt_crit
-    n_steps = int(math.ceil(duration / dt - 1e-9))
-    every = max(1, int(round((output_interval or dt) / dt)))
-    n_out = n_steps // every + 1
-
-    M, K, f = system.M, system.K, system.f
-    Minv = np.linalg.inv(M)
-    if np.allclose(M, np.diag(np.diag(M))):
-        Minv = np.diag(1.0 / np.diag(M))
-    G = dt * Minv @ K
-    af = dt * Minv @ f
-    cn, ct, cx, cy = system.c_n, system.c_t, system.c_x, system.c_y
-    Mcn, Mct = Minv @ cn, Minv @ ct
-    Wnn, Wnt, Wtt = float(cn @ Mcn), float(cn @ Mct), float(ct @ Mct)
+    """Reference per-step Python loop of :func:`integrate` (slow; kept to test the compiled kernels)."""
+    pr = _prepare(
+        system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
+        mass_damping, stiffness_damping,
+    )  # fmt: skip
+    dt, n_steps, every, n_out = pr.dt, pr.n_steps, pr.every, pr.n_out
+    G, af, Mcn, Mct = pr.G, pr.af, pr.Mcn, pr.Mct
+    Wnn, Wnt, Wtt = pr.Wnn, pr.Wnt, pr.Wtt
     det = Wnn * Wtt - Wnt * Wnt
+    c1, c2, beta = pr.c1, pr.c2, stiffness_damping
+    cn, ct, cx, cy = system.c_n, system.c_t, system.c_x, system.c_y
     mu_s = law.friction.static
     mu_fn = law.friction
     V = law.disc_speed
     g0 = law.gap0
     kp = law.penalty_stiffness
-    method = law.method
-    kin, pen = method == "kinematic", method == "penalty"
-    damp = mass_damping > 0
-    c1 = (1 - 0.5 * mass_damping * dt) / (1 + 0.5 * mass_damping * dt)
-    c2 = 1.0 / (1 + 0.5 * mass_damping * dt)
-
-    q_stat, N_stat = static_state(system, law)
-    if q0 is not None:
-        u = np.array(q0, float)
-    elif initial_state == "static":
-        u = q_stat.copy()
-    else:
-        u = np.zeros(system.n)
-    v = np.zeros(system.n) if v0 is None else np.array(v0, float)
-
-    out = {k: np.zeros(n_out) for k in ("t", "x", "y", "vx", "vy", "N", "F", "vr")}
+    kin, pen = law.method == "kinematic", law.method == "penalty"
+    u, v = pr.u.copy(), pr.v.copy()
+    out = np.zeros((8, n_out))
     st = np.zeros(n_out, dtype=np.int8)
     qs = np.zeros((n_out, system.n)) if record_state else None
     vs = np.zeros((n_out, system.n)) if record_state else None
+    _record0(pr, system, law, out, st, qs, vs)
     counts = [0, 0, 0]
-    Pn = Pt = 0.0
     state = STICK
-    j = 0
-    diverged = False
-
-    def record(j, time_, state_, Pn_, Pt_):
-        out["t"][j] = time_
-        out["x"][j] = cx @ u
-        out["y"][j] = cy @ u
-        out["vx"][j] = cx @ v
-        out["vy"][j] = cy @ v
-        out["N"][j] = Pn_ / dt
-        out["F"][j] = Pt_ / dt
-        out["vr"][j] = ct @ v - V
-        st[j] = state_
-        if record_state:
-            qs[j] = u
-            vs[j] = v
-
-    record(0, 0.0, STICK if N_stat > 0 else SEPARATED, N_stat * dt, 0.0)
     j = 1
+    n = 0
+    diverged = False
     t0 = time.process_time()
     for n in range(1, n_steps + 1):
         if progress is not None and n % 10_000 == 0:
             progress(n, n_steps)
-        if damp:
-            v = c1 * v + c2 * (af - G @ u)
-        else:
-            v = v + af - G @ u
+        v = c1 * v + c2 * (af - G @ (u + beta * v))
         Pn = Pt = 0.0
         if kin:
             gtrial = g0 + cn @ u + dt * (cn @ v)
@@ -265,32 +447,13 @@ def integrate(
         counts[state] += 1
         if n % every == 0:
             if j < n_out:
-                record(j, n * dt, state, Pn, Pt)
+                out[:, j] = (n * dt, cx @ u, cy @ u, cx @ v, cy @ v, Pn / dt, Pt / dt, ct @ v - V)
+                st[j] = state
+                if record_state:
+                    qs[j], vs[j] = u, v
                 j += 1
             if not abs(u).max() < blowup:
                 diverged = True
                 break
     cpu = time.process_time() - t0
-    m = j
-    res = ExplicitResult(
-        t=out["t"][:m],
-        x=out["x"][:m],
-        y=out["y"][:m],
-        vx=out["vx"][:m],
-        vy=out["vy"][:m],
-        normal_force=out["N"][:m],
-        friction_force=out["F"][:m],
-        slip_velocity=out["vr"][:m],
-        state=st[:m],
-        dt=dt,
-        dt_crit=dt_crit,
-        n_steps=n,
-        step_counts={"separation": counts[0], "stick": counts[1], "slip": counts[2]},
-        cpu_time=cpu,
-        static_normal_force=N_stat,
-        q_static=q_stat,
-        q_samples=None if qs is None else qs[:m],
-        v_samples=None if vs is None else vs[:m],
-    )
-    res.extra["diverged"] = diverged
-    return res
+    return _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
