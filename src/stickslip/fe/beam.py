@@ -1,4 +1,5 @@
-"""2-D frame (beam-column) elements: axial bar + Euler-Bernoulli bending, 3 DOF per node (u, v, theta).
+"""2-D frame (beam-column) elements: axial bar + Rayleigh bending (Euler-Bernoulli stiffness, rotary inertia
+of the cross-sections switchable), 3 DOF per node (u, v, theta).
 
 Small pure functions in the scikit-fem spirit: element matrices are built batched for all elements, then
 scattered into global matrices with one sparse COO assembly (no Python loop over elements).
@@ -41,16 +42,21 @@ def element_stiffness(EA: float, EI: float, le: np.ndarray) -> np.ndarray:
     return k
 
 
-def element_mass(rhoA: float, le: np.ndarray, kind: str = "lumped") -> np.ndarray:
+def element_mass(rhoA: float, le: np.ndarray, kind: str = "lumped", rhoI: float = 0.0) -> np.ndarray:
     """(n_el, 6, 6) element mass. ``consistent``: cubic Hermite + linear axial; ``lumped``: HRZ
-    diagonal (translations m/2, rotations m l^2/78), the usual choice of explicit codes."""
+    diagonal (translations m/2, rotations m l^2/78), the usual choice of explicit codes.
+
+    ``rhoI`` [t mm]: rotary inertia of the cross-sections (Rayleigh beam). Consistent: the Hermite
+    rotary-inertia matrix rho I/(30 l) [36, 3l, -36, 3l; ...]; lumped: each node gets the rotary inertia of
+    its half element, rho I l/2. Without it the HRZ rotational mass m l^2/78 vanishes as l^3 under
+    refinement, and so does the tangential inertia of a point on the beam face (offset h/2)."""
     le = np.asarray(le, float)
     m = rhoA * le
     out = np.zeros((le.size, 6, 6))
     if kind == "lumped":
         for d in (0, 1, 3, 4):
             out[:, d, d] = m / 2.0
-        out[:, 2, 2] = out[:, 5, 5] = m * le**2 / 78.0
+        out[:, 2, 2] = out[:, 5, 5] = m * le**2 / 78.0 + rhoI * le / 2.0
         return out
     if kind != "consistent":
         raise ValueError(f"mass: must be 'lumped' or 'consistent', got {kind!r}")
@@ -59,9 +65,11 @@ def element_mass(rhoA: float, le: np.ndarray, kind: str = "lumped") -> np.ndarra
     idx = [1, 2, 4, 5]
     mb = np.array([[156, 22, 54, -13], [22, 4, 13, -3], [54, 13, 156, -22], [-13, -3, -22, 4]], float)
     p = np.array([[0, 1, 0, 1], [1, 2, 1, 2], [0, 1, 0, 1], [1, 2, 1, 2]])
+    mr = np.array([[36, 3, -36, 3], [3, 4, -3, -1], [-36, -3, 36, -3], [3, -1, -3, 4]], float)
     for i, gi in enumerate(idx):
         for j, gj in enumerate(idx):
-            out[:, gi, gj] = m / 420.0 * mb[i, j] * le ** p[i, j]
+            lp = le ** p[i, j]
+            out[:, gi, gj] = m / 420.0 * mb[i, j] * lp + rhoI / (30.0 * le) * mr[i, j] * lp
     return out
 
 
@@ -124,7 +132,8 @@ def assemble_beam(p: BeamParams, constrain_transverse: bool = False) -> BeamMode
     le = np.diff(node_coordinates(p.length, n_el))
     dofs = element_dofs(n_el)
     K = assemble_matrix(element_stiffness(p.E * p.area, p.E * p.inertia, le), dofs, n_dof)
-    M = assemble_matrix(element_mass(p.rho * p.area, le, p.mass), dofs, n_dof)
+    rhoI = p.rho * p.inertia if p.rotary_inertia else 0.0
+    M = assemble_matrix(element_mass(p.rho * p.area, le, p.mass, rhoI), dofs, n_dof)
     f = assemble_vector(element_gravity(-p.rho * p.area * p.g, le), dofs, n_dof)
     fixed = {0, 1, 2}
     if constrain_transverse:

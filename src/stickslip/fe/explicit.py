@@ -121,9 +121,12 @@ class ExplicitResult:
     v_samples: np.ndarray | None = None
     extra: dict = field(default_factory=dict)
 
-    def fractions(self) -> dict:
-        tot = max(sum(self.step_counts.values()), 1)
-        return {k: v / tot for k, v in self.step_counts.items()}
+    def fractions(self, window: str = "all") -> dict:
+        """Fractions of increments per contact state, over the whole run or (``second_half``) over the
+        increments after half the duration (the window the amplitude metrics use)."""
+        c = self.step_counts if window == "all" else self.extra.get("second_half_counts", self.step_counts)
+        tot = max(sum(c.values()), 1)
+        return {k: v / tot for k, v in c.items()}
 
 
 @dataclass
@@ -199,6 +202,10 @@ def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_
     )
 
 
+def _named_counts(c) -> dict:
+    return {"separation": int(c[0]), "stick": int(c[1]), "slip": int(c[2])}
+
+
 def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitResult:
     res = ExplicitResult(
         t=out[0, :m].copy(),
@@ -213,7 +220,7 @@ def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitRe
         dt=pr.dt,
         dt_crit=pr.dt_crit,
         n_steps=n_done,
-        step_counts={"separation": int(counts[0]), "stick": int(counts[1]), "slip": int(counts[2])},
+        step_counts=_named_counts(counts),
         cpu_time=cpu,
         static_normal_force=pr.N_stat,
         q_static=pr.q_stat,
@@ -333,13 +340,19 @@ def integrate(
     else:
         raise ValueError(f"method: unknown contact method {law.method!r}")
     j, n_done, diverged = 1, 0, False
+    n_half = pr.n_steps // 2
+    first_half = counts.copy()
     t0 = time.process_time()
     n0 = 1
     while n0 <= pr.n_steps:
         n1 = min(pr.n_steps, n0 + chunk - 1)
+        if n0 <= n_half < n1:  # a chunk ends at the half-way step, to count the second half's states
+            n1 = n_half
         j, n_done, diverged, _ = fn(
             n0, n1, pr.every, j, u, v, *common, *args, pr.dt, blowup, out, st, counts, record_state, qs, vs
         )
+        if n1 == n_half:
+            first_half = counts.copy()
         if progress is not None:
             progress(n_done, pr.n_steps)
         if diverged:
@@ -348,7 +361,9 @@ def integrate(
     cpu = time.process_time() - t0
     if not record_state:
         qs = vs = None
-    return _result(pr, out, st, j, n_done, counts, cpu, qs, vs, diverged)
+    res = _result(pr, out, st, j, n_done, counts, cpu, qs, vs, diverged)
+    res.extra["second_half_counts"] = _named_counts(counts - first_half)
+    return res
 
 
 def integrate_python(
@@ -392,6 +407,7 @@ def integrate_python(
     vs = np.zeros((n_out, system.n)) if record_state else None
     _record0(pr, system, law, out, st, qs, vs)
     counts = [0, 0, 0]
+    first_half = [0, 0, 0]
     state = STICK
     j = 1
     n = 0
@@ -445,6 +461,8 @@ def integrate_python(
                 state = SEPARATED
         u = u + dt * v
         counts[state] += 1
+        if n == n_steps // 2:
+            first_half = list(counts)
         if n % every == 0:
             if j < n_out:
                 out[:, j] = (n * dt, cx @ u, cy @ u, cx @ v, cy @ v, Pn / dt, Pt / dt, ct @ v - V)
@@ -456,4 +474,6 @@ def integrate_python(
                 diverged = True
                 break
     cpu = time.process_time() - t0
-    return _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
+    res = _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
+    res.extra["second_half_counts"] = _named_counts(np.subtract(counts, first_half))
+    return res

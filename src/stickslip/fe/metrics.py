@@ -71,9 +71,11 @@ def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None
         "max_abs_vertical_velocity": float(np.abs(r.vy).max()),
         "dominant_frequency": dominant_frequency(r.t[half], x[half]),
         "vertical_dominant_frequency": dominant_frequency(r.t[half], y[half]),
-        "stick_fraction": r.fractions()["stick"],
-        "slip_fraction": r.fractions()["slip"],
-        "separation_fraction": r.fractions()["separation"],
+        "stick_fraction": r.fractions("second_half")["stick"],
+        "slip_fraction": r.fractions("second_half")["slip"],
+        "separation_fraction": r.fractions("second_half")["separation"],
+        "stick_fraction_whole_run": r.fractions()["stick"],
+        "separation_fraction_whole_run": r.fractions()["separation"],
         "static_normal_force": r.static_normal_force,
         "max_normal_force_ratio": float(r.normal_force.max() / r.static_normal_force)
         if r.static_normal_force > 0

@@ -16,7 +16,9 @@ import numpy as np
 
 CONTACT_METHODS = ("kinematic", "penalty", "fixed_normal")
 MASS_KINDS = ("lumped", "consistent")
-INITIAL_STATES = ("static", "undeformed")
+INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
+OUTPUT_NODES = ("free_end_lower", "free_end_axis", "free_end_upper")
+DISC_DIRECTIONS = ("clockwise", "counterclockwise")
 
 
 def _positive(name: str, value: float) -> None:
@@ -45,6 +47,9 @@ class BeamParams:
     gravity_m_s2: float = 9.81  #: g [m s-2], the only normal load
     n_elements: int = 20  #: number of beam elements [-]
     mass: str = "lumped"  #: "lumped" (HRZ diagonal, as explicit codes) or "consistent"
+    #: rotary inertia rho*I of the cross-sections (Rayleigh beam). Needed for contact at the lower face:
+    #: without it the tangential inertia of the face point vanishes under mesh refinement.
+    rotary_inertia: bool = True
 
     def __post_init__(self) -> None:
         for k in ("length", "thickness", "width", "youngs_modulus_gpa", "density_kg_m3"):
@@ -57,6 +62,8 @@ class BeamParams:
             raise ValueError(f"n_elements: must be an integer >= 1, got {self.n_elements!r}")
         if self.mass not in MASS_KINDS:
             raise ValueError(f"mass: must be one of {MASS_KINDS}, got {self.mass!r}")
+        if not isinstance(self.rotary_inertia, bool):
+            raise ValueError(f"rotary_inertia: must be true or false, got {self.rotary_inertia!r}")
 
     # derived quantities in the internal unit system
     @property
@@ -99,9 +106,14 @@ class DiscParams:
     diameter: float = 25.0  #: disc diameter [mm]
     speed_rev_per_min: float | None = None  #: angular speed [rev/min]
     surface_speed_mm_s: float | None = None  #: surface (belt-equivalent) speed [mm s-1]
+    #: turning direction seen with the clamp on the left: clockwise drives the disc top away from the
+    #: clamp (the paper's "clockwise"; it does not say from which side it is seen)
+    direction: str = "clockwise"
 
     def __post_init__(self) -> None:
         _positive("diameter", self.diameter)
+        if self.direction not in DISC_DIRECTIONS:
+            raise ValueError(f"direction: must be one of {DISC_DIRECTIONS}, got {self.direction!r}")
         given = [k for k in ("speed_rev_per_min", "surface_speed_mm_s") if getattr(self, k) is not None]
         if len(given) != 1:
             raise ValueError("speed_rev_per_min: give exactly one of speed_rev_per_min / surface_speed_mm_s")
@@ -135,11 +147,12 @@ class ContactParams:
     method: str = "kinematic"  #: "kinematic" (exact non-penetration), "penalty", "fixed_normal" (Sec. 10)
     angle_deg: float = 0.0  #: contact angle a [deg]
     penalty_stiffness: float = 1.0e3  #: penalty normal stiffness k_p [N mm-1] (method "penalty" only)
-    #: contact at the lower face (h/2 below the axis, friction then also loads the tip rotation) instead of
-    #: on the beam axis. Default False: with the offset, the point moment h/2*F_t acts on the tip rotation
-    #: DOF whose inertia vanishes as l^3 under refinement, and the response does not converge with the
-    #: element count (see the convergence dataset); on the axis it converges.
-    surface_offset: bool = False
+    #: contact at the lower face (h/2 below the axis, the paper's slave surface: friction then also
+    #: bends the beam through the moment h/2*F_t) instead of on the beam axis (a control). Converges with
+    #: the element count once the beam has rotary inertia (BeamParams.rotary_inertia).
+    surface_offset: bool = True
+    #: the paper's "node 1": where on the free end the displacement is measured
+    output_node: str = "free_end_lower"
 
     def __post_init__(self) -> None:
         if self.method not in CONTACT_METHODS:
@@ -147,6 +160,10 @@ class ContactParams:
         if not (isinstance(self.angle_deg, (int, float)) and -80.0 <= self.angle_deg <= 80.0):
             raise ValueError(f"angle_deg: must lie in [-80, 80] degrees, got {self.angle_deg!r}")
         _positive("penalty_stiffness", self.penalty_stiffness)
+        if not isinstance(self.surface_offset, bool):
+            raise ValueError(f"surface_offset: must be true or false, got {self.surface_offset!r}")
+        if self.output_node not in OUTPUT_NODES:
+            raise ValueError(f"output_node: must be one of {OUTPUT_NODES}, got {self.output_node!r}")
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> ContactParams:
@@ -160,8 +177,9 @@ class SolverParams:
     duration: float = 1.0  #: simulated time [s]
     safety_factor: float = 0.9  #: dt = safety_factor * 2 / omega_max [-]
     output_interval: float = 1.0e-5  #: sampling interval of the stored trajectory [s]
-    initial_state: str = "static"  #: "static" (gravity equilibrium in contact) or "undeformed" (drop)
+    initial_state: str = "static"  #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
     mass_damping: float = 0.0  #: mass-proportional Rayleigh damping alpha [s-1]
+    stiffness_damping: float = 0.0  #: stiffness-proportional Rayleigh damping beta [s]
 
     def __post_init__(self) -> None:
         _positive("duration", self.duration)
@@ -172,6 +190,8 @@ class SolverParams:
             raise ValueError(f"initial_state: must be one of {INITIAL_STATES}, got {self.initial_state!r}")
         if not (self.mass_damping >= 0):
             raise ValueError(f"mass_damping: must be >= 0, got {self.mass_damping!r}")
+        if not (isinstance(self.stiffness_damping, (int, float)) and 0 <= self.stiffness_damping < 1e-3):
+            raise ValueError(f"stiffness_damping: must lie in [0, 1e-3) s, got {self.stiffness_damping!r}")
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> SolverParams:

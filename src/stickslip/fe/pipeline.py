@@ -43,9 +43,11 @@ UNITS = {
     "max_abs_vertical_velocity": ("mm s-1", "maximum absolute vertical velocity of node 1"),
     "dominant_frequency": ("Hz", "dominant frequency of the horizontal displacement"),
     "vertical_dominant_frequency": ("Hz", "dominant frequency of the vertical displacement"),
-    "stick_fraction": ("1", "fraction of increments in stick"),
-    "slip_fraction": ("1", "fraction of increments in slip"),
-    "separation_fraction": ("1", "fraction of increments separated"),
+    "stick_fraction": ("1", "fraction of increments in stick (second half of the run)"),
+    "slip_fraction": ("1", "fraction of increments in slip (second half of the run)"),
+    "separation_fraction": ("1", "fraction of increments separated (second half of the run)"),
+    "stick_fraction_whole_run": ("1", "fraction of increments in stick (whole run)"),
+    "separation_fraction_whole_run": ("1", "fraction of increments separated (whole run)"),
     "static_normal_force": ("N", "static contact normal force (gravity only)"),
     "max_normal_force_ratio": ("1", "maximum normal force over static normal force"),
     "stable_time_step": ("s", "central-difference stability limit 2/omega_max"),
@@ -131,6 +133,7 @@ def run_scene(
         output_interval=sp.output_interval,
         initial_state=sp.initial_state,
         mass_damping=sp.mass_damping,
+        stiffness_damping=sp.stiffness_damping,
         progress=progress,
     )
     m = trajectory_metrics(r, _natural_frequencies(scene))

@@ -50,7 +50,7 @@ def propped_normal_force(p: SceneParams) -> float:
     """Static contact reaction [N] of the free (Section 9) configuration; used as the held normal load
     of the Section 10 scene whose transverse motion is constrained."""
     free = assemble_beam(p.beam)
-    geom = contact_geometry(free, p.contact, p.disc.diameter / 2)
+    geom = contact_geometry(free, p.contact, p.disc.diameter / 2, p.disc.direction)
     law = ContactLaw("kinematic", FrictionTable.paper_fig17(), 0.0)
     return static_state(build_system(free, geom), law)[1]
 
@@ -58,7 +58,7 @@ def propped_normal_force(p: SceneParams) -> float:
 def build_scene(p: SceneParams, friction: FrictionTable) -> BuiltScene:
     fixed = p.contact.method == "fixed_normal"
     beam = assemble_beam(p.beam, constrain_transverse=fixed)
-    geom = contact_geometry(beam, p.contact, p.disc.diameter / 2)
+    geom = contact_geometry(beam, p.contact, p.disc.diameter / 2, p.disc.direction)
     system = build_system(beam, geom)
     law = ContactLaw(
         p.contact.method,
