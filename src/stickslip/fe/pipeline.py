@@ -15,20 +15,25 @@ import numpy as np
 import xarray as xr
 
 from .beam import cantilever_axial_frequencies, cantilever_bending_frequencies, modal_analysis
-from .explicit import integrate
+from .explicit import integrate, static_state
 from .metrics import trajectory_metrics, trend_sign, window_envelope
 from .params import FrictionTable
 from .reduced import contact_boundary, craig_bampton
 from .scene import SceneParams, build_scene
-from .stability import max_growth, sliding_eigenvalues, transient_growth_rate
+from .stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 
 INTERPRETATION = (
-    "2-D Euler-Bernoulli frame elements (axial + bending), clamped left end, steel E=210 GPa rho=7850 kg/m3, "
-    "out-of-plane width as stated (gravity-only normal load: contact pressure independent of width, "
-    "frequencies independent of width, forces proportional to it); rigid disc, small-displacement contact "
-    "at the free end with fixed normal/tangent; contact angle = tilt of the disc normal at the contact "
-    "towards the clamp; mu(|v_r|) from the tabulated friction law with static limit mu(0) and exact stick; "
-    "displacements measured from the gravity equilibrium in contact; no material damping."
+    "2-D frame elements (axial bar + Euler-Bernoulli bending stiffness, Rayleigh rotary inertia rho*I), "
+    "clamped "
+    "left end, steel E=210 GPa rho=7850 kg/m3, 1 mm out-of-plane width (gravity-only normal load: contact "
+    "pressure, frequencies and displacements independent of width, forces proportional to it); rigid disc, "
+    "small-displacement contact at the free end on the lower face (h/2 below the axis, the paper's slave "
+    "surface) or on the axis (reading), fixed normal/tangent; contact angle = tilt of the disc normal at the "
+    "contact towards the clamp; mu(|v_r|) from the tabulated friction law with static limit mu(0) and exact "
+    "stick; light stiffness-proportional damping beta (solver.stiffness_damping) so that the response "
+    "converges in mesh and step; start from rest undeformed with gravity at t=0 (drop, as ABAQUS/Explicit) "
+    "or from the gravity equilibrium in contact (static), per reading; node 1 = the free-end point named by "
+    "contact.output_node; displacements from the initial position."
 )
 
 UNITS = {
@@ -79,10 +84,21 @@ def deep_merge(a: Mapping, b: Mapping) -> dict:
     return out
 
 
-def scene_mapping(fe_cfg: Mapping, name: str) -> dict:
+def scene_mapping(fe_cfg: Mapping, name: str, reading: str | None = None) -> dict:
+    """defaults <- reading <- scene. ``reading`` None: the first of ``fe_cfg['readings']`` (if any).
+
+    A reading fixes how the paper's ambiguous geometry is read (contact face, node 1, disc direction,
+    start); a scene sets what the paper varies (contact method, disc speed, angle)."""
     if name not in fe_cfg.get("scenes", {}):
         raise ValueError(f"scenes.{name}: no such scene")
-    return deep_merge(fe_cfg.get("defaults", {}), fe_cfg["scenes"][name])
+    readings = fe_cfg.get("readings", {}) or {}
+    if reading is None and readings:
+        reading = next(iter(readings))
+    if reading is not None and reading not in readings:
+        raise ValueError(f"readings.{reading}: no such FE reading ({sorted(readings)})")
+    over = dict(readings.get(reading, {}) or {}) if reading else {}
+    over.pop("description", None)
+    return deep_merge(deep_merge(fe_cfg.get("defaults", {}), over), fe_cfg["scenes"][name])
 
 
 def _natural_frequencies(scene) -> np.ndarray:
@@ -147,94 +163,148 @@ def run_scene(
     return r, m, scene
 
 
-def scene_dataset(name: str, mapping: Mapping, r, m: Mapping, scene) -> xr.Dataset:
-    x0, y0 = r.x[0], r.y[0]
-    tw, evx = window_envelope(r.t, r.vx)
-    _, evy = window_envelope(r.t, r.vy)
-    _, ex = window_envelope(r.t, r.x - x0)
-    _, ey = window_envelope(r.t, r.y - y0)
-    ds = xr.Dataset(
+def _binned(t: np.ndarray, y: np.ndarray, edges: np.ndarray):
+    """Per-bin (min, max, mean) of y over time bins (empty bins -> NaN)."""
+    idx = np.clip(np.searchsorted(edges, t, side="right") - 1, 0, edges.size - 2)
+    nb = edges.size - 1
+    cnt = np.bincount(idx, minlength=nb).astype(float)
+    mean = np.bincount(idx, weights=y, minlength=nb) / np.where(cnt > 0, cnt, np.nan)
+    lo = np.full(nb, np.inf)
+    hi = np.full(nb, -np.inf)
+    np.minimum.at(lo, idx, y)
+    np.maximum.at(hi, idx, y)
+    lo[cnt == 0] = np.nan
+    hi[cnt == 0] = np.nan
+    return lo, hi, mean
+
+
+def detail_mask(t: np.ndarray, windows) -> np.ndarray:
+    keep = np.zeros(t.size, bool)
+    for a, b in windows:
+        keep |= (t >= a) & (t <= b)
+    return keep
+
+
+def default_windows(duration: float, span: float = 0.005) -> list:
+    """Full-resolution windows kept in the dataset: the start (drop / first stick) and the end."""
+    span = min(span, duration / 2)
+    return [[0.0, span], [duration - span, duration]]
+
+
+SERIES = {
+    # name: (ExplicitResult attribute or callable, units, long_name)
+    "horizontal_displacement": ("mm", "horizontal displacement of node 1 from its initial position"),
+    "vertical_displacement": ("mm", "vertical displacement of node 1 from its initial position"),
+    "horizontal_velocity": ("mm s-1", "horizontal velocity of node 1"),
+    "vertical_velocity": ("mm s-1", "vertical velocity of node 1"),
+    "normal_force": ("N", "contact normal force"),
+    "friction_force": ("N", "friction force on the beam along the disc velocity"),
+    "slip_velocity": ("mm s-1", "beam minus disc tangential velocity at the contact point"),
+}
+
+
+def _series(r) -> dict:
+    return {
+        "horizontal_displacement": r.x - r.x[0],
+        "vertical_displacement": r.y - r.y[0],
+        "horizontal_velocity": r.vx,
+        "vertical_velocity": r.vy,
+        "normal_force": r.normal_force,
+        "friction_force": r.friction_force,
+        "slip_velocity": r.slip_velocity,
+    }
+
+
+def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> xr.Dataset:
+    """Trajectory -> dataset: full-resolution samples only inside ``windows`` (dimension ``time``), and
+    per-bin min/max/mean plus stick/slip/separation fractions over the whole run (``bin_time``), so that
+    a 1 s run at >= 20 samples per 12.9 kHz period is stored and drawn without aliasing. Scalars ``m``
+    become scalar variables (units from UNITS)."""
+    t = r.t
+    windows = windows if windows is not None else default_windows(float(t[-1]))
+    keep = detail_mask(t, windows)
+    ser = _series(r)
+    data: dict = {}
+    for k, (u, ln) in SERIES.items():
+        data[k] = ("time", ser[k][keep], {"units": u, "long_name": ln})
+    data["contact_state"] = (
+        "time",
+        r.state[keep].astype("i1"),
         {
-            "horizontal_displacement": (
-                "time",
-                r.x - x0,
-                {"units": "mm", "long_name": "horizontal displacement of node 1 from gravity equilibrium"},
-            ),
-            "vertical_displacement": (
-                "time",
-                r.y - y0,
-                {"units": "mm", "long_name": "vertical displacement of node 1 from gravity equilibrium"},
-            ),
-            "horizontal_velocity": (
-                "time",
-                r.vx,
-                {"units": "mm s-1", "long_name": "horizontal velocity of node 1"},
-            ),
-            "vertical_velocity": (
-                "time",
-                r.vy,
-                {"units": "mm s-1", "long_name": "vertical velocity of node 1"},
-            ),
-            "normal_force": ("time", r.normal_force, {"units": "N", "long_name": "contact normal force"}),
-            "friction_force": (
-                "time",
-                r.friction_force,
-                {"units": "N", "long_name": "friction force on the beam along the disc velocity"},
-            ),
-            "slip_velocity": (
-                "time",
-                r.slip_velocity,
-                {"units": "mm s-1", "long_name": "beam minus disc tangential velocity"},
-            ),
-            "contact_state": (
-                "time",
-                r.state.astype("i1"),
-                {
-                    "units": "1",
-                    "long_name": "contact state",
-                    "flag_values": np.array([0, 1, 2], "i1"),
-                    "flag_meanings": "separated stick slip",
-                },
-            ),
-            "horizontal_velocity_envelope": (
-                "window",
-                evx,
-                {"units": "mm s-1", "long_name": "half peak-to-peak horizontal velocity per window"},
-            ),
-            "vertical_velocity_envelope": (
-                "window",
-                evy,
-                {"units": "mm s-1", "long_name": "half peak-to-peak vertical velocity per window"},
-            ),
-            "horizontal_displacement_envelope": (
-                "window",
-                ex,
-                {"units": "mm", "long_name": "half peak-to-peak horizontal displacement per window"},
-            ),
-            "vertical_displacement_envelope": (
-                "window",
-                ey,
-                {"units": "mm", "long_name": "half peak-to-peak vertical displacement per window"},
-            ),
+            "units": "1",
+            "long_name": "contact state",
+            "flag_values": np.array([0, 1, 2], "i1"),
+            "flag_meanings": "separated stick slip",
         },
+    )
+    edges = np.arange(0.0, t[-1] + bin_width, bin_width)
+    if edges.size < 2:
+        edges = np.array([0.0, t[-1]])
+    for k in ("horizontal_displacement", "vertical_displacement", "horizontal_velocity", "vertical_velocity"):
+        u, ln = SERIES[k]
+        lo, hi, mean = _binned(t, ser[k], edges)
+        data[f"{k}_min"] = ("bin_time", lo, {"units": u, "long_name": f"minimum per bin of the {ln}"})
+        data[f"{k}_max"] = ("bin_time", hi, {"units": u, "long_name": f"maximum per bin of the {ln}"})
+        data[f"{k}_mean"] = ("bin_time", mean, {"units": u, "long_name": f"mean per bin of the {ln}"})
+    for code, name in enumerate(("separation", "stick", "slip")):
+        _, _, frac = _binned(t, (r.state == code).astype(float), edges)
+        data[f"{name}_fraction_per_bin"] = (
+            "bin_time",
+            frac,
+            {"units": "1", "long_name": f"fraction of output samples in {name} per bin"},
+        )
+    tw, evx = window_envelope(t, r.vx)
+    for k, y, u in (
+        ("horizontal_velocity", r.vx, "mm s-1"),
+        ("vertical_velocity", r.vy, "mm s-1"),
+        ("horizontal_displacement", ser["horizontal_displacement"], "mm"),
+        ("vertical_displacement", ser["vertical_displacement"], "mm"),
+    ):
+        data[f"{k}_envelope"] = (
+            "window",
+            window_envelope(t, y)[1],
+            {"units": u, "long_name": f"half peak-to-peak {k.replace('_', ' ')} per window"},
+        )
+    ds = xr.Dataset(
+        data,
         coords={
-            "time": ("time", r.t, {"units": "s", "long_name": "time"}),
+            "time": ("time", t[keep], {"units": "s", "long_name": "time (full-resolution windows only)"}),
+            "bin_time": (
+                "bin_time",
+                0.5 * (edges[:-1] + edges[1:]),
+                {"units": "s", "long_name": "bin centre"},
+            ),
             "window_time": ("window", tw, {"units": "s", "long_name": "window centre time"}),
         },
     )
+    ds["detail_windows"] = (
+        ("detail_window", "bound"),
+        np.array(windows, float),
+        {"units": "s", "long_name": "start and end of the full-resolution windows"},
+    )
+    for k, v in m.items():
+        u, ln = UNITS.get(k, ("1", k.replace("_", " ")))
+        ds[k] = ((), float(v), {"units": u, "long_name": ln})
+    return ds
+
+
+def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> xr.Dataset:
+    """Pure build of one scene's dataset from its merged config mapping (the ensemble contract:
+    ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
+    and ``bin_width`` [s]."""
+    r, m, scene = run_scene(mapping, friction)
+    out = dict(mapping.get("output", {}) or {})
+    ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
     nat = _natural_frequencies(scene)[:10]
     ds["natural_frequency"] = (
         "mode",
         nat,
         {"units": "Hz", "long_name": "natural frequencies with contact held"},
     )
-    for k, v in m.items():
-        u, ln = UNITS.get(k, ("1", k.replace("_", " ")))
-        ds[k] = ((), v, {"units": u, "long_name": ln})
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",
-            "title": f"Beam on rotating rigid disc, scene {name}",
+            "title": f"Beam on rotating rigid disc, scene {name}".strip(),
             "scene": name,
             "parameters": json.dumps(
                 {
@@ -244,7 +314,7 @@ def scene_dataset(name: str, mapping: Mapping, r, m: Mapping, scene) -> xr.Datas
             ),
             "model_interpretation": INTERPRETATION,
             "method": (
-                f"explicit central difference, {scene.law.method} contact, dt={r.dt:.6g} s "
+                f"explicit central difference (compiled kernel), {scene.law.method} contact, dt={r.dt:.6g} s "
                 f"(stable limit {r.dt_crit:.6g} s)"
             ),
             "diverged": int(r.extra.get("diverged", False)),
@@ -380,36 +450,60 @@ def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
     return ds
 
 
+def _scene_of(mapping: Mapping, friction: FrictionTable):
+    p = SceneParams.from_mapping(
+        {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
+    )
+    return build_scene(p, friction)
+
+
 def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
+    """Eigenvalue map over contact angle x friction slope, and explicit-transient cross-checks.
+
+    Linearised about steady sliding with the sliding normal force (friction preload included) and the
+    base scene's Rayleigh damping. Each cross-check runs the explicit integrator from the sliding state
+    for ``crosscheck_e_folds`` e-foldings of the eigenvalue growth rate (at most
+    ``crosscheck_max_duration``) with a linear friction law of the cross-check slope."""
     st = fe_cfg["stability"]
     base = scene_mapping(fe_cfg, st["base"])
     angles, slopes = list(st["angles"]), list(st["slopes"])
+    solver = base.get("solver", {})
+    damp = {
+        "mass_damping": float(solver.get("mass_damping", 0.0)),
+        "stiffness_damping": float(solver.get("stiffness_damping", 0.0)),
+    }
     g = np.zeros((len(angles), len(slopes)))
     fr = np.zeros_like(g)
     for i, a in enumerate(angles):
-        mp = deep_merge(base, {"contact": {"angle_deg": a}})
-        p = SceneParams.from_mapping(
-            {k: v for k, v in mp.items() if k in ("beam", "disc", "contact", "solver")}
-        )
-        sc = build_scene(p, friction)
+        sc = _scene_of(deep_merge(base, {"contact": {"angle_deg": a}}), friction)
         for j, s in enumerate(slopes):
-            g[i, j], fr[i, j] = max_growth(sliding_eigenvalues(sc.system, sc.law, slope=s))
-    # table slope at the base scene's disc speed, and transient cross-checks with a linear law of that slope
-    p0 = SceneParams.from_mapping(
-        {k: v for k, v in base.items() if k in ("beam", "disc", "contact", "solver")}
-    )
-    V = p0.disc.surface_speed
+            g[i, j], fr[i, j] = max_growth(sliding_eigenvalues(sc.system, sc.law, slope=s, **damp))
+    V = _scene_of(base, friction).params.disc.surface_speed
     cc = st.get("crosscheck", [])
-    cc_eig, cc_tr = [], []
+    rows: dict[str, list] = {
+        k: [] for k in ("eig", "eig_f", "eig_static", "tr", "tr_f", "N_static", "N_slide")
+    }
     for a, s in cc:
-        mp = deep_merge(base, {"contact": {"angle_deg": a}})
-        p = SceneParams.from_mapping(
-            {k: v for k, v in mp.items() if k in ("beam", "disc", "contact", "solver")}
-        )
         lin = FrictionTable.linear(friction(V) - s * V, s, 2.0 * V)
-        sc = build_scene(p, lin)
-        cc_eig.append(max_growth(sliding_eigenvalues(sc.system, sc.law))[0])
-        cc_tr.append(transient_growth_rate(sc.system, sc.law, float(st.get("crosscheck_duration", 0.01))))
+        sc = _scene_of(deep_merge(base, {"contact": {"angle_deg": a}}), lin)
+        ge, fe = max_growth(sliding_eigenvalues(sc.system, sc.law, **damp))
+        rows["eig"].append(ge)
+        rows["eig_f"].append(fe)
+        rows["eig_static"].append(
+            max_growth(sliding_eigenvalues(sc.system, sc.law, normal_force="static", **damp))[0]
+        )
+        rows["N_static"].append(static_state(sc.system, sc.law)[1])
+        rows["N_slide"].append(sliding_state(sc.system, sc.law)[1])
+        dur = min(float(st.get("crosscheck_max_duration", 0.05)), float(st.get("crosscheck_e_folds", 8)) / ge)
+        gt, ft = transient_growth(sc.system, sc.law, dur, **damp) if ge > 0 else (np.nan, np.nan)
+        rows["tr"].append(gt)
+        rows["tr_f"].append(ft)
+    eig, tr = np.array(rows["eig"], float), np.array(rows["tr"], float)
+    rel = np.abs(tr / eig - 1)
+
+    def cc_var(v, units, long_name):
+        return ("crosscheck", np.array(v, float), {"units": units, "long_name": long_name})
+
     ds = xr.Dataset(
         {
             "max_growth_rate": (
@@ -422,25 +516,39 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
                 fr,
                 {"units": "Hz", "long_name": "frequency of the least stable eigenvalue"},
             ),
-            "crosscheck_eigen_growth_rate": (
-                "crosscheck",
-                np.array(cc_eig, float),
-                {"units": "s-1", "long_name": "eigenvalue growth rate at the cross-check point"},
+            "crosscheck_eigen_growth_rate": cc_var(
+                eig, "s-1", "eigenvalue growth rate (sliding normal force)"
             ),
-            "crosscheck_transient_growth_rate": (
-                "crosscheck",
-                np.array(cc_tr, float),
-                {"units": "s-1", "long_name": "growth rate fitted to an explicit transient"},
+            "crosscheck_eigen_growth_rate_static_normal": cc_var(
+                rows["eig_static"],
+                "s-1",
+                "eigenvalue growth rate with the static normal force (old analysis)",
             ),
-            "crosscheck_angle": (
-                "crosscheck",
-                np.array([c[0] for c in cc], float),
-                {"units": "degree", "long_name": "cross-check contact angle"},
+            "crosscheck_eigen_frequency": cc_var(
+                rows["eig_f"], "Hz", "frequency of the least stable eigenvalue"
             ),
-            "crosscheck_slope": (
-                "crosscheck",
-                np.array([c[1] for c in cc], float),
-                {"units": "s mm-1", "long_name": "cross-check friction slope"},
+            "crosscheck_transient_growth_rate": cc_var(
+                tr, "s-1", "growth rate fitted to an explicit transient"
+            ),
+            "crosscheck_transient_frequency": cc_var(
+                rows["tr_f"], "Hz", "dominant frequency of the growing transient (the mode that grows)"
+            ),
+            "crosscheck_relative_difference": cc_var(rel, "1", "|transient / eigenvalue growth rate - 1|"),
+            "crosscheck_static_normal_force": cc_var(
+                rows["N_static"], "N", "static normal force (no friction)"
+            ),
+            "crosscheck_sliding_normal_force": cc_var(
+                rows["N_slide"], "N", "normal force in steady sliding (friction preload included)"
+            ),
+            "crosscheck_angle": cc_var([c[0] for c in cc], "degree", "cross-check contact angle"),
+            "crosscheck_slope": cc_var([c[1] for c in cc], "s mm-1", "cross-check friction slope"),
+            "crosscheck_max_relative_difference": (
+                (),
+                float(np.nanmax(rel)) if rel.size else np.nan,
+                {
+                    "units": "1",
+                    "long_name": "largest |transient / eigenvalue growth rate - 1| of the cross-checks",
+                },
             ),
             "table_slope_at_disc_speed": (
                 (),
@@ -468,6 +576,11 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
         g[a0, k0],
         {"units": "s-1", "long_name": "growth rate at angle 0 and the slope nearest the table's"},
     )
+    ds["unstable_frequency_at_table_slope_angle0"] = (
+        (),
+        fr[a0, k0],
+        {"units": "Hz", "long_name": "frequency of the least stable mode at angle 0 and the table's slope"},
+    )
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",
@@ -475,8 +588,9 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
             "model_interpretation": INTERPRETATION,
             "base_scene": st["base"],
             "method": (
-                "linearisation about steady sliding, friction slope included; "
-                "cross-check by explicit transients"
+                "linearisation about steady sliding (sliding normal force, friction slope, Rayleigh "
+                "damping); "
+                "cross-check by explicit transients from the sliding state"
             ),
         }
     )

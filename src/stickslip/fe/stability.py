@@ -16,7 +16,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from .explicit import ContactLaw, System, integrate, static_state
-from .metrics import window_envelope
+from .metrics import dominant_frequency, window_envelope
 
 
 def _null(a: np.ndarray) -> np.ndarray:
@@ -25,16 +25,54 @@ def _null(a: np.ndarray) -> np.ndarray:
     return u[:, 1:]
 
 
-def sliding_eigenvalues(system: System, law: ContactLaw, slope: float | None = None) -> np.ndarray:
+def sliding_state(system: System, law: ContactLaw) -> tuple[np.ndarray, float]:
+    """Steady-sliding equilibrium: gravity plus the sliding friction preload mu(V) N along c_t.
+
+    Returns (q, N) with the *sliding* normal force N, which differs from the static (friction-free) one
+    whenever friction has a normal component at the contact point (tilted contact, or friction acting on
+    the lower face: its moment h/2 mu N bends the beam towards or away from the disc)."""
+    q0, N0 = static_state(system, law)
+    mu = law.friction(law.disc_speed)
+    cn, ct = system.c_n, system.c_t
+    if law.method == "kinematic" and np.any(cn):
+        n = system.n
+        A = np.zeros((n + 1, n + 1))
+        A[:n, :n] = system.K
+        A[:n, n] = -(cn + mu * ct)
+        A[n, :n] = cn
+        sol = np.linalg.solve(A, np.concatenate([system.f, [-law.gap0]]))
+        return sol[:n], float(sol[n])
+    if law.method == "penalty":
+        kp = law.penalty_stiffness
+        Kp = system.K + kp * np.outer(cn + mu * ct, cn)
+        q = np.linalg.solve(Kp, system.f - kp * law.gap0 * (cn + mu * ct))
+        return q, float(-kp * (law.gap0 + cn @ q))
+    return np.linalg.solve(system.K, system.f + N0 * (cn + mu * ct)), N0
+
+
+def sliding_eigenvalues(
+    system: System,
+    law: ContactLaw,
+    slope: float | None = None,
+    *,
+    mass_damping: float = 0.0,
+    stiffness_damping: float = 0.0,
+    normal_force: str = "sliding",
+) -> np.ndarray:
     """Eigenvalues [s-1] (complex, Im >= 0 kept once) of the linearised sliding system.
 
-    ``slope`` overrides d mu / d v_r [s mm-1] (default: the table's slope at the disc speed)."""
-    _, N0 = static_state(system, law)
+    ``slope`` overrides d mu / d v_r [s mm-1] (default: the table's slope at the disc speed). The normal
+    force multiplying the slope is the sliding one (``normal_force="sliding"``, friction preload included)
+    or, for comparison with the old analysis, the static one (``"static"``). Rayleigh damping
+    alpha M + beta K is included as in the explicit runs."""
+    if normal_force not in ("sliding", "static"):
+        raise ValueError(f"normal_force: must be 'sliding' or 'static', got {normal_force!r}")
+    N0 = sliding_state(system, law)[1] if normal_force == "sliding" else static_state(system, law)[1]
     V = law.disc_speed
     mu = law.friction(V)
     dmu = law.friction.slope(V) if slope is None else slope
     M, K, cn, ct = system.M, system.K, system.c_n, system.c_t
-    C = N0 * dmu * np.outer(ct, ct)
+    C = N0 * dmu * np.outer(ct, ct) + mass_damping * M + stiffness_damping * K
     if law.method == "penalty":
         K = K + law.penalty_stiffness * np.outer(cn + mu * ct, cn)
     elif law.method == "kinematic" and np.any(cn):
@@ -53,36 +91,50 @@ def max_growth(lam: np.ndarray) -> tuple[float, float]:
     return float(lam[k].real), float(abs(lam[k].imag) / (2 * np.pi))
 
 
-def sliding_state(system: System, law: ContactLaw) -> np.ndarray:
-    """Static state including the sliding friction preload mu(V) N0 along c_t."""
-    q0, N0 = static_state(system, law)
-    mu = law.friction(law.disc_speed)
-    if law.method == "kinematic" and np.any(system.c_n):
-        n = system.n
-        A = np.zeros((n + 1, n + 1))
-        A[:n, :n] = system.K
-        A[:n, n] = -(system.c_n + mu * system.c_t)
-        A[n, :n] = system.c_n
-        return np.linalg.solve(A, np.concatenate([system.f, [-law.gap0]]))[:n]
-    if law.method == "penalty":
-        Kp = system.K + law.penalty_stiffness * np.outer(system.c_n + mu * system.c_t, system.c_n)
-        return np.linalg.solve(Kp, system.f)
-    return np.linalg.solve(system.K, system.f + N0 * (system.c_n + mu * system.c_t))
+def transient_growth(
+    system: System,
+    law: ContactLaw,
+    duration: float,
+    perturbation: float = 1e-3,
+    *,
+    mass_damping: float = 0.0,
+    stiffness_damping: float = 0.0,
+) -> tuple[float, float]:
+    """(growth rate [s-1], frequency [Hz]) of the tangential velocity in an explicit run started from
+    steady sliding with a small tangential velocity perturbation [mm s-1].
+
+    The rate is fitted to the log of the windowed envelope while it stays below 30 % of the disc speed
+    (before stick/separation limit it); the frequency is the dominant spectral peak of the tangential
+    velocity over the same window, i.e. the mode that actually grows."""
+    q0, _ = sliding_state(system, law)
+    Minv_ct = np.linalg.solve(system.M, system.c_t)
+    v0 = perturbation * Minv_ct / (system.c_t @ Minv_ct)
+    r = integrate(
+        system,
+        law,
+        duration,
+        q0=q0,
+        v0=v0,
+        output_interval=duration / 20000,
+        mass_damping=mass_damping,
+        stiffness_damping=stiffness_damping,
+    )
+    vt = r.slip_velocity + law.disc_speed
+    tc, env = window_envelope(r.t, vt, 40)
+    ok = (env > 0) & (env < 0.3 * max(law.disc_speed, 1e-12))
+    if ok.sum() < 8:
+        return float("nan"), float("nan")
+    # skip the first third of the linear range: the perturbation excites every mode, and the decaying
+    # ones hide the growing one until they have died out
+    t_end = tc[ok].max()
+    fit = ok & (tc >= t_end / 3)
+    rate = float(np.polyfit(tc[fit], np.log(env[fit]), 1)[0])
+    w = (r.t >= t_end / 3) & (r.t <= t_end)
+    return rate, dominant_frequency(r.t[w], vt[w])
 
 
 def transient_growth_rate(
     system: System, law: ContactLaw, duration: float, perturbation: float = 1e-3
 ) -> float:
-    """Growth rate [s-1] of the tangential velocity envelope in an explicit run started from steady sliding
-    with a small tangential velocity perturbation [mm s-1]; fitted while the envelope stays below 30 % of
-    the disc speed (before stick/separation limits it)."""
-    q0 = sliding_state(system, law)
-    Minv_ct = np.linalg.solve(system.M, system.c_t)
-    v0 = perturbation * Minv_ct / (system.c_t @ Minv_ct)
-    r = integrate(system, law, duration, q0=q0, v0=v0, output_interval=duration / 4000)
-    vt = r.slip_velocity + law.disc_speed
-    tc, env = window_envelope(r.t, vt, 40)
-    ok = (env > 0) & (env < 0.3 * max(law.disc_speed, 1e-12))
-    if ok.sum() < 4:
-        return float("nan")
-    return float(np.polyfit(tc[ok], np.log(env[ok]), 1)[0])
+    """Growth rate [s-1] of :func:`transient_growth` (undamped)."""
+    return transient_growth(system, law, duration, perturbation)[0]
