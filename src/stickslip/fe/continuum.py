@@ -341,9 +341,9 @@ def critical_step(omega: float, beta: float) -> float:
     return 2.0 / omega * (math.sqrt(1.0 + xi * xi) - xi)
 
 
-def stable_time_step(scene: ContinuumScene, method: str = "element") -> float:
-    """dt_crit [s]. ``element``: from the element-by-element bound (conservative, what explicit codes use);
-    ``global``: from the assembled system's omega_max."""
+def stable_time_step(scene: ContinuumScene, method: str = "global") -> float:
+    """dt_crit [s]. ``global``: from the assembled system's omega_max (the true limit, as ABAQUS/Explicit's
+    global estimator approaches it); ``element``: from the element-by-element bound (conservative)."""
     if method == "element":
         w = omega_max_elementwise(scene)
     elif method == "global":
@@ -354,7 +354,7 @@ def stable_time_step(scene: ContinuumScene, method: str = "element") -> float:
 
 
 def increments(
-    scene: ContinuumScene, duration: float, safety_factor: float = 0.9, method: str = "element"
+    scene: ContinuumScene, duration: float, safety_factor: float = 0.9, method: str = "global"
 ) -> int:
     """Number of explicit increments to reach ``duration`` at safety_factor * dt_crit."""
     _check_run(duration, safety_factor)
@@ -369,11 +369,14 @@ def static_state(scene: ContinuumScene) -> tuple[np.ndarray, float]:
     nf = fr.size
     Kf = scene.K[fr][:, fr]
     ff = scene.f[fr]
+    u = np.zeros(scene.mesh.n_dof)
+    if scene.contact_nodes.size == 0:  # no slave node (contact-free checks)
+        u[fr] = spla.spsolve(Kf.tocsc(), ff)
+        return u, 0.0
     c = scene.contact_nodes[scene.primary]
     g = np.zeros(scene.mesh.n_dof)
     g[2 * c : 2 * c + 2] = scene.normals[scene.primary]
     gf = g[fr]
-    u = np.zeros(scene.mesh.n_dof)
     if scene.method == "penalty":
         kp = scene.penalty_stiffness
         uf = spla.spsolve((Kf + kp * sp.csr_matrix(np.outer(gf, gf))).tocsc(), ff)
@@ -405,6 +408,8 @@ def integrate_continuum(
     initial_state: str = "drop",
     progress=None,
     dt: float | None = None,
+    u0: np.ndarray | None = None,
+    v0: np.ndarray | None = None,
     record_state: bool = False,
     blowup: float = 1e3,
     chunk: int = 200_000,
@@ -413,10 +418,11 @@ def integrate_continuum(
 
     ``initial_state``: "drop" (= "undeformed": u = 0, v = 0, gravity on at t = 0, contact closed at the
     undeformed lower-face point) or "static" (gravity equilibrium in contact). ``dt`` defaults to
-    safety_factor * dt_crit (element-by-element bound). x, y are displacements of the output node from its
+    safety_factor * dt_crit (global omega_max). x, y are displacements of the output node from its
     undeformed position; ``normal_force``/``friction_force`` sum over the slave nodes; ``slip_velocity`` and
     ``state`` are the primary contact node's. ``progress(done, total)`` is called between chunks.
-    ``record_state`` stores u, v (all DOFs) at every sample (slow path, for tests).
+    ``u0``/``v0`` (all DOFs) override the initial displacement/velocity. ``record_state`` stores u, v (all
+    DOFs) at every sample (slow path, for tests).
     """
     _check_run(duration, safety_factor)
     if initial_state not in CONTINUUM_INITIAL_STATES:
@@ -435,6 +441,12 @@ def integrate_continuum(
     q_stat, N_stat = static_state(scene)
     u = q_stat.copy() if initial_state == "static" else np.zeros(scene.mesh.n_dof)
     v = np.zeros(scene.mesh.n_dof)
+    for name, arr, target in (("u0", u0, u), ("v0", v0, v)):
+        if arr is not None:
+            arr = np.asarray(arr, float)
+            if arr.shape != target.shape:
+                raise ValueError(f"{name}: must have shape {target.shape}, got {arr.shape}")
+            target[:] = np.where(scene.fixed, 0.0, arr)
     minv = np.where(scene.fixed, 0.0, 1.0 / scene.mass)
     K = scene.K
     indptr, indices, data = K.indptr.astype(np.int64), K.indices.astype(np.int64), K.data
@@ -447,11 +459,13 @@ def integrate_continuum(
     out = np.zeros((n_out, 8))
     ost = np.zeros(n_out, np.int8)
     counts = np.zeros(3, np.int64)
-    c0 = scene.contact_nodes[scene.primary]
-    state0 = STICK if (initial_state == "drop" or initial_state == "undeformed" or N_stat > 0) else SEPARATED
-    out[0] = (0.0, u[od], u[od + 1], 0.0, 0.0, N_stat if initial_state == "static" else 0.0, 0.0, 0.0)
-    out[0, 7] = float(scene.tangents[scene.primary] @ v[2 * c0 : 2 * c0 + 2]) - scene.disc_speed
-    ost[0] = state0
+    has_contact = scene.contact_nodes.size > 0
+    closed = has_contact and (initial_state != "static" or N_stat > 0)
+    out[0] = (0.0, u[od], u[od + 1], v[od], v[od + 1], N_stat if initial_state == "static" else 0.0, 0.0, 0.0)
+    if has_contact:
+        c0 = 2 * scene.contact_nodes[scene.primary]
+        out[0, 7] = float(scene.tangents[scene.primary] @ v[c0 : c0 + 2]) - scene.disc_speed
+    ost[0] = STICK if closed else SEPARATED
     qs = [u.copy()] if record_state else None
     vs = [v.copy()] if record_state else None
     common = (
