@@ -448,8 +448,12 @@ def integrate_continuum(
                 raise ValueError(f"{name}: must have shape {target.shape}, got {arr.shape}")
             target[:] = np.where(scene.fixed, 0.0, arr)
     minv = np.where(scene.fixed, 0.0, 1.0 / scene.mass)
-    K = scene.K
-    indptr, indices, data = K.indptr.astype(np.int64), K.indices.astype(np.int64), K.data
+    quads = scene.mesh.quads
+    dofs = (np.repeat(2 * quads, 2, axis=1) + np.tile([0, 1], 4)).astype(np.int64)
+    ke_flat = scene.element_stiffness.reshape(len(quads), -1)
+    ke_types, kind = np.unique(ke_flat, axis=0, return_inverse=True)
+    ke_types = np.ascontiguousarray(ke_types.reshape(-1, 8, 8))
+    kind = np.asarray(kind, np.int64).ravel()
     fext = scene.f.copy()
     cdof = (2 * scene.contact_nodes).astype(np.int64)
     cm = scene.mass[cdof].copy()
@@ -469,7 +473,7 @@ def integrate_continuum(
     qs = [u.copy()] if record_state else None
     vs = [v.copy()] if record_state else None
     common = (
-        indptr, indices, data, minv, fext, float(scene.damping_beta), u, v, cdof,
+        dofs, kind, ke_types, minv, fext, float(scene.damping_beta), u, v, cdof,
         np.ascontiguousarray(scene.normals), np.ascontiguousarray(scene.tangents), scene.gap0.copy(), cm,
         float(scene.disc_speed), fs, fmu, int(scene.primary), int(od), int(od + 1), out, ost,
     )  # fmt: skip
