@@ -1,0 +1,281 @@
+"""Continuum strip (QM6 plane stress) on the rigid disc: element (patch test, bending), natural frequencies
+against the cantilever closed forms, the explicit stability limit, energy conservation, kinematic and penalty
+contact laws, and mesh convergence of the drop-start response."""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from stickslip.fe.beam import cantilever_axial_frequencies, cantilever_bending_frequencies
+from stickslip.fe.continuum import (
+    assemble_strip,
+    build_continuum,
+    increments,
+    integrate_continuum,
+    omega_max_elementwise,
+    omega_max_global,
+    plane_stress_matrix,
+    quad_stiffness,
+    stable_time_step,
+    static_state,
+    strip_mesh,
+)
+from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+
+BEAM = BeamParams()
+FIG17 = FrictionTable.paper_fig17()
+
+
+def scene(nx=100, ny=1, speed=0.5, friction=FIG17, **kw):
+    contact = ContactParams(**kw.pop("contact", {}))
+    return build_continuum(BEAM, DiscParams(surface_speed_mm_s=speed), contact, friction, nx=nx, ny=ny, **kw)
+
+
+def without_contact(s):
+    e = np.zeros(0, np.int64)
+    return dataclasses.replace(s, contact_nodes=e, normals=np.zeros((0, 2)), tangents=np.zeros((0, 2)),
+                               gap0=np.zeros(0), primary=-1)  # fmt: skip
+
+
+# ------------------------------------------------------------------------------------------- element
+@settings(max_examples=25, deadline=None)
+@given(
+    st.lists(st.floats(-1.0, 1.0), min_size=6, max_size=6),
+    st.floats(-0.25, 0.25),
+    st.floats(-0.25, 0.25),
+)
+def test_patch_test_distorted_mesh_reproduces_linear_field(coef, dx, dy):
+    # 2x2 patch on [0,2]^2 with the centre node moved: a linear displacement field imposed on the boundary
+    # must be reproduced exactly inside (QM6's Taylor correction makes this hold on distorted shapes)
+    g = np.array([[x, y] for y in (0.0, 1.0, 2.0) for x in (0.0, 1.0, 2.0)])
+    g[4] += (dx, dy)
+    quads = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    D = plane_stress_matrix(210e3, 0.3)
+    K = np.zeros((18, 18))
+    for q in quads:
+        d = np.ravel(np.column_stack([2 * q, 2 * q + 1]))
+        K[np.ix_(d, d)] += quad_stiffness(g[q], D, 1.0)
+    a = np.asarray(coef)
+    u_exact = np.column_stack(
+        [a[0] + a[1] * g[:, 0] + a[2] * g[:, 1], a[3] + a[4] * g[:, 0] + a[5] * g[:, 1]]
+    )
+    u_exact = u_exact.ravel()
+    inner = np.array([8, 9])
+    bnd = np.setdiff1d(np.arange(18), inner)
+    u_in = np.linalg.solve(K[np.ix_(inner, inner)], -K[np.ix_(inner, bnd)] @ u_exact[bnd])
+    np.testing.assert_allclose(u_in, u_exact[inner], atol=1e-10 * (1 + np.abs(a).max()))
+
+
+def test_element_has_exactly_three_rigid_body_modes():
+    xy = np.array([[0.0, 0.0], [1.3, 0.1], [1.1, 0.9], [-0.1, 1.2]])
+    w = np.linalg.eigvalsh(quad_stiffness(xy, plane_stress_matrix(210e3, 0.3), 1.0))
+    assert np.sum(np.abs(w) < 1e-9 * w.max()) == 3 and w.min() > -1e-9 * w.max()
+
+
+def _tip_deflection(nx, ny, incompatible, P=1.0):
+    mesh = strip_mesh(BEAM, nx, ny)
+    K, *_ = assemble_strip(mesh, BEAM, incompatible)
+    fixed = np.zeros(mesh.n_dof, bool)
+    fixed[2 * mesh.clamp] = fixed[2 * mesh.clamp + 1] = True
+    f = np.zeros(mesh.n_dof)
+    end = np.arange(ny + 1) * (nx + 1) + nx
+    f[2 * end + 1] = -P / (ny + 1)
+    fr = np.nonzero(~fixed)[0]
+    u = np.zeros(mesh.n_dof)
+    u[fr] = spla.spsolve(K[fr][:, fr].tocsc(), f[fr])
+    return -u[2 * end + 1].mean()
+
+
+def test_incompatible_modes_bend_like_euler_bernoulli_and_plain_q4_locks():
+    exact = 1.0 * BEAM.length**3 / (3 * BEAM.E * BEAM.inertia)
+    qm6 = _tip_deflection(100, 1, True)
+    q4 = _tip_deflection(100, 1, False)
+    assert qm6 == pytest.approx(exact, rel=0.01)
+    assert q4 < 0.8 * exact  # shear locking of one plain bilinear element through the thickness
+    assert abs(qm6 / exact - 1) < 0.05 * abs(q4 / exact - 1)
+
+
+# ---------------------------------------------------------------------------------- natural frequencies
+def _clamped_modes(s, n=12):
+    fr = s.free
+    K = s.K[fr][:, fr].tocsc()
+    M = sp.diags(s.mass[fr]).tocsc()
+    w2, phi = spla.eigsh(K, k=n, M=M, sigma=0.0, which="LM")
+    order = np.argsort(w2)
+    return np.sqrt(w2[order]) / (2 * np.pi), phi[:, order], fr
+
+
+@pytest.mark.parametrize("nx,ny", [(100, 1), (200, 2)])
+def test_natural_frequencies_match_cantilever_closed_forms(nx, ny):
+    s = scene(nx, ny)
+    f, phi, fr = _clamped_modes(s, 14)
+    is_x = (fr % 2) == 0
+    axial = (phi[is_x] ** 2).sum(axis=0) > 0.5 * (phi**2).sum(axis=0)
+    bend = f[~axial]
+    np.testing.assert_allclose(bend[:3], cantilever_bending_frequencies(BEAM, 3), rtol=0.02)
+    assert f[axial][0] == pytest.approx(cantilever_axial_frequencies(BEAM, 1)[0], rel=0.02)
+
+
+# ------------------------------------------------------------------------------------------ time step
+def test_element_bound_is_conservative():
+    for nx, ny in [(100, 1), (40, 2)]:
+        s = scene(nx, ny)
+        assert omega_max_elementwise(s) >= omega_max_global(s)
+        assert stable_time_step(s, "element") <= stable_time_step(s, "global")
+
+
+@pytest.mark.parametrize("factor,stable", [(0.99, True), (1.01, False)])
+def test_global_step_is_the_true_stability_limit(factor, stable):
+    # drop start without contact excites every mode a little; just above 2/omega_max the top mode grows by
+    # ~30 % per step, just below it everything stays bounded
+    s = without_contact(scene(30, 1))
+    dt = factor * stable_time_step(s)
+    r = integrate_continuum(s, 3000 * dt, dt=dt, output_interval=dt)
+    assert (np.abs(r.y).max() < 1.0 and not r.extra["diverged"]) == stable
+
+
+def test_damping_shortens_the_stable_step():
+    s0 = scene(100, 1)
+    s1 = scene(100, 1, damping_beta=5e-9)
+    w = omega_max_global(s0)
+    xi = 0.5 * 5e-9 * w
+    assert stable_time_step(s1) == pytest.approx(stable_time_step(s0) * (math.sqrt(1 + xi**2) - xi))
+
+
+def test_increment_count_for_the_papers_run():
+    s = scene(100, 1)
+    dt = stable_time_step(s)
+    n = increments(s, 0.65, 1.0)
+    assert n == math.ceil(0.65 / dt - 1e-9)
+    # the ABAQUS banner's 3 688 747 increments at 0.65 s: same order, checked loosely (not tuned)
+    assert abs(n / 3_688_747 - 1) < 0.05
+
+
+# ------------------------------------------------------------------------------------------ energy
+def test_undamped_central_difference_conserves_its_discrete_energy():
+    s = without_contact(scene(20, 2))
+    dt = 0.9 * stable_time_step(s)
+    r = integrate_continuum(s, 400 * dt, dt=dt, output_interval=dt, record_state=True)
+    u, v = r.q_samples, r.v_samples
+    M = s.mass
+    # H = 1/2 v_{n+1/2} M v_{n+1/2} + 1/2 u_n K u_{n+1} - f (u_n + u_{n+1}) / 2 is exactly invariant
+    H = np.array([
+        0.5 * v[k] @ (M * v[k]) + 0.5 * u[k - 1] @ (s.K @ u[k]) - s.f @ (u[k - 1] + u[k]) / 2
+        for k in range(2, len(u))
+    ])  # fmt: skip
+    scale = 0.5 * max(v[k] @ (M * v[k]) for k in range(len(v)))
+    assert scale > 0
+    assert np.abs(H - H[0]).max() < 1e-9 * scale
+
+
+def test_stiffness_damping_gives_the_modal_decay_rate():
+    # free vibration in the first axial mode: beta K damping gives it xi = beta omega / 2, so its modal
+    # amplitude decays as exp(-xi omega t)
+    beta = 2e-7
+    s = dataclasses.replace(without_contact(scene(50, 1)), damping_beta=beta, f=np.zeros(102 * 2))
+    f, phi, fr = _clamped_modes(s, 14)
+    is_x = (fr % 2) == 0
+    k = int(np.nonzero((phi[is_x] ** 2).sum(axis=0) > 0.5 * (phi**2).sum(axis=0))[0][0])
+    w = 2 * np.pi * f[k]
+    mode = np.zeros(s.mesh.n_dof)
+    mode[fr] = phi[:, k] / np.abs(phi[:, k]).max()
+    dt = 0.9 * stable_time_step(s)
+    periods = 12
+    r = integrate_continuum(s, periods * 2 * np.pi / w, dt=dt, output_interval=dt, u0=1e-4 * mode,
+                            record_state=True)  # fmt: skip
+    q = r.q_samples @ (s.mass * mode)
+    per = int(round(2 * np.pi / w / dt))
+    ratio = np.abs(q[-per:]).max() / np.abs(q[:per]).max()
+    xi = 0.5 * beta * w
+    expected = math.exp(-xi * w * (len(q) - per) * dt)
+    assert expected < 0.7  # the check has teeth: a clearly visible decay
+    assert ratio == pytest.approx(expected, rel=0.05)
+
+
+# ------------------------------------------------------------------------------------------ contact
+@pytest.mark.parametrize("angle", [0.0, 30.0])
+def test_kinematic_contact_never_penetrates(angle):
+    s = scene(50, 1, speed=19.9, contact={"angle_deg": angle})
+    r = integrate_continuum(s, 0.003, output_interval=2e-6, record_state=True)
+    q = r.q_samples
+    d = 2 * s.contact_nodes
+    gaps = s.gap0 + q[:, d] * s.normals[:, 0] + q[:, d + 1] * s.normals[:, 1]
+    assert gaps.min() >= -1e-12
+    assert r.step_counts["stick"] + r.step_counts["slip"] > 0
+    assert np.abs(q).max() > 1e-6  # the strip did move
+
+
+@pytest.mark.parametrize("method", ["kinematic", "penalty"])
+def test_stick_has_zero_slip_velocity(method):
+    # friction far above what the strip can pull: the contact node must move with the disc exactly
+    big = FrictionTable((0.0, 0.6), (1e4, 0.9e4))
+    # counter-clockwise: friction compresses the strip and its moment about the axis presses the tip down
+    s = scene(50, 1, speed=0.5, friction=big, contact={"method": method, "penalty_stiffness": 1e3},
+              output_node="contact", disc_rotation="counterclockwise")  # fmt: skip
+    r = integrate_continuum(s, 0.002, output_interval=1e-5, initial_state="static")
+    assert r.step_counts["slip"] == 0 and r.step_counts["separation"] == 0
+    np.testing.assert_allclose(r.slip_velocity[1:], 0.0, atol=1e-12 * 0.5)
+    t = s.tangents[s.primary]
+    disp_t = (r.x - r.x[0]) * t[0] + (r.y - r.y[0]) * t[1]
+    np.testing.assert_allclose(disp_t[1:], 0.5 * r.t[1:], rtol=1e-6)
+
+
+def test_sticking_friction_at_the_lower_face_lifts_the_tip_off():
+    # clockwise disc: sticking friction stretches the strip; at the lower face (h/2 below the axis) it bends
+    # the free end upwards until the contact opens. Counter-clockwise presses the tip on: no separation.
+    big = FrictionTable((0.0, 0.6), (1e4, 0.9e4))
+    sep = {}
+    for rot in ("clockwise", "counterclockwise"):
+        s = scene(50, 1, speed=0.5, friction=big, disc_rotation=rot)
+        r = integrate_continuum(s, 0.002, output_interval=1e-5, initial_state="static")
+        sep[rot] = r.step_counts["separation"]
+    assert sep["clockwise"] > 0 and sep["counterclockwise"] == 0
+
+
+def test_penalty_normal_force_is_stiffness_times_previous_penetration():
+    kp = 50.0
+    s = scene(50, 1, contact={"method": "penalty", "penalty_stiffness": kp}, output_node="contact")
+    dt = 0.9 * stable_time_step(s)
+    r = integrate_continuum(s, 300 * dt, dt=dt, output_interval=dt)
+    n = s.normals[s.primary]
+    g_prev = s.gap0[s.primary] + r.x[:-1] * n[0] + r.y[:-1] * n[1]
+    np.testing.assert_allclose(r.normal_force[1:], np.where(g_prev < 0, -kp * g_prev, 0.0), rtol=1e-9,
+                               atol=1e-15)  # fmt: skip
+    assert (r.normal_force > 0).any()
+
+
+def test_static_state_carries_the_propped_cantilever_reaction():
+    s = scene(100, 1)
+    u, N = static_state(s)
+    assert N == pytest.approx(3 / 8 * BEAM.weight, rel=0.02)
+    c = s.contact_nodes[s.primary]
+    assert abs(u[2 * c : 2 * c + 2] @ s.normals[s.primary]) < 1e-14
+
+
+def test_tilted_contact_away_from_the_free_end_is_rejected():
+    with pytest.raises(ValueError, match="angle_deg"):
+        scene(50, 1, contact={"angle_deg": 30.0}, contact_position=50.0)
+    with pytest.raises(ValueError, match="angle_deg"):  # disc centre under the strip: it cuts the face
+        scene(50, 1, contact={"angle_deg": -30.0})
+    with pytest.raises(ValueError, match="method"):
+        scene(50, 1, contact={"method": "fixed_normal"})
+    with pytest.raises(ValueError, match="output_node"):
+        scene(50, 1, output_node="free_end_axis")
+
+
+# -------------------------------------------------------------------------------------- convergence
+def test_drop_start_peak_converges_with_the_mesh():
+    # peak horizontal displacement of the free-end lower corner (node 1) over the first 5 ms of a drop start
+    peaks = []
+    for nx, ny in [(100, 1), (200, 2), (400, 4)]:
+        r = integrate_continuum(scene(nx, ny), 0.005, output_interval=2e-6)
+        peaks.append(r.x.max())
+    peaks = np.array(peaks)
+    assert peaks.min() > 5e-5  # the propped-bending rotation of the lower face, order 1e-4 mm
+    np.testing.assert_allclose(peaks[:2], peaks[2], rtol=0.05)
