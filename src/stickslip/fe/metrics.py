@@ -54,6 +54,19 @@ def trend_sign(y: np.ndarray, rel: float = 0.05) -> int:
     return 0 if abs(s) <= rel * scale else int(np.sign(s))
 
 
+def _second_half_fractions(r: ExplicitResult, half: np.ndarray) -> dict:
+    """Stick/slip/separation fractions after half the run: from the increment counts when the integrator
+    kept them (``extra['second_half_counts']``), else from the output samples."""
+    if "second_half_counts" in r.extra:
+        f = r.fractions("second_half")
+    else:
+        st = r.state[half]
+        n = max(st.size, 1)
+        f = {"separation": float((st == 0).sum() / n), "stick": float((st == 1).sum() / n)}
+        f["slip"] = float((st == 2).sum() / n)
+    return {"stick_fraction": f["stick"], "slip_fraction": f["slip"], "separation_fraction": f["separation"]}
+
+
 def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None = None) -> dict:
     """Scalar metrics; units: mm, mm s-1, Hz, N, s, fractions [-]."""
     x = r.x - r.x[0]
@@ -71,9 +84,7 @@ def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None
         "max_abs_vertical_velocity": float(np.abs(r.vy).max()),
         "dominant_frequency": dominant_frequency(r.t[half], x[half]),
         "vertical_dominant_frequency": dominant_frequency(r.t[half], y[half]),
-        "stick_fraction": r.fractions("second_half")["stick"],
-        "slip_fraction": r.fractions("second_half")["slip"],
-        "separation_fraction": r.fractions("second_half")["separation"],
+        **_second_half_fractions(r, half),
         "stick_fraction_whole_run": r.fractions()["stick"],
         "separation_fraction_whole_run": r.fractions()["separation"],
         "static_normal_force": r.static_normal_force,
