@@ -1,32 +1,38 @@
-# Beam on rotating rigid disc (paper Sections 8-12, issue 5). Scene names come from config["fe"].
+# Beam on rotating disc (paper Sections 9-12, issues 5 and 11). Scene and reading names come from config["fe"].
 from snakemake.utils import validate
 
 validate(config, "../schemas/fe.schema.yaml")
 
-FE_SCENES = list(config["fe"]["scenes"])
-FE_SWEEPS = list(config["fe"]["sweeps"])
-FE_FRICTION = config["fe"]["friction_table"]
+FE = config["fe"]
+FE_SCENES = list(FE["scenes"])
+FE_READINGS = list(FE["readings"])
+FE_DEFAULT_READING = FE_READINGS[0]
+FE_SWEEPS = list(FE["sweeps"])
+FE_FRICTION = FE["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
 
 
-check_fe_config(config["fe"], ["results/onedof/friction_mu_vr.csv"], FE_STUDIES)
+check_fe_config(FE, ["results/onedof/friction_mu_vr.csv"], FE_STUDIES)
 
 
-rule fe_scene:
+rule fe_reading:
+    """Every paper scene under one FE reading, and the cross-scene ratios (one job: the scenes take
+    ~0.3 s CPU each, less than a job's start-up)."""
     input:
         friction=FE_FRICTION,
     output:
-        "results/fe/{scene}.nc",
+        scenes=expand("results/fe/{{fe_reading}}/{scene}.nc", scene=FE_SCENES),
+        cross="results/fe/{fe_reading}/cross_scene.nc",
     log:
-        "results/logs/fe_scene/{scene}.log",
+        "results/logs/fe_reading/{fe_reading}.log",
     benchmark:
-        "results/benchmarks/fe_scene/{scene}.tsv"
+        "results/benchmarks/fe_reading/{fe_reading}.tsv"
     wildcard_constraints:
-        scene="|".join(FE_SCENES),
+        fe_reading="|".join(FE_READINGS),
     conda:
         CONDA_ENV
     script:
-        "../scripts/fe_scene.py"
+        "../scripts/fe_reading.py"
 
 
 rule fe_sweep:
@@ -65,24 +71,62 @@ rule fe_study:
         "../scripts/fe_study.py"
 
 
-rule fe_cross_scene:
+rule fe_model_comparison:
+    """Continuum strip (the paper's kind of model) and beam on every paper scene, same window."""
     input:
-        sorted({f"results/fe/{s}.nc" for pair in config["fe"]["cross_scene"].values() for s in pair[:2]}),
+        friction=FE_FRICTION,
     output:
-        "results/fe/cross_scene.nc",
+        continuum=expand("results/fe/continuum/{scene}.nc", scene=FE_SCENES),
+        table="results/fe/model_comparison.csv",
+        dataset="results/fe/model_comparison.nc",
     log:
-        "results/logs/fe_cross_scene/cross_scene.log",
+        "results/logs/fe_model_comparison/model_comparison.log",
     benchmark:
-        "results/benchmarks/fe_cross_scene/cross_scene.tsv"
+        "results/benchmarks/fe_model_comparison/model_comparison.tsv"
     conda:
         CONDA_ENV
     script:
-        "../scripts/fe_cross.py"
+        "../scripts/fe_comparison.py"
+
+
+rule fe_increments:
+    output:
+        "results/fe/continuum_increments.nc",
+    log:
+        "results/logs/fe_increments/continuum_increments.log",
+    benchmark:
+        "results/benchmarks/fe_increments/continuum_increments.tsv"
+    conda:
+        CONDA_ENV
+    script:
+        "../scripts/fe_increments.py"
+
+
+rule fe_readings_claims:
+    """Every FE claim row evaluated under every FE reading (the claims table checks the default one)."""
+    input:
+        claims="config/claims/sections_09_12.yaml",
+        data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
+        + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
+        + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
+        + ["results/fe/continuum_increments.nc"],
+    output:
+        "results/fe/readings_claims.csv",
+    log:
+        "results/logs/fe_readings_claims/readings_claims.log",
+    conda:
+        CONDA_ENV
+    params:
+        readings=FE_READINGS,
+        default=FE_DEFAULT_READING,
+    script:
+        "../scripts/fe_readings_claims.py"
 
 
 rule fe_figure:
     input:
-        "results/fe/{scene}.nc",
+        beam=f"results/fe/{FE_DEFAULT_READING}/{{scene}}.nc",
+        continuum="results/fe/continuum/{scene}.nc",
     output:
         report(
             "results/figures/fe/{scene}.png",
@@ -102,38 +146,41 @@ rule fe_figure:
         "../scripts/fe_figure.py"
 
 
-FE_DATASETS = (
-    [f"results/fe/{s}.nc" for s in FE_SCENES]
-    + [f"results/fe/{s}.nc" for s in FE_SWEEPS]
-    + [f"results/fe/{s}.nc" for s in FE_STUDIES]
-    + ["results/fe/cross_scene.nc"]
-)
-
-
-rule fe_notebook:
+rule fe_summary_figures:
     input:
-        notebook="notebooks/section_09_12_beam_on_disc.py",
-        data=FE_DATASETS,
-        figures=[f"results/figures/fe/{s}.png" for s in FE_SCENES],
+        readings=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES),
+        convergence="results/fe/convergence.nc",
+        stability="results/fe/stability.nc",
     output:
-        report(
-            "results/notebooks/section_09_12_beam_on_disc.html",
-            caption=REPORT_CAPTION_FILE,
-            category="Notebooks",
-            labels={"notebook": "section_09_12_beam_on_disc"},
-        ),
+        readings="results/figures/fe/readings.png",
+        convergence="results/figures/fe/convergence.png",
+        stability="results/figures/fe/stability.png",
     log:
-        "results/logs/fe_notebook/section_09_12_beam_on_disc.log",
-    benchmark:
-        "results/benchmarks/fe_notebook/section_09_12_beam_on_disc.tsv"
+        "results/logs/fe_summary_figures/summary.log",
     conda:
         CONDA_ENV
     params:
-        python=sys.executable,
-    shell:
-        "{params.python} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
+        readings=FE_READINGS,
+        scenes=FE_SCENES,
+    script:
+        "../scripts/fe_summary_figures.py"
 
+
+FE_DATASETS = (
+    expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
+    + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
+    + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
+    + [
+        "results/fe/model_comparison.csv",
+        "results/fe/continuum_increments.nc",
+        "results/fe/readings_claims.csv",
+    ]
+)
+FE_FIGURES = [f"results/figures/fe/{s}.png" for s in FE_SCENES] + [
+    "results/figures/fe/readings.png",
+    "results/figures/fe/convergence.png",
+    "results/figures/fe/stability.png",
+]
 
 ALL_TARGETS.extend(FE_DATASETS)
-ALL_TARGETS.extend(f"results/figures/fe/{s}.png" for s in FE_SCENES)
-ALL_TARGETS.append("results/notebooks/section_09_12_beam_on_disc.html")
+ALL_TARGETS.extend(FE_FIGURES)

@@ -10,11 +10,12 @@ log_to(snakemake)  # noqa: F821
 cfg = snakemake.config["fe"]  # noqa: F821
 kind = snakemake.params.kind  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
-if kind == "convergence":  # one transient per mesh, with and without the surface offset
-    progress = track_calls(fe_pipeline, "run_scene", 2 * len(cfg[kind]["n_elements"]), label=kind, every=5.0)
+if kind == "convergence":  # one transient per mesh and time step
+    runs = len(cfg[kind]["n_elements"]) * len(cfg[kind].get("safety_factors", [0]))
+    progress = track_calls(fe_pipeline, "run_scene", runs, label=kind, every=5.0)
 else:  # the eigenvalue map is cheap; the cross-check transients are what takes time
     progress = track_calls(
-        fe_pipeline, "transient_growth_rate", len(cfg[kind].get("crosscheck", [])), label=kind, every=5.0
+        fe_pipeline, "transient_growth", len(cfg[kind].get("crosscheck", [])), label=kind, every=5.0
     )
 ds = (convergence_dataset if kind == "convergence" else stability_dataset)(cfg, friction)
 progress.finish()

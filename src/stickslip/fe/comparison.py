@@ -130,10 +130,62 @@ def comparison_rows(
                     "beam": b,
                     "relative_difference": rd,
                     "within_5_percent": bool(abs(rd) <= 0.05),
-                    "note": (notes or {}).get(f"{scene}.{q}", (notes or {}).get(scene, "")),
+                    "note": " ".join(
+                        str(notes[k]) for k in (f"{scene}.{q}", scene, q) if notes and k in notes
+                    ),
                 }
             )
     return rows
+
+
+def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], beam: Mapping[str, Mapping]):
+    """The comparison table as a dataset (scene x quantity), with the CPU times of both models."""
+    scenes = list(continuum)
+    qs = list(QUANTITIES)
+    arr = {k: np.full((len(scenes), len(qs)), np.nan) for k in ("continuum", "beam", "relative_difference")}
+    for r in rows:
+        i, j = scenes.index(r["scene"]), qs.index(r["quantity"])
+        for k in arr:
+            arr[k][i, j] = r[k]
+    dims = ("scene", "quantity")
+    ds = xr.Dataset(
+        {
+            "continuum_value": (dims, arr["continuum"], {"units": "1", "long_name": "continuum strip value"}),
+            "beam_value": (dims, arr["beam"], {"units": "1", "long_name": "beam model value"}),
+            "relative_difference": (
+                dims,
+                arr["relative_difference"],
+                {"units": "1", "long_name": "(beam - continuum) / |continuum|"},
+            ),
+            "continuum_cpu_time": (
+                "scene",
+                np.array([float(continuum[s]["cpu_time"]) for s in scenes]),
+                {"units": "s", "long_name": "CPU time of the continuum run"},
+            ),
+            "beam_cpu_time": (
+                "scene",
+                np.array([float(beam[s]["cpu_time"]) for s in scenes]),
+                {"units": "s", "long_name": "CPU time of the beam run"},
+            ),
+        },
+        coords={"scene": ("scene", scenes), "quantity": ("quantity", qs)},
+    )
+    ds["max_abs_relative_difference"] = (
+        "quantity",
+        np.nanmax(
+            np.abs(np.where(np.isfinite(arr["relative_difference"]), arr["relative_difference"], np.nan)), 0
+        ),
+        {"units": "1", "long_name": "largest |relative difference| over the scenes"},
+    )
+    ds.attrs.update(
+        {
+            "Conventions": "CF-1.10",
+            "title": "Beam vs continuum strip on the paper scenes",
+            "model_interpretation": INTERPRETATION,
+            "method": "both models from the same scene mapping and window",
+        }
+    )
+    return ds
 
 
 def increments_dataset(

@@ -1,0 +1,36 @@
+"""Continuum strip vs beam on every paper scene -> results/fe/continuum/*.nc, model_comparison.csv/.nc."""
+
+import csv
+from pathlib import Path
+
+from stickslip.fe.comparison import beam_metrics, comparison_dataset, comparison_rows, continuum_dataset
+from stickslip.fe.params import FrictionTable
+from stickslip.fe.pipeline import INTERPRETATION, comparison_mapping, effective_fe_config
+
+from fe_common import log_to, write_dataset
+
+log_to(snakemake)  # noqa: F821
+cfg = effective_fe_config(snakemake.config)  # noqa: F821
+cmp = cfg["comparison"]
+friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
+cont, beam = {}, {}
+for path in snakemake.output.continuum:  # noqa: F821
+    name = Path(path).stem
+    mapping = comparison_mapping(cfg, name)
+    nx, ny = cmp["mesh"]
+    cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
+    write_dataset(cont[name], path, scene=mapping, interpretation=INTERPRETATION, method={"mesh": [nx, ny]})
+    beam[name] = beam_metrics(mapping, friction)
+    print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
+rows = comparison_rows(cont, beam, cmp.get("notes", {}))
+with open(snakemake.output.table, "w", newline="") as f:  # noqa: F821
+    w = csv.DictWriter(f, fieldnames=list(rows[0]))
+    w.writeheader()
+    w.writerows(rows)
+write_dataset(
+    comparison_dataset(rows, cont, beam),
+    snakemake.output.dataset,  # noqa: F821
+    scene=dict(cmp),
+    interpretation=INTERPRETATION,
+    method={"kind": "model comparison", "duration": cmp["duration"]},
+)

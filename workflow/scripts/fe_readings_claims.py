@@ -1,0 +1,26 @@
+"""Every FE claim under every FE reading -> results/fe/readings_claims.csv (the claims table checks the
+default reading; here its dataset paths are re-pointed at each reading's datasets)."""
+
+import csv
+from dataclasses import asdict
+from functools import lru_cache
+
+from stickslip.fe.readings import claims_per_reading
+from stickslip.io.claims import load_claims
+from stickslip.io.netcdf import read_dataset
+
+from fe_common import log_to
+
+log_to(snakemake)  # noqa: F821
+claims = load_claims([snakemake.input.claims])  # noqa: F821
+results = claims_per_reading(
+    claims,
+    snakemake.params.readings,
+    snakemake.params.default,
+    lru_cache(maxsize=None)(read_dataset),  # noqa: F821
+)
+rows = [asdict(r) for r in results]
+with open(snakemake.output[0], "w", newline="") as f:  # noqa: F821
+    w = csv.DictWriter(f, fieldnames=list(rows[0]))
+    w.writeheader()
+    w.writerows(rows)
