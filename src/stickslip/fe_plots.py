@@ -113,23 +113,20 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_n.set_ylabel("contact force [mN]")
     ax_n.set_xlabel("time [s] (last window)")
     ax_n.legend(fontsize=7)
+    f_dom = float(beam["dominant_frequency"])
     for col, w in enumerate((0, -1)):
         ax = fig.add_subplot(gs[4, col])
-        mb = _window(beam, w)
+        t0, t1 = beam.detail_windows.values[w]
+        if col == 1 and f_dom > 0 and 10 / f_dom < t1 - t0:  # the last ten periods of the dominant mode
+            t0 = t1 - 10 / f_dom
+        mb = _window(beam, w) & (beam.time.values >= t0)
         _shade_states(ax, beam.time.values[mb], beam.contact_state.values[mb])
         for name, ds in models.items():
-            m = _window(ds, w)
-            ax.plot(
-                ds.time.values[m],
-                ds.horizontal_displacement.values[m] * UM,
-                lw=0.8,
-                label=name,
-                **MODEL_STYLE[name],
-            )
-        t0, t1 = beam.detail_windows.values[w]
-        ax.set_xlabel(
-            f"time [s]: {'first' if col == 0 else 'last'} window, every sample (shading: beam state)"
-        )
+            m = _window(ds, w) & (ds.time.values >= t0)
+            u = ds.horizontal_displacement.values[m] * UM
+            ax.plot(ds.time.values[m], u, lw=0.8, label=name, **MODEL_STYLE[name])
+        what = "first window" if col == 0 else f"last {t1 - t0:.3g} s"
+        ax.set_xlabel(f"time [s]: {what}, every sample (shading: beam state)")
         ax.set_ylabel("horizontal u [µm]")
         ax.legend(fontsize=7, loc="upper right")
     fig.suptitle(title or beam.attrs.get("title", ""), fontsize=11)
