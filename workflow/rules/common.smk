@@ -8,9 +8,25 @@ from snakemake.utils import validate
 
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
 
+import re  # noqa: E402
+from glob import glob  # noqa: E402
+
+from stickslip.ensemble import EnsembleSpec  # noqa: E402
+from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
 from stickslip.io.dense_map import dense_map  # noqa: E402
 
 validate(config, "../schemas/config.schema.yaml")
+
+#: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble); a bad value fails here.
+ENSEMBLE = config.get("ensemble")
+try:
+    EnsembleSpec.from_mapping(ENSEMBLE)
+except (ValueError, TypeError) as exc:
+    raise ValueError(str(exc) if str(exc).startswith("ensemble.") else f"ensemble: {exc}") from None
+
+CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
+#: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
+CLAIMED_DATASETS = set(required_datasets(load_claims(CLAIM_FILES), config["claims"]["readings"]))
 
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
@@ -26,18 +42,46 @@ REPORT_CAPTIONS = "results/report/captions.rst"
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
-def onedof_subconfig(reading=None, scene=None, method=None):
+def onedof_subconfig(reading=None, scene=None, method=None, methods=None):
     """The part of the config a 1-DOF job reads, passed as its params: editing a figure list, a notebook or
     another reading then does not re-run it (Snakemake re-runs jobs whose params change)."""
     sub = {k: v for k, v in ONEDOF.items() if k not in ("figures", "sweep_figures")}
     for key, name in (("readings", reading), ("scenes", scene), ("methods", method)):
         if name is not None:
             sub[key] = {name: ONEDOF[key][name]}
+    if methods is not None:
+        sub["methods"] = {m: ONEDOF["methods"][m] for m in methods}
     return {"onedof": sub}
 
 
 def onedof_dataset(scene, reading, method):
     return f"results/onedof/{scene}/{reading}/{method}.nc"
+
+
+def onedof_runs():
+    """scene -> sorted (reading, method) pairs that any figure, claim, notebook or the friction table reads:
+    one job per scene computes them all (each run takes milliseconds, a job's start-up seconds)."""
+    wanted = set(CLAIMED_DATASETS)
+    for fig in ONEDOF["figures"]:
+        wanted.update(figure_datasets(fig))
+    for name in config["notebooks"]:
+        wanted.update(notebook_inputs(name))
+    table = ONEDOF["friction_table"]
+    wanted.add(onedof_dataset(table["scene"], table["reading"], table["method"]))
+    runs = {}
+    for path in wanted:
+        m = re.fullmatch(r"results/onedof/([^/]+)/([^/]+)/([^/]+)\.nc", path)
+        if m and m[1] in ONEDOF["scenes"] and m[2] in ONEDOF["readings"] and m[3] in ONEDOF["methods"]:
+            runs.setdefault(m[1], set()).add((m[2], m[3]))
+    return {scene: sorted(pairs) for scene, pairs in sorted(runs.items())}
+
+
+def onedof_batch_subconfig(scene, runs):
+    """The config one scene's batch job reads (only its readings and methods)."""
+    sub = onedof_subconfig(scene=scene)["onedof"]
+    sub["readings"] = {r: ONEDOF["readings"][r] for r in sorted({r for r, _ in runs})}
+    sub["methods"] = {m: ONEDOF["methods"][m] for m in sorted({m for _, m in runs})}
+    return {"onedof": sub}
 
 
 def figure_datasets(figure):
@@ -99,11 +143,16 @@ def check_methods_config(cfg):
             )
         except (ParameterError, ValueError, TypeError, KeyError) as exc:
             raise ValueError(f"{key} (with methods_study.base_params): {exc}") from None
-    for i, entry in enumerate(cfg["methods"] + fm["methods"] + [cfg["paper_method"]]):
-        try:
-            make_solver(entry["solver"], **entry.get("settings", {}))
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"methods_study.methods: solver {entry.get('solver')!r}: {exc}") from None
+    from stickslip.studies.methods import expand_methods
+
+    groups = [("methods", cfg["methods"]), ("failure_map.methods", fm["methods"])]
+    groups.append(("paper_method", [cfg["paper_method"]]))
+    for key, entries in groups:  # every swept combination of settings, not only the fixed ones
+        for solver, settings, label in expand_methods(entries):
+            try:
+                make_solver(solver, **settings)
+            except (ValueError, TypeError, KeyError) as exc:
+                raise ValueError(f"methods_study.{key}: {label}: {exc}") from None
 
 
 # -- notebooks ------------------------------------------------------------------------------------------

@@ -25,6 +25,8 @@ rule fe_scene:
         scene="|".join(FE_SCENES),
     conda:
         CONDA_ENV
+    params:
+        ensemble=ENSEMBLE,
     script:
         "../scripts/fe_scene.py"
 

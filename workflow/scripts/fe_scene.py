@@ -1,8 +1,8 @@
-"""Run one beam-on-disc scene and write results/fe/<scene>.nc."""
+"""Run one beam-on-disc scene and write results/fe/<scene>.nc, with its perturbation ensemble."""
 
+from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import INTERPRETATION, run_scene, scene_dataset, scene_mapping
-from stickslip.io.progress import step_callback
 
 from fe_common import log_to, write_dataset
 
@@ -11,9 +11,18 @@ cfg = snakemake.config["fe"]  # noqa: F821
 name = snakemake.wildcards.scene  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 mapping = scene_mapping(cfg, name)
-r, m, scene = run_scene(mapping, friction, progress=step_callback(f"fe_scene {name}: time steps"))
-print(f"{name}: dt={r.dt:.4g} s, steps={r.n_steps}, cpu={r.cpu_time:.1f} s, fractions={r.fractions()}")
-ds = scene_dataset(name, mapping, r, m, scene)
+runs = []
+
+
+def build(scene_mapping_):
+    r, m, scene = run_scene(scene_mapping_, friction)
+    print(f"{name}: dt={r.dt:.4g} s, steps={r.n_steps}, cpu={r.cpu_time:.1f} s, fractions={r.fractions()}")
+    runs.append((r, scene))
+    return scene_dataset(name, scene_mapping_, r, m, scene)
+
+
+ds = ensemble_dataset(build, mapping, EnsembleSpec.from_mapping(snakemake.params.ensemble))  # noqa: F821
+r, scene = runs[0]
 write_dataset(
     ds,
     snakemake.output[0],
