@@ -52,6 +52,12 @@ CASES = {
         ["fe.sweeps.angle_sweep.base"],
     ),
     "methods_negative_mass": ({"methods_study": {"base_params": {"mass": -1.0}}}, ["mass"]),
+    "methods_negative_eta": (
+        {"methods_study": {"methods": [{"solver": "karnopp", "sweep": {"eta": [1.0e-3, -1.0]}}]}},
+        ["methods_study.methods", "eta"],
+    ),
+    "ode45_negative_rtol": ({"onedof": {"methods": {"ode45": {"rtol": -1.0e-3}}}}, ["ode45", "rtol"]),
+    "ensemble_bad_relative": ({"ensemble": {"relative": 0.5}}, ["ensemble", "relative"]),
 }
 
 BAD_CLAIMS = {

@@ -12,6 +12,15 @@ DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["map
 DENSE_RESOURCES = config["dense_map"]["resources"]
 
 
+def dense_map_subconfig(name):
+    """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
+    reading and method it runs (a job re-runs when any of them changes)."""
+    cfg = config["dense_map"]["maps"][name]
+    sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
+    section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
+    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}
+
+
 rule dense_map_chunk:
     """Metrics of one contiguous slice of a map's grid (flattened C order)."""
     output:
@@ -29,8 +38,7 @@ rule dense_map_chunk:
     resources:
         **DENSE_RESOURCES.get("dense_map_chunk", {}),
     params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],  # rerun when the map's config changes
-        chunk_size=lambda wc: DENSE_MAPS[wc.map].chunk_size,
+        config=lambda wc: dense_map_subconfig(wc.map),  # rerun when anything the map reads changes
     script:
         "../scripts/dense_map_chunk.py"
 
@@ -53,7 +61,7 @@ rule dense_map_merge:
     resources:
         **DENSE_RESOURCES.get("dense_map_merge", {}),
     params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],
+        config=lambda wc: dense_map_subconfig(wc.map),
     script:
         "../scripts/dense_map_merge.py"
 
