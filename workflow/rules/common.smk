@@ -4,25 +4,23 @@ import shlex
 import sys
 from pathlib import Path
 
-from snakemake.utils import validate
-
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
 
 import re  # noqa: E402
 from glob import glob  # noqa: E402
 
-from stickslip.ensemble import EnsembleSpec  # noqa: E402
+from stickslip.config import validate_config  # noqa: E402
 from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
 from stickslip.io.dense_map import dense_map  # noqa: E402
 
-validate(config, "../schemas/config.schema.yaml")
+#: Files a rule writes that the config may name as inputs before they exist.
+PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 
-#: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble); a bad value fails here.
+# Every config value is checked here, before any job starts; an error names its key (stickslip.config).
+validate_config(config, Path(workflow.basedir) / "workflow" / "schemas", producible=PRODUCIBLE)
+
+#: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")
-try:
-    EnsembleSpec.from_mapping(ENSEMBLE)
-except (ValueError, TypeError) as exc:
-    raise ValueError(str(exc) if str(exc).startswith("ensemble.") else f"ensemble: {exc}") from None
 
 CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
@@ -87,72 +85,6 @@ def onedof_batch_subconfig(scene, runs):
 def figure_datasets(figure):
     fig = ONEDOF["figures"][figure]
     return [onedof_dataset(fig["scene"], r, m) for r in fig["readings"] for m in fig["methods"]]
-
-
-# -- parse-time checks (a bad value fails before any job starts, naming the key) ----------------------
-
-
-def check_fe_config(fe_cfg, producible, studies=("convergence", "stability")):
-    """Resolve every FE scene and reference at parse time, so a bad value fails before any job starts,
-    with the config key named (the schema cannot see NaN, unknown scene names or a missing table)."""
-    from stickslip.fe.pipeline import scene_mapping
-    from stickslip.fe.scene import SceneParams
-
-    for name in fe_cfg["scenes"]:
-        mapping = scene_mapping(fe_cfg, name)
-        try:
-            SceneParams.from_mapping(
-                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-            )
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"fe.scenes.{name}: {exc}") from None
-    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
-    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in studies]
-    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
-    for key, scene in refs:
-        if scene not in fe_cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
-    table = fe_cfg["friction_table"]
-    if table not in producible and not Path(table).is_file():
-        raise ValueError(
-            f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes {producible})"
-        )
-
-
-def check_methods_config(cfg):
-    """Build every scene model and method of the study at parse time, so a bad value fails before any job
-    starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from stickslip.model import BeltModel, BeltParams
-    from stickslip.model.params import ParameterError
-    from stickslip.solvers import make_solver
-
-    fm = cfg["failure_map"]
-    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
-    runs += [
-        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
-        for i, v in enumerate(fm["values"])
-    ]
-    for key, scene, overrides in runs:
-        if scene not in cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
-        spec = cfg["scenes"][scene]
-        try:
-            BeltModel.build(
-                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
-                spec["variant"],
-            )
-        except (ParameterError, ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"{key} (with methods_study.base_params): {exc}") from None
-    from stickslip.studies.methods import expand_methods
-
-    groups = [("methods", cfg["methods"]), ("failure_map.methods", fm["methods"])]
-    groups.append(("paper_method", [cfg["paper_method"]]))
-    for key, entries in groups:  # every swept combination of settings, not only the fixed ones
-        for solver, settings, label in expand_methods(entries):
-            try:
-                make_solver(solver, **settings)
-            except (ValueError, TypeError, KeyError) as exc:
-                raise ValueError(f"methods_study.{key}: {label}: {exc}") from None
 
 
 # -- notebooks ------------------------------------------------------------------------------------------

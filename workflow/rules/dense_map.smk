@@ -1,13 +1,7 @@
 # Dense parameter maps (issue 7): a grid of exact-solver runs split into chunks, one job per chunk, merged
 # into one netCDF per map with the swept parameters as dimensions. Sizes live in config/dense_map.yaml.
-from snakemake.utils import validate
-
 from stickslip.io.dense_map import dense_map
 
-validate(config, "../schemas/dense_map.schema.yaml")
-
-
-# Parse every map now: a bad axis, parameter or chunk size fails here, naming its config key.
 DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["maps"]}
 DENSE_RESOURCES = config["dense_map"]["resources"]
 

@@ -1,15 +1,9 @@
 # Beam on rotating rigid disc (paper Sections 8-12, issue 5). Scene names come from config["fe"].
-from snakemake.utils import validate
-
-validate(config, "../schemas/fe.schema.yaml")
 
 FE_SCENES = list(config["fe"]["scenes"])
 FE_SWEEPS = list(config["fe"]["sweeps"])
 FE_FRICTION = config["fe"]["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
-
-
-check_fe_config(config["fe"], ["results/onedof/friction_mu_vr.csv"], FE_STUDIES)
 
 
 rule fe_scene:

@@ -58,15 +58,6 @@ ALL_TARGETS.extend(
 )
 
 
-# Resolve every run the figures need at parse time, so a bad scene/reading/method value fails before any
-# job starts, with the offending key named (the schema cannot see e.g. NaN or an unknown solver setting).
-from stickslip.io.scenes import figure_runs, run_spec
-
-for _fig in ONEDOF["figures"]:
-    for _scene, _reading, _method in figure_runs(config, _fig):
-        run_spec(config, _scene, _reading, _method)
-
-
 rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
     output:

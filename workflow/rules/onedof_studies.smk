@@ -1,16 +1,9 @@
 # 1-DOF studies beyond single scenes: Fig. 4 (Eq. 6), the parameter sweeps of Figs. 10-14, the critical belt
 # speed (Section 13) and the interpretation study (readings ranked by the claims they reproduce).
-from stickslip.io.scenes import sweep_spec
-
 SWEEPS = ONEDOF.get("sweeps", {})
 SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
 SWEEP_METHODS = sorted({sw.get("method", "exact") for sw in SWEEPS.values()})
 CRITICAL = ONEDOF.get("critical_speed")
-
-# Resolve every sweep for every claims reading at parse time: a bad sweep fails naming its key.
-for _sw in SWEEPS:
-    for _r in config["claims"]["readings"]:
-        sweep_spec(config, _sw, _r)
 
 
 rule eq6_curve:
