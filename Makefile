@@ -1,19 +1,33 @@
 # Two entry points (see README): `make figures` rebuilds every result, `make test` runs the test suite.
-# Both create the virtual environment .venv and install the package with everything it needs first.
+# Both create the virtual environment .venv and install exactly the lock (requirements/lock.txt: every
+# package pinned with its hashes, one file for every supported Python) plus the project itself first.
 
 PYTHON ?= python3
 VENV := .venv
 BIN := $(abspath $(VENV))/bin
 STAMP := $(VENV)/.installed
+LOCK := requirements/lock.txt
+UV_LOCK := requirements/uv.txt
 JOBS ?= 2
 export PATH := $(BIN):$(PATH)
+# uv resolves for every Python >= 3.11 at once (markers pick the right pins at install time).
+COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes
 
-.PHONY: setup figures test lint bench report clean slurm-test
+.PHONY: setup figures test lint bench report clean lock slurm-test
 
-$(STAMP): pyproject.toml
+# A fresh venv each time the lock changes, so what is installed is the lock and nothing else.
+$(STAMP): pyproject.toml $(LOCK) $(UV_LOCK)
+	rm -rf $(VENV)
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[pipeline,test]'
+	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r $(UV_LOCK)
+	$(BIN)/uv pip install --quiet --python $(BIN)/python --require-hashes -r $(LOCK)
+	$(BIN)/uv pip install --quiet --python $(BIN)/python --no-deps --no-build-isolation -e .
 	touch $(STAMP)
+
+# Re-resolve every dependency to its newest allowed version (then review the diff and rebuild).
+lock: $(STAMP)
+	$(COMPILE) pyproject.toml requirements/build.in --extra pipeline --extra test -o $(LOCK)
+	$(COMPILE) requirements/uv.in -o $(UV_LOCK)
 
 setup: $(STAMP)
 

@@ -101,3 +101,43 @@ def data_differences(path_a: Path, path_b: Path) -> list[str]:
             elif not np.array_equal(va, vb):
                 out.append(f"{name}: values differ")
     return out
+
+
+def decisions_flipped_within_spread(workdir: Path) -> list[str]:
+    """Claims whose decision flips when every claimed metric moves to its ensemble minimum or maximum.
+
+    Each dataset variable with a perturbation ensemble (``<name>_ensemble``) is replaced by the members'
+    minimum, then maximum, and every claim is re-evaluated: a claim decided on the base values
+    (reproduced / deviates) must keep that decision or become indistinguishable, never the opposite."""
+    from glob import glob
+
+    import numpy as np
+
+    from stickslip.io.claims import evaluate_all, load_claims, read_table
+    from stickslip.io.netcdf import read_dataset
+
+    claims = load_claims(glob(str(workdir / "config" / "claims" / "*.yaml")))
+    table = read_table(workdir / "results" / "claims" / "deviations.csv")
+    readings = sorted({r["reading"] for r in table} - {""})
+
+    def moved(reduce):
+        def open_dataset(path):
+            ds = read_dataset(workdir / path)
+            for name in [v for v in ds.data_vars if f"{v}_ensemble" in ds]:
+                ds[name] = (ds[name].dims, reduce(ds[f"{name}_ensemble"].values, axis=0))
+            return ds
+
+        return open_dataset
+
+    base = {
+        (r.claim, r.reading): r.status for r in evaluate_all(claims, readings, moved(lambda a, axis: a[0]))
+    }
+    flipped = []
+    for reduce in (np.nanmin, np.nanmax):
+        for r in evaluate_all(claims, readings, moved(reduce)):
+            before = base[(r.claim, r.reading)]
+            if before in ("reproduced", "deviates") and r.status not in (before, "indistinguishable"):
+                flipped.append(
+                    f"{r.claim} [{r.reading}] {before} -> {r.status} at the ensemble {reduce.__name__}"
+                )
+    return flipped

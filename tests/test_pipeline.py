@@ -1,20 +1,21 @@
-"""End to end: the whole DAG on the small CI config, then a second run that has nothing to do."""
+"""End to end: the whole DAG on the small CI config (one build shared by every module that reads it), then a
+second run that has nothing to do."""
 
+from glob import glob
+
+import numpy as np
 import pytest
 import xarray as xr
 
-from stickslip.io.claims import read_table
+from stickslip.io.claims import load_claims, read_table, readings_of
 
-from project_run import copy_project, run_snakemake
+from project_run import decisions_flipped_within_spread, run_snakemake, shared_small_run, small_config_args
 
 
 @pytest.fixture(scope="module")
-def small_run(tmp_path_factory, repo_root):
-    work = copy_project(tmp_path_factory.mktemp("pipeline"))
-    test_configs = sorted(str(p) for p in (work / "config" / "test").glob("*.yaml"))
-    args = ["--configfile", *test_configs] if test_configs else []
-    run_snakemake(work, *args)
-    return work, args
+def small_run(tmp_path_factory):
+    work = shared_small_run(tmp_path_factory)
+    return work, small_config_args(work)
 
 
 @pytest.mark.pipeline
@@ -28,7 +29,7 @@ def test_all_targets_exist_and_second_run_does_nothing(small_run):
 
 
 @pytest.mark.pipeline
-def test_datasets_have_provenance(small_run):
+def test_datasets_have_provenance_and_software_versions(small_run):
     work, _ = small_run
     paths = sorted((work / "results" / "onedof" / "fig02").rglob("*.nc"))  # scene datasets (time series)
     assert paths
@@ -36,10 +37,35 @@ def test_datasets_have_provenance(small_run):
         assert ds.attrs["Conventions"].startswith("CF-")
         assert "interpretation" in ds.attrs and "method_solver" in ds.attrs
         assert ds.displacement.attrs["units"] == "mm"
+        for package in ("numpy", "scipy", "xarray", "netCDF4", "blas"):
+            assert ds.attrs[f"software_{package}"], package
 
 
 @pytest.mark.pipeline
-def test_small_run_deviations_table_has_every_claim(small_run):
+def test_small_run_deviations_table_has_one_row_per_claim_and_reading(small_run):
+    """Every claim row of config/claims/*.yaml appears once per reading it is checked in, and nothing else."""
     work, _ = small_run
     rows = read_table(work / "results" / "claims" / "deviations.csv")
-    assert rows and {r["status"] for r in rows} <= {"reproduced", "deviates", "not-comparable"}
+    claims = load_claims(glob(str(work / "config" / "claims" / "*.yaml")))
+    readings = sorted({r["reading"] for r in rows if r["reading"]})
+    expected = sorted((c["id"], r) for c in claims for r in readings_of(c, readings))
+    assert sorted((r["claim"], r["reading"]) for r in rows) == expected
+
+
+@pytest.mark.pipeline
+def test_every_comparable_claim_has_a_measured_spread(small_run):
+    """Each decided or indistinguishable claim read datasets with a perturbation ensemble: its spread is a
+    number, never missing - so no status rests on digits nobody measured."""
+    work, _ = small_run
+    rows = read_table(work / "results" / "claims" / "deviations.csv")
+    measured = [r for r in rows if r["status"] in ("reproduced", "deviates", "indistinguishable")]
+    assert measured
+    missing = [f"{r['claim']} [{r['reading']}]" for r in measured if not np.isfinite(float(r["spread"]))]
+    missing = [m for m in missing if "inf" not in m]
+    assert not missing, "claims decided without a measured spread:\n" + "\n".join(missing)
+
+
+@pytest.mark.pipeline
+def test_no_decided_status_flips_when_measured_values_move_within_their_spread(small_run):
+    work, _ = small_run
+    assert not decisions_flipped_within_spread(work)

@@ -4,13 +4,27 @@ import shlex
 import sys
 from pathlib import Path
 
-from snakemake.utils import validate
-
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
 
+import re  # noqa: E402
+from glob import glob  # noqa: E402
+
+from stickslip.config import validate_config  # noqa: E402
+from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
 from stickslip.io.dense_map import dense_map  # noqa: E402
 
-validate(config, "../schemas/config.schema.yaml")
+#: Files a rule writes that the config may name as inputs before they exist.
+PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
+
+# Every config value is checked here, before any job starts; an error names its key (stickslip.config).
+validate_config(config, Path(workflow.basedir) / "workflow" / "schemas", producible=PRODUCIBLE)
+
+#: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
+ENSEMBLE = config.get("ensemble")
+
+CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
+#: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
+CLAIMED_DATASETS = set(required_datasets(load_claims(CLAIM_FILES), config["claims"]["readings"]))
 
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
@@ -26,13 +40,15 @@ REPORT_CAPTIONS = "results/report/captions.rst"
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
-def onedof_subconfig(reading=None, scene=None, method=None):
+def onedof_subconfig(reading=None, scene=None, method=None, methods=None):
     """The part of the config a 1-DOF job reads, passed as its params: editing a figure list, a notebook or
     another reading then does not re-run it (Snakemake re-runs jobs whose params change)."""
     sub = {k: v for k, v in ONEDOF.items() if k not in ("figures", "sweep_figures")}
     for key, name in (("readings", reading), ("scenes", scene), ("methods", method)):
         if name is not None:
             sub[key] = {name: ONEDOF[key][name]}
+    if methods is not None:
+        sub["methods"] = {m: ONEDOF["methods"][m] for m in methods}
     return {"onedof": sub}
 
 
@@ -40,70 +56,35 @@ def onedof_dataset(scene, reading, method):
     return f"results/onedof/{scene}/{reading}/{method}.nc"
 
 
+def onedof_runs():
+    """scene -> sorted (reading, method) pairs that any figure, claim, notebook or the friction table reads:
+    one job per scene computes them all (each run takes milliseconds, a job's start-up seconds)."""
+    wanted = set(CLAIMED_DATASETS)
+    for fig in ONEDOF["figures"]:
+        wanted.update(figure_datasets(fig))
+    for name in config["notebooks"]:
+        wanted.update(notebook_inputs(name))
+    table = ONEDOF["friction_table"]
+    wanted.add(onedof_dataset(table["scene"], table["reading"], table["method"]))
+    runs = {}
+    for path in wanted:
+        m = re.fullmatch(r"results/onedof/([^/]+)/([^/]+)/([^/]+)\.nc", path)
+        if m and m[1] in ONEDOF["scenes"] and m[2] in ONEDOF["readings"] and m[3] in ONEDOF["methods"]:
+            runs.setdefault(m[1], set()).add((m[2], m[3]))
+    return {scene: sorted(pairs) for scene, pairs in sorted(runs.items())}
+
+
+def onedof_batch_subconfig(scene, runs):
+    """The config one scene's batch job reads (only its readings and methods)."""
+    sub = onedof_subconfig(scene=scene)["onedof"]
+    sub["readings"] = {r: ONEDOF["readings"][r] for r in sorted({r for r, _ in runs})}
+    sub["methods"] = {m: ONEDOF["methods"][m] for m in sorted({m for _, m in runs})}
+    return {"onedof": sub}
+
+
 def figure_datasets(figure):
     fig = ONEDOF["figures"][figure]
     return [onedof_dataset(fig["scene"], r, m) for r in fig["readings"] for m in fig["methods"]]
-
-
-# -- parse-time checks (a bad value fails before any job starts, naming the key) ----------------------
-
-
-def check_fe_config(fe_cfg, producible, studies=("convergence", "stability")):
-    """Resolve every FE scene and reference at parse time, so a bad value fails before any job starts,
-    with the config key named (the schema cannot see NaN, unknown scene names or a missing table)."""
-    from stickslip.fe.pipeline import scene_mapping
-    from stickslip.fe.scene import SceneParams
-
-    for name in fe_cfg["scenes"]:
-        mapping = scene_mapping(fe_cfg, name)
-        try:
-            SceneParams.from_mapping(
-                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-            )
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"fe.scenes.{name}: {exc}") from None
-    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
-    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in studies]
-    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
-    for key, scene in refs:
-        if scene not in fe_cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
-    table = fe_cfg["friction_table"]
-    if table not in producible and not Path(table).is_file():
-        raise ValueError(
-            f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes {producible})"
-        )
-
-
-def check_methods_config(cfg):
-    """Build every scene model and method of the study at parse time, so a bad value fails before any job
-    starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from stickslip.model import BeltModel, BeltParams
-    from stickslip.model.params import ParameterError
-    from stickslip.solvers import make_solver
-
-    fm = cfg["failure_map"]
-    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
-    runs += [
-        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
-        for i, v in enumerate(fm["values"])
-    ]
-    for key, scene, overrides in runs:
-        if scene not in cfg["scenes"]:
-            raise ValueError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
-        spec = cfg["scenes"][scene]
-        try:
-            BeltModel.build(
-                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
-                spec["variant"],
-            )
-        except (ParameterError, ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"{key} (with methods_study.base_params): {exc}") from None
-    for i, entry in enumerate(cfg["methods"] + fm["methods"] + [cfg["paper_method"]]):
-        try:
-            make_solver(entry["solver"], **entry.get("settings", {}))
-        except (ValueError, TypeError, KeyError) as exc:
-            raise ValueError(f"methods_study.methods: solver {entry.get('solver')!r}: {exc}") from None
 
 
 # -- notebooks ------------------------------------------------------------------------------------------

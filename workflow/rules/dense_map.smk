@@ -1,15 +1,18 @@
 # Dense parameter maps (issue 7): a grid of exact-solver runs split into chunks, one job per chunk, merged
 # into one netCDF per map with the swept parameters as dimensions. Sizes live in config/dense_map.yaml.
-from snakemake.utils import validate
-
 from stickslip.io.dense_map import dense_map
 
-validate(config, "../schemas/dense_map.schema.yaml")
-
-
-# Parse every map now: a bad axis, parameter or chunk size fails here, naming its config key.
 DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["maps"]}
 DENSE_RESOURCES = config["dense_map"]["resources"]
+
+
+def dense_map_subconfig(name):
+    """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
+    reading and method it runs (a job re-runs when any of them changes)."""
+    cfg = config["dense_map"]["maps"][name]
+    sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
+    section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
+    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}
 
 
 rule dense_map_chunk:
@@ -29,8 +32,7 @@ rule dense_map_chunk:
     resources:
         **DENSE_RESOURCES.get("dense_map_chunk", {}),
     params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],  # rerun when the map's config changes
-        chunk_size=lambda wc: DENSE_MAPS[wc.map].chunk_size,
+        config=lambda wc: dense_map_subconfig(wc.map),  # rerun when anything the map reads changes
     script:
         "../scripts/dense_map_chunk.py"
 
@@ -53,7 +55,7 @@ rule dense_map_merge:
     resources:
         **DENSE_RESOURCES.get("dense_map_merge", {}),
     params:
-        map=lambda wc: config["dense_map"]["maps"][wc.map],
+        config=lambda wc: dense_map_subconfig(wc.map),
     script:
         "../scripts/dense_map_merge.py"
 

@@ -1,7 +1,5 @@
 # Beam on rotating disc (paper Sections 9-12, issues 5 and 11). Scene and reading names come from config["fe"].
-from snakemake.utils import validate
-
-validate(config, "../schemas/fe.schema.yaml")
+# The config (schema and references) is checked once for the whole workflow by stickslip.config.
 
 FE = config["fe"]
 FE_SCENES = list(FE["scenes"])
@@ -10,9 +8,6 @@ FE_DEFAULT_READING = FE_READINGS[0]
 FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
-
-
-check_fe_config(FE, ["results/onedof/friction_mu_vr.csv"], FE_STUDIES)
 
 
 rule fe_reading:
@@ -31,6 +26,8 @@ rule fe_reading:
         fe_reading="|".join(FE_READINGS),
     conda:
         CONDA_ENV
+    params:
+        ensemble=ENSEMBLE,
     script:
         "../scripts/fe_reading.py"
 

@@ -1,12 +1,7 @@
 # Issue 3: exact reference vs integration methods (work-precision charts, failure map, notebook).
-from snakemake.utils import validate
-
-validate(config, "../schemas/methods.schema.yaml")
 
 METHODS_SCENES = list(config["methods_study"]["scenes"])
 
-
-check_methods_config(config["methods_study"])
 METHODS_NC = expand("results/methods/{scene}_work_precision.nc", scene=METHODS_SCENES)
 METHODS_PNG = expand("results/figures/methods/{scene}_work_precision.png", scene=METHODS_SCENES)
 

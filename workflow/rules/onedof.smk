@@ -1,47 +1,54 @@
 # 1-DOF mass on a moving belt: one dataset per scene x reading x method, one rule per paper figure kind.
 
 
-rule simulate_onedof:
-    output:
-        "results/onedof/{scene}/{reading}/{method}.nc",
-    log:
-        "results/logs/simulate_onedof/{scene}/{reading}/{method}.log",
-    benchmark:
-        "results/benchmarks/simulate_onedof/{scene}/{reading}/{method}.tsv"
-    wildcard_constraints:
-        scene="|".join(ONEDOF["scenes"]),
-        reading="|".join(ONEDOF["readings"]),
-        method="|".join(ONEDOF["methods"]),
-    conda:
-        CONDA_ENV
-    params:
-        config=lambda wc: onedof_subconfig(wc.reading, wc.scene, wc.method),
-    script:
-        "../scripts/simulate_onedof.py"
+for _scene, _runs in onedof_runs().items():
+
+    rule:
+        """Every reading x method of one scene that a figure, claim or notebook reads, in one job."""
+        name:
+            f"simulate_onedof_{_scene}"
+        output:
+            [onedof_dataset(_scene, r, m) for r, m in _runs],
+        log:
+            f"results/logs/simulate_onedof/{_scene}.log",
+        benchmark:
+            f"results/benchmarks/simulate_onedof/{_scene}.tsv"
+        conda:
+            CONDA_ENV
+        params:
+            config=onedof_batch_subconfig(_scene, _runs),
+            scene=_scene,
+            runs=_runs,
+            ensemble=ENSEMBLE,
+            ensemble_outputs=sorted(CLAIMED_DATASETS & {onedof_dataset(_scene, r, m) for r, m in _runs}),
+        script:
+            "../scripts/simulate_onedof.py"
 
 
-rule onedof_figure:
-    """Time series (displacement and velocity, Fig. 2 style) or phase plot (Fig. 3 style) of one reading."""
-    input:
-        lambda wc: [
-            onedof_dataset(ONEDOF["figures"][wc.figure]["scene"], wc.reading, m)
-            for m in ONEDOF["figures"][wc.figure]["methods"]
-        ],
-    output:
-        "results/figures/{figure}/{reading}.png",
-    log:
-        "results/logs/onedof_figure/{figure}/{reading}.log",
-    benchmark:
-        "results/benchmarks/onedof_figure/{figure}/{reading}.tsv"
-    wildcard_constraints:
-        figure="|".join(ONEDOF["figures"]),
-    conda:
-        CONDA_ENV
-    params:
-        figure=lambda wc: ONEDOF["figures"][wc.figure],
-        methods=lambda wc: ONEDOF["figures"][wc.figure]["methods"],
-    script:
-        "../scripts/plot_onedof_figure.py"
+for _figure, _spec in ONEDOF["figures"].items():
+
+    rule:
+        """One paper figure (time series, phase plot or velocity) for every reading, methods overlaid."""
+        name:
+            f"onedof_figure_{_figure}"
+        input:
+            figure_datasets(_figure),
+        output:
+            [f"results/figures/{_figure}/{r}.png" for r in _spec["readings"]],
+        log:
+            f"results/logs/onedof_figure/{_figure}.log",
+        benchmark:
+            f"results/benchmarks/onedof_figure/{_figure}.tsv"
+        conda:
+            CONDA_ENV
+        params:
+            figure=_spec,
+            datasets={
+                r: {m: onedof_dataset(_spec["scene"], r, m) for m in _spec["methods"]}
+                for r in _spec["readings"]
+            },
+        script:
+            "../scripts/plot_onedof_figure.py"
 
 
 ALL_TARGETS.extend(
@@ -51,23 +58,8 @@ ALL_TARGETS.extend(
 )
 
 
-# Resolve every run the figures need at parse time, so a bad scene/reading/method value fails before any
-# job starts, with the offending key named (the schema cannot see e.g. NaN or an unknown solver setting).
-from stickslip.io.scenes import figure_runs, run_spec
-
-for _fig in ONEDOF["figures"]:
-    for _scene, _reading, _method in figure_runs(config, _fig):
-        run_spec(config, _scene, _reading, _method)
-
-
 rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
-    input:
-        lambda wc: onedof_dataset(
-            ONEDOF["friction_table"]["scene"],
-            ONEDOF["friction_table"]["reading"],
-            ONEDOF["friction_table"]["method"],
-        ),
     output:
         csv="results/onedof/friction_mu_vr.csv",
         nc="results/onedof/friction_mu_vr.nc",
@@ -84,6 +76,7 @@ rule friction_table:
             ONEDOF["friction_table"]["scene"],
             ONEDOF["friction_table"]["method"],
         ),
+        ensemble=ENSEMBLE,
     script:
         "../scripts/friction_table.py"
 

@@ -1,15 +1,9 @@
 # 1-DOF studies beyond single scenes: Fig. 4 (Eq. 6), the parameter sweeps of Figs. 10-14, the critical belt
 # speed (Section 13) and the interpretation study (readings ranked by the claims they reproduce).
-from stickslip.io.scenes import sweep_spec
-
 SWEEPS = ONEDOF.get("sweeps", {})
 SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
+SWEEP_METHODS = sorted({sw.get("method", "exact") for sw in SWEEPS.values()})
 CRITICAL = ONEDOF.get("critical_speed")
-
-# Resolve every sweep for every claims reading at parse time: a bad sweep fails naming its key.
-for _sw in SWEEPS:
-    for _r in config["claims"]["readings"]:
-        sweep_spec(config, _sw, _r)
 
 
 rule eq6_curve:
@@ -24,7 +18,8 @@ rule eq6_curve:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(),
+        config=onedof_subconfig(method="exact"),
+        ensemble=ENSEMBLE,
     script:
         "../scripts/eq6_curve.py"
 
@@ -42,45 +37,56 @@ rule onedof_sweeps:
     conda:
         CONDA_ENV
     params:
-        config=lambda wc: onedof_subconfig(wc.reading),
+        config=lambda wc: onedof_subconfig(wc.reading, methods=SWEEP_METHODS),
+        ensemble=ENSEMBLE,
+        ensemble_outputs=lambda wc: sorted(
+            CLAIMED_DATASETS & {sweep_dataset(s, wc.reading, d) for s in SWEEPS for d in (False, True)}
+        ),
     script:
         "../scripts/onedof_sweeps.py"
 
 
-rule sweep_figure:
-    input:
-        paper=lambda wc: sweep_dataset(SWEEP_FIGURES[wc.figure]["sweep"], wc.reading),
-        dense=lambda wc: sweep_dataset(SWEEP_FIGURES[wc.figure]["sweep"], wc.reading, True),
-    output:
-        "results/figures/{figure}/{reading}.png",
-    log:
-        "results/logs/sweep_figure/{figure}/{reading}.log",
-    benchmark:
-        "results/benchmarks/sweep_figure/{figure}/{reading}.tsv"
-    wildcard_constraints:
-        figure="|".join(SWEEP_FIGURES) or "none",
-    conda:
-        CONDA_ENV
-    params:
-        title=lambda wc: SWEEP_FIGURES[wc.figure].get("title", wc.figure),
-    script:
-        "../scripts/plot_sweep_figure.py"
+for _figure, _spec in SWEEP_FIGURES.items():
+
+    rule:
+        """Figs. 10-14: the paper's curves beside the dense sweep's metrics, every reading in one job."""
+        name:
+            f"sweep_figure_{_figure}"
+        input:
+            [sweep_dataset(_spec["sweep"], r, d) for r in _spec["readings"] for d in (False, True)],
+        output:
+            [f"results/figures/{_figure}/{r}.png" for r in _spec["readings"]],
+        log:
+            f"results/logs/sweep_figure/{_figure}.log",
+        benchmark:
+            f"results/benchmarks/sweep_figure/{_figure}.tsv"
+        conda:
+            CONDA_ENV
+        params:
+            title=_spec.get("title", _figure),
+            readings=_spec["readings"],
+            datasets={
+                r: [sweep_dataset(_spec["sweep"], r, d) for d in (False, True)] for r in _spec["readings"]
+            },
+        script:
+            "../scripts/plot_sweep_figure.py"
 
 
 rule critical_speed:
-    """Continuation over belt speed with the exact solver for one reading."""
+    """Continuation over belt speed with the exact solver, every reading in one job."""
     output:
-        "results/onedof/critical_speed/{reading}.nc",
+        expand("results/onedof/critical_speed/{reading}.nc", reading=CRITICAL["readings"] if CRITICAL else []),
     log:
-        "results/logs/critical_speed/{reading}.log",
+        "results/logs/critical_speed/all.log",
     benchmark:
-        "results/benchmarks/critical_speed/{reading}.tsv"
-    wildcard_constraints:
-        reading="|".join(ONEDOF["readings"]),
+        "results/benchmarks/critical_speed/all.tsv"
     conda:
         CONDA_ENV
     params:
-        config=lambda wc: onedof_subconfig(wc.reading),
+        config=onedof_subconfig(method="exact"),
+        readings=CRITICAL["readings"] if CRITICAL else [],
+        ensemble=ENSEMBLE,
+        ensemble_outputs=sorted(CLAIMED_DATASETS),
     script:
         "../scripts/critical_speed.py"
 

@@ -15,7 +15,13 @@ rule report_captions:
     conda:
         CONDA_ENV
     params:
-        figures=lambda wc: sorted(ONEDOF["figures"]),  # rerun when the figure list changes
+        # everything the captions read: rerun when a figure, FE scene, methods scene or notebook changes
+        config={
+            "onedof": {"figures": ONEDOF["figures"]},
+            "fe": {"scenes": config.get("fe", {}).get("scenes", {})},
+            "methods_study": {"scenes": config.get("methods_study", {}).get("scenes", {})},
+            "notebooks": config["notebooks"],
+        },
     script:
         "../scripts/report_captions.py"
 

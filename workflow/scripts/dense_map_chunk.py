@@ -11,7 +11,7 @@ from stickslip.io.progress import step_callback
 
 log_to(snakemake)  # noqa: F821
 name, chunk = snakemake.wildcards.map, int(snakemake.wildcards.chunk)  # noqa: F821
-dm = dense_map(snakemake.config, name)  # noqa: F821
+dm = dense_map(snakemake.params.config, name)  # noqa: F821
 points = chunk_points(dm.axes, dm.chunk_size, chunk)
 logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chunks, len(points), dm.points)
 start = time.perf_counter()

@@ -8,7 +8,7 @@ from stickslip.analysis.sweep import align_chunks, merge_chunks
 from stickslip.io.netcdf import read_dataset, write_dataset
 
 log_to(snakemake)  # noqa: F821
-dm = dense_map(snakemake.config, snakemake.wildcards.map)  # noqa: F821
+dm = dense_map(snakemake.params.config, snakemake.wildcards.map)  # noqa: F821
 chunks = align_chunks([read_dataset(path) for path in snakemake.input])  # noqa: F821
 ds = merge_chunks(dm.axes, chunks)
 failed = int((ds.solver_ok.values != 1).sum())

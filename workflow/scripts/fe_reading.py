@@ -1,7 +1,9 @@
-"""Every paper scene under one FE reading -> results/fe/<reading>/<scene>.nc, plus the cross-scene ratios."""
+"""Every paper scene under one FE reading -> results/fe/<reading>/<scene>.nc (each with its perturbation
+ensemble), plus the cross-scene ratios."""
 
 from pathlib import Path
 
+from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import (
     INTERPRETATION,
@@ -17,11 +19,12 @@ log_to(snakemake)  # noqa: F821
 cfg = effective_fe_config(snakemake.config)  # noqa: F821
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
+spec = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821
 built = {}
 for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
     mapping = scene_mapping(cfg, name, reading)
-    ds = scene_dataset(mapping, friction, name)
+    ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mapping, spec)
     ds.attrs["fe_reading"] = reading
     print(f"{reading}/{name}: {ds.attrs['method']}, cpu={float(ds['cpu_time']):.2f} s", flush=True)
     write_dataset(ds, path, scene=mapping, interpretation=INTERPRETATION, method={"fe_reading": reading})

@@ -1,58 +1,25 @@
 """Thin wiring: Fig. 17's mu(v_r) along the baseline solution -> CSV (the FE friction law) + netCDF."""
 
-import numpy as np
-import xarray as xr
+import os
+from functools import partial
 
-from stickslip.analysis.friction_curve import friction_along_solution, friction_table
-from stickslip.io.netcdf import read_dataset, write_dataset
+from stickslip.ensemble import EnsembleSpec, ensemble_dataset
+from stickslip.io.netcdf import write_dataset
 from stickslip.io.scenes import run_spec
+from stickslip.studies.onedof import friction_table_from_config
 
-cfg = snakemake.params.table
-spec = run_spec(snakemake.params.config, cfg["scene"], cfg["reading"], cfg["method"])
-ds = read_dataset(snakemake.input[0])
-law = spec.model.friction
-speed, mu = friction_along_solution(
-    ds.velocity.values, ds.belt_velocity.values, ds.phase.values, law, spec.params.normal_force
-)
-table_v, table_mu = friction_table(speed, mu, spec.params.mu_s, int(cfg["bins"]))
-with open(snakemake.output.csv + ".tmp", "w") as fh:
+table, config = snakemake.params.table, snakemake.params.config
+ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
+ds = ensemble_dataset(partial(friction_table_from_config, table=table), config, ensemble)
+tmp = snakemake.output.csv + ".tmp"
+with open(tmp, "w") as fh:
     fh.write("relative_velocity_mm_per_s,mu\n")
-    for v, m in zip(table_v, table_mu):
+    for v, m in zip(ds.relative_speed.values, ds.mu.values):
         fh.write(f"{v:.10g},{m:.10g}\n")
-import os  # noqa: E402
-
-os.replace(snakemake.output.csv + ".tmp", snakemake.output.csv)
-out = xr.Dataset(
-    {
-        "mu": ("relative_speed", table_mu, {"units": "1", "long_name": "friction coefficient |F|/N"}),
-        "sample_relative_speed": (
-            "sample",
-            speed,
-            {"units": "mm s-1", "long_name": "|v_r| of each slip sample"},
-        ),
-        "sample_mu": ("sample", mu, {"units": "1", "long_name": "|F|/N of each slip sample"}),
-        "max_relative_speed": (
-            (),
-            float(np.max(speed)) if len(speed) else np.nan,
-            {"units": "mm s-1", "long_name": "largest relative speed along the solution"},
-        ),
-        "mu_at_max_relative_speed": (
-            (),
-            float(table_mu[-1]),
-            {"units": "1", "long_name": "friction coefficient at the largest relative speed"},
-        ),
-        "mu_static": ((), spec.params.mu_s, {"units": "1", "long_name": "static friction coefficient"}),
-    },
-    coords={
-        "relative_speed": (
-            "relative_speed",
-            table_v,
-            {"units": "mm s-1", "long_name": "relative speed |v_r|"},
-        )
-    },
-)
+os.replace(tmp, snakemake.output.csv)
+spec = run_spec(config, table["scene"], table["reading"], table["method"])
 write_dataset(
-    out,
+    ds,
     snakemake.output.nc,
     scene=spec.scene_attrs(),
     interpretation=spec.interpretation(),

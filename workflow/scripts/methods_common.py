@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import itertools
 import json
 import os
 
@@ -13,28 +12,11 @@ from stickslip.analysis.errors import measure_run, segment_cycle_metrics
 from stickslip.analysis.failure import FAILURE_KINDS, classify
 from stickslip.model import BeltModel, BeltParams
 from stickslip.solvers import make_solver
+from stickslip.studies.methods import expand_methods  # noqa: F401 (re-exported to the scripts)
 
 INTERPRETATION = (
     "consistent friction law F = -mu_s N (sgn(v_r) - sigma v_r); paper numbers used as given (units as_given)"
 )
-
-
-def expand_methods(entries):
-    """Config method entries -> list of (solver name, settings dict, label)."""
-    out = []
-    for entry in entries:
-        fixed = dict(entry.get("settings", {}))
-        sweep = entry.get("sweep", {})
-        keys = list(sweep)
-        for combo in itertools.product(*(sweep[k] for k in keys)) if keys else [()]:
-            settings = dict(fixed, **dict(zip(keys, combo)))
-            if "atol_per_rtol" in entry and "rtol" in settings:
-                settings["atol"] = settings["rtol"] * entry["atol_per_rtol"]
-            label = entry["solver"] + (
-                "[" + ",".join(f"{k}={v}" for k, v in settings.items()) + "]" if settings else ""
-            )
-            out.append((entry["solver"], settings, label))
-    return out
 
 
 def scene_model(cfg, scene: str, **overrides) -> BeltModel:

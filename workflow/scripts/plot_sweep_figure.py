@@ -1,16 +1,16 @@
-"""Thin wiring: Figs. 10-14, the paper's curves beside the dense sweep's metrics (Snakemake script)."""
+"""Thin wiring: Figs. 10-14, the paper's curves beside the dense sweep's metrics, one PNG per reading."""
 
 import matplotlib
 
 matplotlib.use("Agg")
 
+import matplotlib.pyplot as plt  # noqa: E402
+
 from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.plots import sweep_figure  # noqa: E402
 
-fig = sweep_figure(
-    read_dataset(snakemake.input.paper),
-    read_dataset(snakemake.input.dense),
-    snakemake.params.title,
-    snakemake.wildcards.reading,
-)
-fig.savefig(snakemake.output[0], dpi=100)
+for reading, out in zip(snakemake.params.readings, snakemake.output):
+    paper, dense = (read_dataset(p) for p in snakemake.params.datasets[reading])
+    fig = sweep_figure(paper, dense, snakemake.params.title, reading)
+    fig.savefig(out, dpi=100)
+    plt.close(fig)

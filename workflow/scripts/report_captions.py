@@ -7,7 +7,7 @@ from stickslip.io.report import caption_text, claims_for, paper_figures, write_c
 
 rows = read_table(snakemake.input.table)  # noqa: F821
 spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821
-config = snakemake.config  # noqa: F821
+config = snakemake.params.config  # noqa: F821
 captions = {}
 for fig, fspec in config["onedof"]["figures"].items():
     figs = paper_figures(fspec.get("title", fig))
@@ -25,7 +25,7 @@ for scene in config.get("fe", {}).get("scenes", {}):
     captions[f"results/figures/fe/{scene}.png"] = caption_text(
         f"Beam on rotating disc, scene {scene}", figs, claims_for(rows, figs), note=entry.get("note", "")
     )
-if "methods_study" in config:
+if config["methods_study"]["scenes"]:
     scenes = list(config["methods_study"]["scenes"])
     wp, fm = spec["methods"]["work_precision"], spec["methods"]["failure_map"]
     captions[f"results/figures/methods/{scenes[0]}_work_precision.png"] = caption_text(
@@ -41,14 +41,14 @@ for name, nspec in config.get("notebooks", {}).items():
     captions[f"results/notebooks/{name}.html"] = caption_text(
         f"Notebook {name}: figures next to the reported numbers", figs, claims_for(rows, figs)
     )
-if "fe" in config:
+if config["fe"]["scenes"]:
     figs = set(range(17, 37))
     captions["results/notebooks/section_09_12_beam_on_disc.html"] = caption_text(
         "Notebook section_09_12_beam_on_disc: the beam-on-disc scenes next to the reported numbers",
         figs,
         claims_for(rows, figs),
     )
-if "methods_study" in config:
+if config["methods_study"]["scenes"]:
     captions["results/notebooks/methods_work_precision.html"] = caption_text(
         "Notebook methods_work_precision: the integration-methods study",
         set(),

@@ -76,12 +76,16 @@ def run_points(
     transient: float,
     count_window: float = 18.0,
     progress: Callable[[int, int], None] | None = None,
+    on_trajectory: Callable[[int, object], None] | None = None,
 ) -> dict[str, np.ndarray]:
-    """Metric arrays (one entry per point); a failed run gives NaN metrics and solver_ok = 0."""
+    """Metric arrays (one entry per point); a failed run gives NaN metrics and solver_ok = 0.
+    ``on_trajectory(i, traj)`` sees every run's trajectory (time series, messages) without solving twice."""
     rows = []
     for i, point in enumerate(points):
         model = BeltModel.build(base.with_(**point), variant)
         traj = solver.solve(model, t_end, t_eval)
+        if on_trajectory is not None:
+            on_trajectory(i, traj)
         metrics = limit_cycle_metrics(traj, transient, count_window)
         rows.append(({k: m.value for k, m in metrics.items()}, metrics))
         if progress is not None:

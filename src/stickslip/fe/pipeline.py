@@ -635,6 +635,15 @@ def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, 
     for name, (a, b, var) in pairs.items():
         va, vb = float(datasets[a][var]), float(datasets[b][var])
         ds[name] = ((), va / vb if vb != 0 else np.nan, {"units": "1", "long_name": f"{var} of {a} over {b}"})
+        ea, eb = datasets[a].get(f"{var}_ensemble"), datasets[b].get(f"{var}_ensemble")
+        if ea is not None and eb is not None and ea.shape == eb.shape:  # member by member
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ratio = np.where(eb.values != 0, ea.values / eb.values, np.nan)
+            ds[f"{name}_ensemble"] = (
+                ea.dims,
+                ratio,
+                {"units": "1", "long_name": f"{var} of {a} over {b}, per perturbation-ensemble member"},
+            )
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",

@@ -10,9 +10,15 @@ dataset path makes the claim be checked once per reading of the paper's equation
              claims "no effect"; ``coord_scale: log`` fits against log10(coord). A change below
              ``min_relative_change`` (default TREND_FLOOR) is no trend.
 
-Status is ``reproduced``, ``deviates`` or ``not-comparable`` (nothing measurable, or the paper contradicts
-itself: rows with ``comparable: false``). ``expected`` pins the status (one string, or one per reading);
-the check fails when a measured status differs from the pinned one, so every change is deliberate.
+Status is ``reproduced``, ``deviates``, ``indistinguishable`` or ``not-comparable`` (nothing measurable,
+or the paper contradicts itself: rows with ``comparable: false``). Every claim reduces to a *decision
+variable* on one side of a threshold (value/ratio: |measured - reported| against the tolerance band;
+compare: lhs - rhs against 0; trend: the relative change against +-floor). ``margin`` is its distance to the
+threshold, ``spread`` its range across the dataset's perturbation ensemble (``<variable>_ensemble``,
+stickslip.ensemble). A margin within MARGIN_FACTOR spreads is ``indistinguishable``: the pipeline's own
+numerical noise could flip it, so it is never called reproduced or deviating. ``expected`` pins the
+status (one string, or one per reading); the check fails when a measured status differs from the pinned
+one, so every change is deliberate.
 """
 
 from __future__ import annotations
@@ -28,7 +34,11 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-STATUSES = ("reproduced", "deviates", "not-comparable")
+STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
+
+#: A claim is decided only when its margin to the threshold exceeds this many ensemble spreads.
+MARGIN_FACTOR = 3.0
+ENSEMBLE_SUFFIX = "_ensemble"  # stickslip.ensemble.SUFFIX (io may not import from the orchestration layer)
 KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
 REQUIRED = {"id", "section", "figure", "quote", "kind", "expected"}
@@ -61,6 +71,8 @@ class ClaimResult:
     unit: str
     measured: float
     deviation: float
+    margin: float  #: distance of the decision variable to the claim's threshold
+    spread: float  #: range of the decision variable across the perturbation ensemble (NaN: none)
     status: str
     expected: str
     matches_expected: bool
@@ -116,14 +128,154 @@ def required_datasets(claims: list[dict], readings: list[str]) -> list[str]:
     return sorted(out)
 
 
-def _scalar(open_dataset: Callable, ref: dict, reading: str) -> float:
-    """A dataset's scalar variable, or a constant given as ``{value: number}``."""
+def _member_values(open_dataset: Callable, ref: dict, reading: str) -> np.ndarray:
+    """A dataset's scalar variable per perturbation-ensemble member (base run first), or a constant given as
+    ``{value: number}``. Without an ensemble in the dataset: the base value alone."""
     if "value" in ref and "dataset" not in ref:
-        return float(ref["value"])
+        return np.array([float(ref["value"])])
     ds = open_dataset(ref["dataset"].format(reading=reading))
     if ref["variable"] not in ds:
+        return np.array([np.nan])
+    base = float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
+    members = ds.get(ref["variable"] + ENSEMBLE_SUFFIX)
+    if members is None:
+        return np.array([base])
+    values = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)[:, 0]
+    return np.concatenate([[base], values[1:]])
+
+
+def _pairwise(f: Callable, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """f over the members of two quantities: member by member when both come from one ensemble layout,
+    otherwise over every pair (the conservative range). Index 0 is always the base runs' value."""
+    if a.size == b.size or a.size == 1 or b.size == 1:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return f(a, b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return f(a[:, None], b[None, :]).reshape(-1)
+
+
+def spread_of(values: np.ndarray) -> float:
+    """Range of a decision variable across the ensemble: NaN without an ensemble, inf when a member has
+    nothing to measure but the base run has (the outcome itself moved)."""
+    if values.size < 2:
         return float("nan")
-    return float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
+    if not np.all(np.isfinite(values)):
+        return float("inf")
+    return float(np.ptp(values))
+
+
+@dataclass
+class Measurement:
+    """What one claim kind measures: the base run's number(s) and a scalar *decision variable* whose side of
+    a threshold decides the claim, its distance to that threshold (margin) and its ensemble range
+    (spread), both in the decision variable's units."""
+
+    reported: float = float("nan")
+    measured: float = float("nan")
+    deviation: float = float("nan")
+    quantity: str = ""
+    holds: bool | None = None
+    detail: str = ""
+    margin: float = float("nan")
+    spread: float = float("nan")
+
+
+def _tolerance_band(claim: dict, reported: float) -> float:
+    """Half-width of the accepted interval around the reported number (the larger of rel and abs)."""
+    tol = claim.get("tolerance", {})
+    band = [float(tol["abs"])] if "abs" in tol else []
+    if "rel" in tol:
+        band.append(float(tol["rel"]) * abs(reported))
+    return max(band) if band else 0.0
+
+
+def decide_value(claim: dict, measured: float) -> tuple[bool, float]:
+    """(holds, margin) of a value/ratio claim for one measured number."""
+    reported = float(claim["value"])
+    band = _tolerance_band(claim, reported)
+    distance = abs(measured - reported)
+    return bool(distance <= band), abs(distance - band)
+
+
+def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    out = Measurement(reported=float(claim["value"]), quantity=str(claim.get("variable", "")))
+    if claim["kind"] == "value":
+        members = _member_values(open_dataset, claim, reading)
+    else:
+        lhs = _member_values(open_dataset, claim["lhs"], reading)
+        rhs = _member_values(open_dataset, claim["rhs"], reading)
+        members = _pairwise(lambda a, b: np.where(b != 0, a / np.where(b != 0, b, 1.0), np.nan), lhs, rhs)
+        out.quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
+    out.measured = float(members[0])
+    if math.isfinite(out.measured):
+        r = out.reported
+        out.deviation = (out.measured - r) / abs(r) if r != 0 else out.measured - r
+        out.holds, out.margin = decide_value(claim, out.measured)
+        out.spread = spread_of(members)
+        out.detail = f"measured {out.measured:.4g} vs reported {r:.4g} ({100 * out.deviation:+.1f} %)"
+    return out
+
+
+def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    lhs = _member_values(open_dataset, claim["lhs"], reading)
+    rhs = _member_values(open_dataset, claim["rhs"], reading)
+    rel = claim["relation"]
+    out = Measurement(
+        reported=float(rhs[0]),
+        measured=float(lhs[0]),
+        quantity=f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}",
+    )
+    if math.isfinite(out.measured) and math.isfinite(out.reported):
+        difference = _pairwise(np.subtract, lhs, rhs)  # the decision variable: lhs - rhs against 0
+        out.holds = bool(RELATIONS[rel](out.measured, out.reported))
+        out.margin = abs(float(difference[0]))
+        out.spread = spread_of(difference)
+        out.detail = f"{out.measured:.4g} {rel} {out.reported:.4g} is {out.holds}"
+    return out
+
+
+def _trend_change(claim: dict, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
+    """(least-squares slope, fitted change relative to the mean) of y along x; NaN when not measurable."""
+    if claim.get("coord_scale") == "log":  # decade sweeps: the trend per decade
+        x = np.log10(np.where(x > 0, x, np.nan))
+    ok = np.isfinite(x) & np.isfinite(y)
+    if ok.sum() < 2 or np.ptp(x[ok]) <= 0:
+        return float("nan"), float("nan")
+    slope = float(np.polyfit(x[ok], y[ok], 1)[0])
+    return slope, float(relative_change(slope, x[ok], y[ok]))
+
+
+def decide_trend(claim: dict, change: float) -> tuple[bool, float, float]:
+    """(holds, margin, direction) of a trend claim for one relative change: |change| below the floor is no
+    trend, so the thresholds sit at +-floor."""
+    floor = float(claim.get("min_relative_change", TREND_FLOOR))
+    direction = 0.0 if abs(change) < floor else float(np.sign(change))
+    return bool(direction == np.sign(float(claim["sign"]))), abs(abs(change) - floor), direction
+
+
+def measure_trend(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    ds = open_dataset(claim["dataset"].format(reading=reading))
+    out = Measurement(reported=float(claim["sign"]), quantity=f"d {claim['variable']} / d {claim['coord']}")
+    if claim["variable"] not in ds or claim["coord"] not in ds.variables:
+        return out
+    x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
+    y = np.asarray(ds[claim["variable"]].values, dtype=float).reshape(-1)
+    out.measured, change = _trend_change(claim, x, y)
+    if not math.isfinite(change):
+        return out
+    out.holds, out.margin, direction = decide_trend(claim, change)
+    members = ds.get(claim["variable"] + ENSEMBLE_SUFFIX)
+    if members is not None:
+        rows = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
+        changes = [change] + [_trend_change(claim, x, row)[1] for row in rows[1:]]
+        out.spread = spread_of(np.array(changes))
+    words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
+    out.detail = f"slope {out.measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
+    return out
+
+
+#: One function per claim kind.
+MEASURE = {"value": measure_value, "ratio": measure_value, "compare": measure_compare, "trend": measure_trend}
 
 
 def solver_failures(opened: list) -> list[str]:
@@ -146,74 +298,35 @@ def _per_reading(value, reading, default=""):
     return default if value is None else value
 
 
+def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[str, str]:
+    """(status, detail). A margin within MARGIN_FACTOR spreads of the threshold (or an outcome that moves
+    between ensemble members) is ``indistinguishable``: the numbers cannot tell."""
+    if failures:  # a failed run measures nothing: never compare its numbers
+        return "not-comparable", "solver failed (" + "; ".join(failures) + ")"
+    if not comparable:
+        return "not-comparable", m.detail
+    if m.holds is None:
+        return "not-comparable", m.detail or "not measurable in this reading (variable missing or NaN)"
+    if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin <= MARGIN_FACTOR * m.spread):
+        why = (
+            "an ensemble member has nothing to measure"
+            if math.isinf(m.spread)
+            else f"margin {m.margin:.3g} <= {MARGIN_FACTOR:g} x spread {m.spread:.3g}"
+        )
+        return "indistinguishable", f"{m.detail} - {why}: below the numerical noise"
+    return ("reproduced" if m.holds else "deviates"), m.detail
+
+
 def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
     opened: list = []  # every dataset this claim reads, to refuse numbers from a failed solver run
 
-    def open_dataset(path, _open=open_dataset):
+    def recording_open(path, _open=open_dataset):
         ds = _open(path)
         opened.append((path, ds))
         return ds
 
-    kind = claim["kind"]
-    reported, measured, deviation = float("nan"), float("nan"), float("nan")
-    unit = str(claim.get("unit", ""))
-    quantity = str(claim.get("variable", ""))
-    detail = ""
-    holds = None
-    if kind in ("value", "ratio"):
-        reported = float(claim["value"])
-        if kind == "value":
-            measured = _scalar(open_dataset, claim, reading)
-        else:
-            lhs, rhs = (
-                _scalar(open_dataset, claim["lhs"], reading),
-                _scalar(open_dataset, claim["rhs"], reading),
-            )
-            measured = lhs / rhs if rhs != 0 else float("nan")
-            quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
-        if math.isfinite(measured):
-            deviation = (measured - reported) / abs(reported) if reported != 0 else measured - reported
-            tol = claim.get("tolerance", {})
-            rel_ok = "rel" in tol and abs(deviation) <= float(tol["rel"])
-            abs_ok = "abs" in tol and abs(measured - reported) <= float(tol["abs"])
-            holds = rel_ok or abs_ok
-            detail = f"measured {measured:.4g} vs reported {reported:.4g} ({100 * deviation:+.1f} %)"
-    elif kind == "compare":
-        lhs, rhs = _scalar(open_dataset, claim["lhs"], reading), _scalar(open_dataset, claim["rhs"], reading)
-        measured, reported = lhs, rhs
-        quantity = f"{_name(claim['lhs'])} {claim['relation']} {_name(claim['rhs'])}"
-        if math.isfinite(lhs) and math.isfinite(rhs):
-            holds = RELATIONS[claim["relation"]](lhs, rhs)
-            detail = f"{lhs:.4g} {claim['relation']} {rhs:.4g} is {holds}"
-    elif kind == "trend":
-        ds = open_dataset(claim["dataset"].format(reading=reading))
-        quantity = f"d {claim['variable']} / d {claim['coord']}"
-        reported = float(claim["sign"])
-        if claim["variable"] in ds and claim["coord"] in ds.variables:
-            x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
-            y = np.asarray(ds[claim["variable"]].values, dtype=float).reshape(-1)
-            if claim.get("coord_scale") == "log":  # decade sweeps: the trend per decade
-                x = np.log10(np.where(x > 0, x, np.nan))
-            ok = np.isfinite(x) & np.isfinite(y)
-            if ok.sum() >= 2 and np.ptp(x[ok]) > 0:
-                measured = float(np.polyfit(x[ok], y[ok], 1)[0])
-                change = relative_change(measured, x[ok], y[ok])
-                floor = float(claim.get("min_relative_change", TREND_FLOOR))
-                direction = 0.0 if abs(change) < floor else float(np.sign(measured))
-                holds = direction == np.sign(reported)
-                words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
-                detail = f"slope {measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
-    failures = solver_failures(opened)
-    if failures:  # a failed run measures nothing: never compare its numbers
-        status = "not-comparable"
-        detail = "solver failed (" + "; ".join(failures) + ")"
-    elif claim.get("comparable", True) is False:
-        status = "not-comparable"
-    elif holds is None:
-        status = "not-comparable"
-        detail = detail or "not measurable in this reading (variable missing or NaN)"
-    else:
-        status = "reproduced" if holds else "deviates"
+    m = MEASURE[claim["kind"]](claim, reading, recording_open)
+    status, detail = status_of(m, claim.get("comparable", True) is not False, solver_failures(opened))
     note = _per_reading(claim.get("note"), reading)
     reason = "; ".join(s for s in (detail, note if status != "reproduced" else "") if s)
     expected = _per_reading(claim["expected"], reading, default="(not pinned)")
@@ -222,12 +335,14 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         reading=reading,
         section=str(claim["section"]),
         figure=str(claim["figure"]),
-        kind=kind,
-        quantity=quantity,
-        reported=reported,
-        unit=unit,
-        measured=measured,
-        deviation=deviation,
+        kind=claim["kind"],
+        quantity=m.quantity,
+        reported=m.reported,
+        unit=str(claim.get("unit", "")),
+        measured=m.measured,
+        deviation=m.deviation,
+        margin=m.margin,
+        spread=m.spread,
         status=status,
         expected=expected,
         matches_expected=(status == expected),
@@ -257,15 +372,16 @@ def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
     if md_path:
         md_path = Path(md_path)
         lines = [
-            "| claim | reading | figure | quantity | reported | measured | unit | status | expected "
-            "| reason |",
-            "|---|---|---|---|---|---|---|---|---|---|",
+            "| claim | reading | figure | quantity | reported | measured | unit | margin | spread | status "
+            "| expected | reason |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|",
         ]
         for r in results:
             flag = "" if r.matches_expected else " **(changed)**"
             lines.append(
                 f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {r.reported:.4g} | "
-                f"{r.measured:.4g} | {r.unit} | {r.status}{flag} | {r.expected} | {r.reason} |"
+                f"{r.measured:.4g} | {r.unit} | {r.margin:.3g} | {r.spread:.3g} | {r.status}{flag} | "
+                f"{r.expected} | {r.reason} |"
             )
         tmp = md_path.with_suffix(".md.tmp")
         tmp.write_text("\n".join(lines) + "\n")

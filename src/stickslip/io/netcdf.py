@@ -129,6 +129,31 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     return ds
 
 
+def software_versions() -> dict:
+    """Versions of the numerical stack and the BLAS in use: a result is only as reproducible as these."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {}
+    for package in ("numpy", "scipy", "xarray", "netCDF4", "numba"):
+        try:
+            out[package] = version(package)
+        except PackageNotFoundError:
+            out[package] = "not installed"
+    try:
+        from threadpoolctl import threadpool_info
+
+        blas = [i for i in threadpool_info() if i.get("user_api") == "blas"]
+        described = [
+            f"{i.get('internal_api')} {i.get('version')} ({i.get('architecture')}, "
+            f"{i.get('num_threads')} threads)"
+            for i in blas
+        ]
+        out["blas"] = "; ".join(described) or "none loaded"
+    except ImportError:
+        out["blas"] = "unknown (threadpoolctl not installed)"
+    return out
+
+
 def provenance_attrs(*, title: str, scene: dict, interpretation: str | dict, method: dict) -> dict:
     now = _dt.datetime.now(_dt.UTC).replace(microsecond=0).isoformat()
     attrs = {
@@ -144,6 +169,7 @@ def provenance_attrs(*, title: str, scene: dict, interpretation: str | dict, met
     }
     attrs.update(flat_attrs("scene_", scene))
     attrs.update(flat_attrs("method_", method))
+    attrs.update(flat_attrs("software_", software_versions()))
     return attrs
 
 

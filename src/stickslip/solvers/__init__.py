@@ -1,6 +1,6 @@
 """Layer 2: integration methods behind one interface, ``solve(model, t_end, t_eval) -> Trajectory``."""
 
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory, check_settings
 from .exact import ExactSwitchSolver
 from .karnopp import Karnopp  # noqa: E402
 from .moreau import MoreauJean  # noqa: E402
@@ -21,9 +21,11 @@ def make_solver(name: str, **settings):
     if name not in METHODS:
         raise ParameterError(f"solver: {name!r} is not one of {sorted(METHODS)}")
     try:
-        return METHODS[name](**settings)
-    except TypeError as exc:
+        solver = METHODS[name](**settings)
+        check_settings(solver)
+    except (TypeError, ValueError) as exc:
         raise ParameterError(f"solver settings for {name!r}: {exc}") from None
+    return solver
 
 
 __all__ = [

@@ -77,3 +77,34 @@ class Timer:
     def __exit__(self, *exc):
         self.elapsed = time.process_time() - self.start
         return False
+
+
+#: Method settings that must be positive numbers (``max_step`` may be inf: no limit).
+POSITIVE_SETTINGS = ("rtol", "atol", "eta", "eps", "h", "stick_tolerance", "graze_tolerance", "max_step")
+#: Settings that are counts (at least 1).
+COUNT_SETTINGS = ("max_steps", "max_segments", "samples_per_period", "max_zero_length")
+#: scipy.integrate.solve_ivp's method names.
+IVP_METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA")
+
+
+def check_settings(solver) -> None:
+    """Reject non-physical or meaningless method settings with the setting named, so a bad value in the
+    config fails when the pipeline starts, not inside a job (a step or tolerance <= 0 or NaN, a count < 1,
+    theta outside (0, 1], an unknown solve_ivp method)."""
+    for name in POSITIVE_SETTINGS:
+        value = getattr(solver, name, None)
+        if value is None:
+            continue
+        finite_ok = name == "max_step" and value == float("inf")
+        if not isinstance(value, (int, float)) or not (value > 0 and (finite_ok or np.isfinite(value))):
+            raise ValueError(f"{name}: must be a positive number, got {value!r}")
+    for name in COUNT_SETTINGS:
+        value = getattr(solver, name, None)
+        if value is not None and not (isinstance(value, int) and value >= 1):
+            raise ValueError(f"{name}: must be a whole number >= 1, got {value!r}")
+    theta = getattr(solver, "theta", None)
+    if theta is not None and not (isinstance(theta, (int, float)) and 0 < theta <= 1):
+        raise ValueError(f"theta: must be in (0, 1], got {theta!r}")
+    method = getattr(solver, "method", None)
+    if method is not None and method not in IVP_METHODS:
+        raise ValueError(f"method: {method!r} is not one of {IVP_METHODS}")

@@ -1,0 +1,156 @@
+"""The pipeline's configuration, checked in one place before any job runs.
+
+``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
+the JSON schemas (types, ranges, unknown keys; defaults filled in), then every check a schema cannot make
+(NaN, unknown scene/reading/method names, solver settings, references between sections, the friction
+table), each error naming the offending config key.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from pathlib import Path
+
+import yaml
+
+from .model.params import ParameterError
+
+#: Schema files under workflow/schemas/, one per config concern.
+SCHEMAS = ("config", "dense_map", "fe", "methods")
+
+
+class ConfigError(ValueError):
+    """A config value is wrong; the message starts with its key (``section.sub.key: why``)."""
+
+
+def merge(base: dict, override: dict) -> dict:
+    """Recursive merge as Snakemake merges ``configfile``s: mappings merge, everything else is replaced."""
+    out = dict(base)
+    for key, value in override.items():
+        out[key] = (
+            merge(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
+        )
+    return out
+
+
+def load_config(paths: Iterable[str | Path]) -> dict:
+    """The config Snakemake builds from these files, in order (later files override earlier ones)."""
+    config: dict = {}
+    for path in paths:
+        config = merge(config, yaml.safe_load(Path(path).read_text()) or {})
+    return config
+
+
+def validate_config(config: dict, schema_dir: str | Path, *, producible: Iterable[str] = ()) -> None:
+    """Raise ConfigError naming the key of the first bad value; fills schema defaults into ``config``.
+
+    ``producible`` lists files a rule writes (a friction table need not exist before the run)."""
+    from snakemake.utils import validate
+
+    for name in SCHEMAS:
+        validate(config, str(Path(schema_dir) / f"{name}.schema.yaml"))
+    try:
+        _check_ensemble(config)
+        _check_onedof(config)
+        check_methods_config(config["methods_study"])
+        _check_dense_maps(config)
+        check_fe_config(config["fe"], list(producible))
+    except ParameterError as exc:
+        raise ConfigError(str(exc)) from None
+
+
+def _check_ensemble(config: dict) -> None:
+    from .ensemble import EnsembleSpec
+
+    try:
+        EnsembleSpec.from_mapping(config.get("ensemble"))
+    except (ValueError, TypeError) as exc:
+        raise ConfigError(str(exc) if str(exc).startswith("ensemble.") else f"ensemble: {exc}") from None
+
+
+def _check_onedof(config: dict) -> None:
+    """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
+    from .io.scenes import figure_runs, run_spec, sweep_spec
+
+    onedof = config["onedof"]
+    for reading in config["claims"]["readings"]:
+        if reading not in onedof["readings"]:
+            known = sorted(onedof["readings"])
+            raise ConfigError(f"claims.readings: {reading!r} is not a reading of onedof.readings ({known})")
+    for figure in onedof["figures"]:
+        for scene, reading, method in figure_runs(config, figure):
+            run_spec(config, scene, reading, method)
+    for sweep in onedof.get("sweeps", {}):
+        for reading in config["claims"]["readings"]:
+            sweep_spec(config, sweep, reading)
+    for reading in (onedof.get("critical_speed") or {}).get("readings", []):
+        run_spec(config, "fig02", reading, "exact")
+
+
+def _check_dense_maps(config: dict) -> None:
+    from .io.dense_map import dense_map
+
+    for name in config["dense_map"]["maps"]:
+        dense_map(config, name)
+
+
+def check_fe_config(fe_cfg: dict, producible: list[str], studies=("convergence", "stability")) -> None:
+    """Resolve every FE scene and reference, so a bad value fails before any job starts, with the config
+    key named (the schema cannot see NaN, unknown scene names or a missing table)."""
+    from .fe.pipeline import scene_mapping
+    from .fe.scene import SceneParams
+
+    for name in fe_cfg["scenes"]:
+        mapping = scene_mapping(fe_cfg, name)
+        try:
+            SceneParams.from_mapping(
+                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
+            )
+        except (ValueError, TypeError, KeyError) as exc:
+            raise ConfigError(f"fe.scenes.{name}: {exc}") from None
+    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
+    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in studies]
+    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
+    for key, scene in refs:
+        if scene not in fe_cfg["scenes"]:
+            raise ConfigError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
+    table = fe_cfg["friction_table"]
+    if table not in producible and not Path(table).is_file():
+        raise ConfigError(
+            f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes "
+            f"{producible})"
+        )
+
+
+def check_methods_config(cfg: dict) -> None:
+    """Build every scene model and every swept method of the methods study, so a bad value fails before
+    any job starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
+    from .model import BeltModel, BeltParams
+    from .solvers import make_solver
+    from .studies.methods import expand_methods
+
+    fm = cfg["failure_map"]
+    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
+    runs += [
+        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
+        for i, v in enumerate(fm["values"])
+    ]
+    for key, scene, overrides in runs:
+        if scene not in cfg["scenes"]:
+            raise ConfigError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
+        spec = cfg["scenes"][scene]
+        try:
+            BeltModel.build(
+                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
+                spec["variant"],
+            )
+        except (ParameterError, ValueError, TypeError, KeyError) as exc:
+            raise ConfigError(f"{key} (with methods_study.base_params): {exc}") from None
+    groups = [("methods", cfg["methods"]), ("failure_map.methods", fm["methods"])]
+    groups.append(("paper_method", [cfg["paper_method"]]))
+    for key, entries in groups:  # every swept combination of settings, not only the fixed ones
+        for solver, settings, label in expand_methods(entries):
+            try:
+                make_solver(solver, **settings)
+            except (ValueError, TypeError, KeyError) as exc:
+                raise ConfigError(f"methods_study.{key}: {label}: {exc}") from None

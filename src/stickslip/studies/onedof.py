@@ -1,0 +1,294 @@
+"""1-DOF studies: a scene run (a paper figure's curve plus its limit-cycle metrics) and a parameter sweep,
+each as a dataset."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from ..analysis.critical import continuation, critical_speed
+from ..analysis.divergence import BoundedSolver
+from ..analysis.extra_metrics import extra_metrics
+from ..analysis.friction_curve import friction_along_solution, friction_table
+from ..analysis.metrics import limit_cycle_metrics
+from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
+from ..io.netcdf import trajectory_dataset
+from ..io.scenes import RunSpec, SweepSpec, run_spec, sweep_spec
+from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
+from ..model.params import effective_mass
+
+
+def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
+    """Solve one scene x reading x method; time series, metrics, and the solver's status and settings
+    (``attrs['solver_run_settings']``). A run that grows without bound is a recorded failure, no metrics."""
+    traj = BoundedSolver(spec.solver(), spec.transient).solve(spec.model, spec.t_end, spec.t_eval)
+    metrics = limit_cycle_metrics(traj, spec.transient, spec.count_window)
+    ds = trajectory_dataset(traj, metrics)
+    if "stick_fraction" in ds:
+        ds["slip_fraction"] = (
+            (),
+            1.0 - float(ds.stick_fraction),
+            {"units": "1", "long_name": "fraction of steady-window samples in slip"},
+        )
+    if traj.ok:
+        friction, normal = spec.model.friction, spec.params.normal_force
+        extra = extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, friction, normal)
+        for name, (value, units, long_name) in extra.items():
+            ds[name] = ((), value, {"units": units, "long_name": long_name})
+    ds.attrs["solver_run_settings"] = dict(traj.settings)
+    stats = traj.stats
+    ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
+    return ds
+
+
+SWEEP_METRICS = (
+    "stick_fraction",
+    "stick_time",
+    "slip_time",
+    "frequency_peaks",
+    "amplitude_peak_to_peak",
+    "amplitude_peak_to_zero",
+)
+#: Metrics also stored per paper value as scalars the claims table can name (e.g. frequency_peaks_at_0p9).
+POINT_METRICS = (
+    "frequency_peaks",
+    "amplitude_peak_to_peak",
+    "amplitude_peak_to_zero",
+    "stick_time",
+    "slip_time",
+)
+
+
+def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
+    """One parameter sweep (Figs. 10-14, belt speed) for one reading: metrics per point, and for the paper's
+    values (``dense=False``) each run's time series. Every point is solved once. Failed or diverging runs
+    keep NaN metrics and solver_ok = 0, with the reason in failure_message."""
+    axis = spec.axis(dense)
+    base = spec.base
+    n = grid_size([axis])
+    points = chunk_points([axis], n, 0)
+    messages = [""] * n
+    series = np.full((n, 2, base.t_eval.size), np.nan)
+
+    def keep(i, traj):
+        messages[i] = traj.stats.message or "none"
+        if not dense and traj.ok:
+            series[i] = traj.x, traj.v
+
+    results = run_points(
+        base.params,
+        base.variant,
+        points,
+        BoundedSolver(base.solver(), base.transient),
+        base.t_end,
+        base.t_eval,
+        base.transient,
+        base.count_window,
+        progress=progress,
+        on_trajectory=keep,
+    )
+    ds = merge_chunks([axis], [chunk_dataset([axis], n, 0, results)])
+    for m in SWEEP_METRICS:  # every run failed: keep the variables, all NaN
+        if m not in ds:
+            ds[m] = (
+                spec.parameter,
+                np.full(n, np.nan),
+                {"units": "1", "long_name": f"{m} (no successful run)"},
+            )
+    ds["slip_fraction"] = (
+        spec.parameter,
+        1.0 - ds.stick_fraction.values,
+        {"units": "1", "long_name": "fraction of steady-window samples in slip"},
+    )
+    if not dense:  # the paper's curves: keep each run's time series
+        ds = ds.assign_coords(time=("time", base.t_eval, {"units": "s", "long_name": "time"}))
+        dims = (spec.parameter, "time")
+        ds["displacement"] = (dims, series[:, 0], {"units": "mm", "long_name": "mass displacement x"})
+        ds["velocity"] = (dims, series[:, 1], {"units": "mm s-1", "long_name": "mass velocity"})
+        for m in POINT_METRICS:
+            for value in spec.values:
+                ds[f"{m}_at_{value:g}".replace(".", "p")] = (
+                    (),
+                    float(ds[m].sel({spec.parameter: value})),
+                    {
+                        **ds[m].attrs,
+                        "long_name": f"{ds[m].attrs['long_name']} at {spec.parameter} = {value:g}",
+                    },
+                )
+    ds["failure_message"] = (
+        spec.parameter,
+        np.array(messages, dtype=object),
+        {"long_name": "solver or divergence message of each run"},
+    )
+    ds.attrs.update(
+        {
+            "sweep_parameter": spec.parameter,
+            "sweep_figure": spec.figure,
+            "sweep_kind": "dense" if dense else "paper values",
+            "failed_runs": int(np.sum(ds.solver_ok.values != 1)),
+        }
+    )
+    return ds
+
+
+def sweep_from_config(config: dict, *, sweep: str, reading: str, dense: bool, progress=None) -> xr.Dataset:
+    """``sweep_dataset`` of ``onedof.sweeps.<sweep>`` for a reading, resolved from a config mapping.
+    ``progress`` is a factory of a fresh ``progress(done, total)`` callback (one per call: an ensemble calls
+    this once per member)."""
+    return sweep_dataset(sweep_spec(config, sweep, reading), dense, progress() if progress else None)
+
+
+CRITICAL_UNITS = {
+    "stick_fraction": ("1", "fraction of steady-window samples in stick"),
+    "stick_time": ("s", "mean stick duration"),
+    "amplitude_peak_to_peak": ("mm", "peak-to-peak displacement"),
+    "frequency_peaks": ("Hz", "frequency from peak spacing"),
+    "solver_ok": ("1", "run finished and bounded (1)"),
+    "steady_sliding_stable": ("1", "steady sliding linearly stable (1), neutral (0.5), unstable (0)"),
+}
+
+
+def critical_speed_dataset(spec: RunSpec, speeds: np.ndarray, t_end: float, transient: float) -> xr.Dataset:
+    """Continuation over belt speed with the exact solver: metrics per speed and the critical speed (the
+    smallest speed from which on no run sticks), with the first speed of linearly stable steady sliding."""
+    solver = BoundedSolver(spec.solver(), transient)
+    out, messages = continuation(spec.params, spec.variant, speeds, solver, t_end, transient, spec.output_dt)
+    vc = critical_speed(speeds, out["stick_fraction"], out["solver_ok"])
+    stable = out["steady_sliding_stable"]
+    first_stable = float(speeds[np.argmax(stable == 1)]) if np.any(stable == 1) else float("inf")
+    speed_attrs = {"units": "mm s-1", "long_name": "belt speed V_b"}
+    ds = xr.Dataset(
+        {k: ("belt_velocity", out[k], {"units": u, "long_name": n}) for k, (u, n) in CRITICAL_UNITS.items()},
+        coords={"belt_velocity": ("belt_velocity", speeds, speed_attrs)},
+    )
+    ds["critical_belt_speed"] = (
+        (),
+        vc,
+        {
+            "units": "mm s-1",
+            "long_name": "smallest V_b from which on no run sticks (0: never sticks; inf: none)",
+        },
+    )
+    ds["steady_sliding_stable_from"] = (
+        (),
+        first_stable,
+        {
+            "units": "mm s-1",
+            "long_name": "smallest swept V_b at which steady sliding is linearly stable (inf: none)",
+        },
+    )
+    ds["has_critical_speed"] = (
+        (),
+        float(0 < vc < np.inf),
+        {
+            "units": "1",
+            "long_name": "stick-slip present at low speed and gone above a finite speed (1) or not (0)",
+        },
+    )
+    ds.attrs["failures"] = "; ".join(messages) or "none"
+    return ds
+
+
+def critical_speed_from_config(config: dict, *, reading: str) -> xr.Dataset:
+    """``critical_speed_dataset`` of the baseline scene under ``onedof.critical_speed`` for a reading."""
+    cfg = config["onedof"]["critical_speed"]
+    speeds = np.geomspace(float(cfg["start"]), float(cfg["stop"]), int(cfg["num"]))
+    spec = run_spec(config, "fig02", reading, "exact")
+    return critical_speed_dataset(spec, speeds, float(cfg["t_end"]), float(cfg["transient"]))
+
+
+def friction_table_dataset(spec: RunSpec, bins: int) -> xr.Dataset:
+    """Fig. 17: mu(|v_r|) along a run of ``spec`` - every slip sample and the binned table the FE scenes
+    read (mu_static at rest, then bin means, ascending)."""
+    run = scene_run_dataset(spec)
+    speed, mu = friction_along_solution(
+        run.velocity.values,
+        run.belt_velocity.values,
+        run.phase.values,
+        spec.model.friction,
+        spec.params.normal_force,
+    )
+    table_v, table_mu = friction_table(speed, mu, spec.params.mu_s, bins)
+    scalar = {"units": "1"}
+    return xr.Dataset(
+        {
+            "mu": ("relative_speed", table_mu, {"units": "1", "long_name": "friction coefficient |F|/N"}),
+            "sample_relative_speed": (
+                "sample",
+                speed,
+                {"units": "mm s-1", "long_name": "|v_r| of each slip sample"},
+            ),
+            "sample_mu": ("sample", mu, {**scalar, "long_name": "|F|/N of each slip sample"}),
+            "max_relative_speed": (
+                (),
+                float(np.max(speed)) if len(speed) else np.nan,
+                {"units": "mm s-1", "long_name": "largest relative speed along the solution"},
+            ),
+            "mu_at_max_relative_speed": (
+                (),
+                float(table_mu[-1]),
+                {**scalar, "long_name": "friction coefficient at the largest relative speed"},
+            ),
+            "mu_static": ((), spec.params.mu_s, {**scalar, "long_name": "static friction coefficient"}),
+        },
+        coords={
+            "relative_speed": (
+                "relative_speed",
+                table_v,
+                {"units": "mm s-1", "long_name": "relative speed |v_r|"},
+            )
+        },
+    )
+
+
+def friction_table_from_config(config: dict, *, table: dict) -> xr.Dataset:
+    """``friction_table_dataset`` of the run ``onedof.friction_table`` names (scene, reading, method)."""
+    spec = run_spec(config, table["scene"], table["reading"], table["method"])
+    return friction_table_dataset(spec, int(table["bins"]))
+
+
+def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
+    """Fig. 4: Eq. 6 as printed and the dimensionally correct 1-DOF amplitude curve, peaks in closed form
+    (F = mu_s N assumed for the paper's 'friction force')."""
+    p = spec.params
+    force = p.mu_s * p.normal_force
+    f = np.linspace(0.0, f_max, points)
+    w = 2 * np.pi * f
+    fp, ap = printed_peak(force, p.stiffness, p.damping)
+    fc, ac = correct_peak(force, p.stiffness, p.damping, p.mass)
+    fs, as_ = correct_peak(force, p.stiffness, p.damping, effective_mass(p.mass, "si"))
+
+    def scalar(value, units, long_name):
+        return (), float(value), {"units": units, "long_name": long_name}
+
+    return xr.Dataset(
+        {
+            "amplitude_printed": (
+                "frequency",
+                amplitude_printed(w, force, p.stiffness, p.damping),
+                {"units": "mm", "long_name": "Eq. 6 as printed: F/sqrt((K-w^2)^2 + c w^2)"},
+            ),
+            "amplitude_correct": (
+                "frequency",
+                amplitude_correct(w, force, p.stiffness, p.damping, p.mass),
+                {"units": "mm", "long_name": "1-DOF: F/sqrt((K-M w^2)^2 + (C w)^2)"},
+            ),
+            "peak_frequency_printed": scalar(fp, "Hz", "peak of Eq. 6 as printed (w^2 = K - c/2)"),
+            "peak_amplitude_printed": scalar(ap, "mm", "peak amplitude of Eq. 6 as printed"),
+            "peak_frequency_correct": scalar(fc, "Hz", "resonance of the 1-DOF curve (w^2 = K/M - C^2/2M^2)"),
+            "peak_amplitude_correct": scalar(ac, "mm", "peak amplitude of the 1-DOF curve"),
+            "peak_frequency_correct_si": scalar(
+                fs, "Hz", "resonance with M converted to N s^2/mm (0: overdamped, no peak)"
+            ),
+            "peak_amplitude_correct_si": scalar(as_, "mm", "peak amplitude with M converted to N s^2/mm"),
+            "force": scalar(force, "N", "F = mu_s N assumed for 'the friction force' of Eq. 6"),
+        },
+        coords={"frequency": ("frequency", f, {"units": "Hz", "long_name": "excitation frequency w / 2 pi"})},
+    )
+
+
+def eq6_from_config(config: dict) -> xr.Dataset:
+    """``eq6_dataset`` of the baseline scene with ``onedof.eq6`` (f_max, points)."""
+    cfg = config["onedof"]["eq6"]
+    spec = run_spec(config, "fig02", "consistent_caption", "exact")
+    return eq6_dataset(spec, float(cfg["f_max"]), int(cfg["points"]))

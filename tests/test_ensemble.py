@@ -1,0 +1,155 @@
+"""The perturbation ensemble: what it perturbs, what it stores, and that the claims table turns a margin
+inside the numerical noise into 'indistinguishable' - never a status decided by the last digits."""
+
+import numpy as np
+import pytest
+import xarray as xr
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from stickslip.ensemble import (
+    MEMBER_DIM,
+    EnsembleSpec,
+    ensemble_dataset,
+    members,
+    perturbed_mapping,
+    step_mapping,
+)
+from stickslip.io.claims import evaluate
+
+MAPPING = {"params": {"mass": 1.0, "x0": 0.0, "n": 3, "flag": True}, "solver": {"safety_factor": 0.9}}
+
+
+def test_perturbation_moves_every_float_by_the_relative_size_and_leaves_counts_alone():
+    out = perturbed_mapping(MAPPING, 1e-12, seed=1)
+    assert abs(out["params"]["mass"] - 1.0) == pytest.approx(1e-12, rel=1e-3)
+    assert out["params"]["x0"] == 0.0 and out["params"]["n"] == 3 and out["params"]["flag"] is True
+    assert perturbed_mapping(MAPPING, 1e-12, seed=1) == out  # reproducible
+    assert MAPPING["params"]["mass"] == 1.0  # the input is not touched
+
+
+def test_step_member_only_where_a_step_setting_exists():
+    assert step_mapping(MAPPING, 0.8, ("safety_factor",))["solver"]["safety_factor"] == pytest.approx(0.72)
+    assert step_mapping({"params": {"mass": 1.0}}, 0.8, ("safety_factor",)) is None
+    labels = [label for label, _, _ in members({"params": {"mass": 1.0}}, EnsembleSpec())]
+    assert labels == ["base", "perturbed-1", "perturbed-2", "blas-threads-1"]
+    assert "step" in [label for label, _, _ in members(MAPPING, EnsembleSpec().without_blas())]
+
+
+@pytest.mark.parametrize(
+    "bad,key",
+    [({"relative": -1}, "relative"), ({"step_factor": 1.5}, "step_factor"), ({"seedz": [1]}, "seedz")],
+)
+def test_bad_ensemble_settings_name_their_key(bad, key):
+    with pytest.raises(ValueError, match=f"ensemble.{key}"):
+        EnsembleSpec.from_mapping(bad)
+
+
+def test_ensemble_dataset_stacks_every_metric_per_member_base_first():
+    def build(cfg):
+        m = cfg["params"]["mass"]
+        return xr.Dataset(
+            {"amplitude": ((), 2.0 * m), "series": ("time", np.arange(3.0) * m), "curve": ("k", [m, 2 * m])}
+        )
+
+    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None))
+    assert list(ds[MEMBER_DIM].values) == ["base", "perturbed-1", "perturbed-2", "step"]
+    assert ds.amplitude_ensemble.dims == (MEMBER_DIM,) and ds.curve_ensemble.dims == (MEMBER_DIM, "k")
+    assert "series_ensemble" not in ds  # time series are the base run's only
+    assert float(ds.amplitude_ensemble[0]) == float(ds.amplitude) == 2.0
+    assert 0 < np.ptp(ds.amplitude_ensemble.values) < 1e-11
+
+
+def test_a_member_that_fails_to_measure_makes_the_spread_infinite():
+    def build(cfg):
+        return xr.Dataset({"a": ((), 1.0 if cfg["params"]["mass"] == 1.0 else np.nan)})
+
+    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None))
+    row = _value_row(reported=1.5, tol=0.1)
+    res = evaluate(row, "", lambda path: ds)
+    assert res.spread == np.inf and res.status == "indistinguishable"
+
+
+def _value_row(reported, tol):
+    return {
+        "id": "x",
+        "section": "3",
+        "figure": "Fig. 2",
+        "quote": "q",
+        "kind": "value",
+        "dataset": "d.nc",
+        "variable": "a",
+        "value": reported,
+        "tolerance": {"rel": tol},
+        "expected": "deviates",
+    }
+
+
+def _with_members(values):
+    return xr.Dataset(
+        {"a": ((), values[0]), "a_ensemble": ((MEMBER_DIM,), np.asarray(values, float))},
+        coords={MEMBER_DIM: [f"m{i}" for i in range(len(values))]},
+    )
+
+
+def test_margin_and_spread_of_a_value_claim():
+    # reported 1.0 +- 10 %: the accepted band ends at 1.1; measured 1.2 is 0.1 outside, spread 0.01
+    res = evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.2, 1.205, 1.195]))
+    assert res.status == "deviates"
+    assert res.margin == pytest.approx(0.1) and res.spread == pytest.approx(0.01)
+    near = evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.11, 1.12, 1.10]))
+    assert near.status == "indistinguishable" and "below the numerical noise" in near.reason
+
+
+def test_compare_claim_on_two_equal_numbers_is_indistinguishable_not_deviating():
+    """The case that broke the build on a fresh machine: 9.454e-6 > 9.454e-6 decided by rounding."""
+    lhs, rhs = (
+        _with_members([9.4540e-6, 9.5150e-6, 9.4100e-6]),
+        _with_members([9.4540e-6, 9.5130e-6, 9.4300e-6]),
+    )
+    row = {
+        **_value_row(0, 0),
+        "kind": "compare",
+        "lhs": {"dataset": "l.nc", "variable": "a"},
+        "relation": ">",
+        "rhs": {"dataset": "r.nc", "variable": "a"},
+    }
+    res = evaluate(row, "", lambda p: {"l.nc": lhs, "r.nc": rhs}[p])
+    assert res.status == "indistinguishable" and res.margin == 0.0 and res.spread > 0
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    measured=st.floats(0.0, 3.0),
+    noise=st.floats(0.0, 0.2),
+    shifts=st.lists(st.floats(-1.0, 1.0), min_size=2, max_size=4),
+    move=st.floats(0.0, 1.0),
+)
+def test_a_decided_status_survives_any_move_of_the_measurement_within_its_spread(
+    measured, noise, shifts, move
+):
+    """Property behind the 3-spread rule: if a claim is decided (reproduced/deviates), putting the measured
+    value anywhere inside the ensemble's range decides it the same way."""
+    values = [measured] + [measured + noise * s for s in shifts]
+    row = _value_row(1.0, 0.1)
+    res = evaluate(row, "", lambda p: _with_members(values))
+    if res.status not in ("reproduced", "deviates"):
+        return
+    lo, hi = min(values), max(values)
+    moved = [lo + move * (hi - lo)] + values[1:]
+    assert evaluate(row, "", lambda p: _with_members(moved)).status in (res.status, "indistinguishable")
+    moved_res = evaluate({**row, "tolerance": {"rel": 0.1}}, "", lambda p: xr.Dataset({"a": ((), moved[0])}))
+    assert moved_res.status == res.status  # the plain decision on the moved value is unchanged
+
+
+def test_trend_claim_spread_from_the_members_curves():
+    x = np.array([1.0, 2.0, 3.0])
+    base = np.array([1.0, 1.02, 1.04])  # +4 % of the mean: just under the 5 % no-trend floor
+    members_ = np.stack([base, base * [1, 1, 1.02], base * [1, 1, 0.98]])
+    ds = xr.Dataset(
+        {"f": ("p", base), "f_ensemble": ((MEMBER_DIM, "p"), members_)},
+        coords={"p": x, MEMBER_DIM: ["base", "a", "b"]},
+    )
+    row = {**_value_row(0, 0), "kind": "trend", "dataset": "s.nc", "variable": "f", "coord": "p", "sign": 0}
+    res = evaluate(row, "", lambda p: ds)
+    assert res.status == "indistinguishable" and res.spread > 0
