@@ -167,47 +167,6 @@ def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
         )
 
 
-FE_PANELS = (
-    (("horizontal_displacement", "vertical_displacement"), "displacement of node 1 [mm]"),
-    (("horizontal_velocity", "vertical_velocity"), "velocity of node 1 [mm/s]"),
-    (("normal_force", "friction_force"), "contact force [N]"),
-    (("contact_state",), "contact state"),
-)
-
-
-def fe_scene_figure(ds, periods: int = 6):
-    """Whole run (left) and a zoom on the last few periods of the dominant frequency (right).
-
-    The beam vibrates at kHz for a second, so the whole-run panel only shows the envelope; the zoom shows
-    the stick/slip/separation pattern itself.
-    """
-    t = ds.time.values
-    f_dom = float(ds["dominant_frequency"]) if "dominant_frequency" in ds else float("nan")
-    span = periods / f_dom if f_dom > 0 else (t[-1] - t[0]) / 50
-    zoom = t >= t[-1] - span
-    fig, axes = plt.subplots(
-        len(FE_PANELS), 2, figsize=(12, 9), sharex="col", gridspec_kw={"width_ratios": [2, 1]}
-    )
-    for row, (names, label) in zip(axes, FE_PANELS):
-        for name in names:
-            if name not in ds:
-                continue
-            units = ds[name].attrs.get("units", "")
-            row[0].plot(t, ds[name].values, lw=0.5, label=f"{name} [{units}]")
-            row[1].plot(t[zoom], ds[name].values[zoom], lw=0.9, label=name)
-        row[0].set_ylabel(label, fontsize=8)
-        if row[0].get_legend_handles_labels()[0]:
-            row[0].legend(fontsize=7, loc="upper right")
-    if "contact_state" in ds:
-        meanings = ds["contact_state"].attrs.get("flag_meanings", "")
-        axes[-1, 0].set_title(f"flags: {meanings}", fontsize=8)
-    axes[-1, 0].set_xlabel("time [s]")
-    axes[-1, 1].set_xlabel(f"time [s] (last {periods} periods of {f_dom:.4g} Hz)")
-    fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
-    fig.tight_layout()
-    return fig
-
-
 def eq6_figure(ds):
     """Fig. 4: Eq. 6 as printed and the dimensionally correct 1-DOF amplitude curve, peaks marked."""
     fig, ax = plt.subplots(figsize=(7, 4.5))

@@ -1,0 +1,35 @@
+"""Thin wiring: every FE figure (paper scenes with the continuum overlaid, readings, convergence,
+stability)."""
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import xarray as xr  # noqa: E402
+
+from stickslip.fe_plots import (  # noqa: E402
+    fe_convergence_figure,
+    fe_readings_figure,
+    fe_scene_figure,
+    fe_stability_figure,
+)
+
+from fe_common import log_to  # noqa: E402
+
+log_to(snakemake)  # noqa: F821
+inp, out, par = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
+for beam_path, cont_path, png in zip(inp.beam, inp.continuum, out.scenes):
+    beam, cont = xr.load_dataset(beam_path), xr.load_dataset(cont_path)
+    title = (
+        f"{Path(png).stem} (FE reading {beam.attrs.get('fe_reading', '')}): beam 20 elements (blue) and "
+        f"continuum 100x1 (black), {float(beam.time[-1]):.3g} s"
+    )
+    fe_scene_figure(beam, cont, title=title).savefig(png, dpi=100)
+    plt.close("all")
+dss = {(Path(p).parent.name, Path(p).stem): xr.load_dataset(p) for p in inp.readings}
+reported = {"max_horizontal_displacement": 0.00029, "mean_horizontal_displacement": -0.00015}
+fe_readings_figure(dss, par.scenes, par.readings, reported).savefig(out.readings, dpi=100)
+fe_convergence_figure(xr.load_dataset(inp.convergence)).savefig(out.convergence, dpi=100)
+fe_stability_figure(xr.load_dataset(inp.stability)).savefig(out.stability, dpi=100)
