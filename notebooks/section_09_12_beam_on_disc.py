@@ -42,7 +42,7 @@ from stickslip.plots import claims_frame, status_counts, styled_claims
 
 claims = claims_frame("results/claims/deviations.csv", sections=["9", "10", "11", "12"])
 per_reading = pd.read_csv("results/fe/readings_claims.csv", dtype={"section": str})
-comparison = pd.read_csv("results/fe/model_comparison.csv")
+comparison = pd.read_csv("results/fe/model_comparison.csv").fillna({"note": ""})
 inc = xr.load_dataset("results/fe/continuum_increments.nc")
 conv = xr.load_dataset("results/fe/convergence.nc")
 stab = xr.load_dataset("results/fe/stability.nc")

@@ -104,35 +104,43 @@ def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
     return m
 
 
-def relative_difference(continuum: float, beam: float, quantity: str) -> float:
-    """(beam - continuum) / |continuum|; for fractions, 0 when both differ by less than FRACTION_FLOOR."""
-    if quantity.endswith("_fraction") and abs(beam - continuum) < FRACTION_FLOOR:
-        return 0.0
+def relative_difference(continuum: float, beam: float) -> float:
+    """(beam - continuum) / |continuum| (0 when both are 0, inf when only the continuum is 0)."""
     if continuum == 0:
         return 0.0 if beam == 0 else float("inf")
     return (beam - continuum) / abs(continuum)
 
 
+def agrees(continuum: float, beam: float, quantity: str, rel: float = 0.05) -> bool:
+    """Within ``rel``; fractions also when they differ by less than FRACTION_FLOOR (0.001 vs 0.002 is "no
+    separation" in both)."""
+    if quantity.endswith("_fraction") and abs(beam - continuum) < FRACTION_FLOOR:
+        return True
+    return bool(abs(relative_difference(continuum, beam)) <= rel)
+
+
 def comparison_rows(
     continuum: Mapping[str, xr.Dataset], beam: Mapping[str, Mapping], notes: Mapping[str, str] | None = None
 ) -> list[dict]:
-    """One row per (scene, quantity): continuum, beam, relative difference, within 5 %, note."""
+    """One row per (scene, quantity): continuum, beam, relative difference, within 5 %, and the config's
+    note for the scene (or the quantity) where they do not agree."""
+    notes = notes or {}
     rows = []
     for scene, ds in continuum.items():
         for q in QUANTITIES:
             c, b = float(ds[q]), float(beam[scene][q])
-            rd = relative_difference(c, b, q)
+            ok = agrees(c, b, q)
             rows.append(
                 {
                     "scene": scene,
                     "quantity": q,
                     "continuum": c,
                     "beam": b,
-                    "relative_difference": rd,
-                    "within_5_percent": bool(abs(rd) <= 0.05),
-                    "note": " ".join(
-                        str(notes[k]) for k in (f"{scene}.{q}", scene, q) if notes and k in notes
-                    ),
+                    "relative_difference": relative_difference(c, b),
+                    "within_5_percent": ok,
+                    "note": ""
+                    if ok
+                    else " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes),
                 }
             )
     return rows
