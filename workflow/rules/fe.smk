@@ -32,40 +32,24 @@ rule fe_reading:
         "../scripts/fe_reading.py"
 
 
-rule fe_sweep:
+rule fe_studies:
+    """The sweeps, the convergence and stability studies and the continuum increment counts in one job (each
+    takes 1-3 s CPU, a job's start-up ~5 s)."""
     input:
         friction=FE_FRICTION,
     output:
-        "results/fe/{sweep}.nc",
+        sweeps=expand("results/fe/{sweep}.nc", sweep=FE_SWEEPS),
+        convergence="results/fe/convergence.nc",
+        stability="results/fe/stability.nc",
+        increments="results/fe/continuum_increments.nc",
     log:
-        "results/logs/fe_sweep/{sweep}.log",
+        "results/logs/fe_studies/studies.log",
     benchmark:
-        "results/benchmarks/fe_sweep/{sweep}.tsv"
-    wildcard_constraints:
-        sweep="|".join(FE_SWEEPS),
+        "results/benchmarks/fe_studies/studies.tsv"
     conda:
         CONDA_ENV
     script:
-        "../scripts/fe_sweep.py"
-
-
-rule fe_study:
-    input:
-        friction=FE_FRICTION,
-    output:
-        "results/fe/{study}.nc",
-    log:
-        "results/logs/fe_study/{study}.log",
-    benchmark:
-        "results/benchmarks/fe_study/{study}.tsv"
-    wildcard_constraints:
-        study="|".join(FE_STUDIES),
-    conda:
-        CONDA_ENV
-    params:
-        kind=lambda wc: wc.study,
-    script:
-        "../scripts/fe_study.py"
+        "../scripts/fe_studies.py"
 
 
 rule fe_model_comparison:
@@ -84,19 +68,6 @@ rule fe_model_comparison:
         CONDA_ENV
     script:
         "../scripts/fe_comparison.py"
-
-
-rule fe_increments:
-    output:
-        "results/fe/continuum_increments.nc",
-    log:
-        "results/logs/fe_increments/continuum_increments.log",
-    benchmark:
-        "results/benchmarks/fe_increments/continuum_increments.tsv"
-    conda:
-        CONDA_ENV
-    script:
-        "../scripts/fe_increments.py"
 
 
 rule fe_readings_claims:
