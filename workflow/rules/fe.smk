@@ -82,6 +82,8 @@ rule fe_readings_claims:
         "results/fe/readings_claims.csv",
     log:
         "results/logs/fe_readings_claims/readings_claims.log",
+    benchmark:
+        "results/benchmarks/fe_readings_claims/readings_claims.tsv"
     conda:
         CONDA_ENV
     params:
