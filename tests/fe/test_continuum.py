@@ -279,3 +279,16 @@ def test_drop_start_peak_converges_with_the_mesh():
     peaks = np.array(peaks)
     assert peaks.min() > 5e-5  # the propped-bending rotation of the lower face, order 1e-4 mm
     np.testing.assert_allclose(peaks[:2], peaks[2], rtol=0.05)
+
+
+def test_held_upper_face_and_axis_output_node():
+    # Section 10 reading: u_y = 0 on the whole upper face; the strip then cannot bend, node 1 on the axis
+    # (even ny) moves only along x, and the contact carries only the weight below the held face
+    s = scene(50, 2, speed=0.5, constrain_upper_face=True, output_node="free_end_axis")
+    assert s.output_node == 1 * 51 + 50  # row j = 1 of 0..2, column i = 50
+    u, N = static_state(s)
+    assert np.all(u[2 * s.mesh.upper + 1] == 0.0)
+    assert 0 < N < 0.1 * 3 / 8 * BEAM.weight
+    r = integrate_continuum(s, 0.002, output_interval=1e-5, initial_state="static", record_state=True)
+    assert np.abs(r.q_samples[:, 2 * s.mesh.upper + 1]).max() == 0.0
+    assert np.abs(r.x - r.x[0]).max() > 0 and np.abs(r.y - r.y[0]).max() < 1e-3 * np.abs(r.x - r.x[0]).max()
