@@ -18,6 +18,7 @@ from stickslip.fe.continuum import (
     build_continuum,
     increments,
     integrate_continuum,
+    natural_frequencies,
     omega_max_elementwise,
     omega_max_global,
     plane_stress_matrix,
@@ -120,6 +121,16 @@ def test_natural_frequencies_match_cantilever_closed_forms(nx, ny):
     bend = f[~axial]
     np.testing.assert_allclose(bend[:3], cantilever_bending_frequencies(BEAM, 3), rtol=0.02)
     assert f[axial][0] == pytest.approx(cantilever_axial_frequencies(BEAM, 1)[0], rel=0.02)
+
+
+def test_propped_strip_first_mode_is_the_clamped_pinned_beam():
+    # contact held at the free-end lower corner: first bending mode of a clamped-pinned beam, beta L = 3.9266
+    bl = 3.9266023120
+    closed = bl**2 / (2 * np.pi * BEAM.length**2) * np.sqrt(BEAM.E * BEAM.inertia / (BEAM.rho * BEAM.area))
+    f = natural_frequencies(scene(100, 1), 3)
+    assert f[0] == pytest.approx(closed, rel=0.01)
+    free = natural_frequencies(scene(100, 1), 3, contact_held=False)
+    assert free[0] == pytest.approx(cantilever_bending_frequencies(BEAM, 1)[0], rel=0.01)
 
 
 # ------------------------------------------------------------------------------------------ time step
@@ -270,6 +281,15 @@ def test_tilted_contact_away_from_the_free_end_is_rejected():
 
 
 # -------------------------------------------------------------------------------------- convergence
+def test_drop_start_response_converges_in_the_time_step():
+    s = scene(100, 1, damping_beta=5e-9)
+    r1 = integrate_continuum(s, 0.004, safety_factor=0.9, output_interval=1e-6)
+    r2 = integrate_continuum(s, 0.004, safety_factor=0.45, output_interval=1e-6)
+    assert r1.x.max() == pytest.approx(r2.x.max(), rel=0.01)
+    x1 = np.interp(r2.t, r1.t, r1.x)  # sample times differ with dt (output every round(interval/dt) steps)
+    assert np.abs(x1 - r2.x).max() < 0.05 * np.abs(r2.x).max()
+
+
 def test_drop_start_peak_converges_with_the_mesh():
     # peak horizontal displacement of the free-end lower corner (node 1) over the first 5 ms of a drop start
     peaks = []

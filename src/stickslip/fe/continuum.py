@@ -391,6 +391,30 @@ def static_state(scene: ContinuumScene) -> tuple[np.ndarray, float]:
     return u, N
 
 
+# ------------------------------------------------------------------------------------------ modes
+def natural_frequencies(scene: ContinuumScene, n_modes: int = 10, contact_held: bool = True) -> np.ndarray:
+    """Lowest ``n_modes`` natural frequencies [Hz] of the clamped strip (sparse shift-invert Lanczos);
+    ``contact_held``: the primary contact node's normal displacement is held (bilateral contact, no friction),
+    as in the linearisation about a closed contact."""
+    if not (isinstance(n_modes, (int, np.integer)) and n_modes >= 1):
+        raise ValueError(f"n_modes: must be an integer >= 1, got {n_modes!r}")
+    n = scene.mesh.n_dof
+    T = sp.identity(n, format="lil")
+    keep = ~scene.fixed
+    if contact_held and scene.contact_nodes.size:
+        c = 2 * int(scene.contact_nodes[scene.primary])
+        nrm = scene.normals[scene.primary]
+        T[c : c + 2, c : c + 2] = np.array([[nrm[0], -nrm[1]], [nrm[1], nrm[0]]])  # columns n, n rotated 90
+        keep = keep.copy()
+        keep[c] = False  # the normal coordinate (equal nodal masses in x and y keep M diagonal)
+    T = T.tocsr()[:, np.nonzero(keep)[0]]
+    K = (T.T @ scene.K @ T).tocsc()
+    M = (T.T @ sp.diags(scene.mass) @ T).tocsc()
+    k = min(n_modes, K.shape[0] - 2)
+    w2 = spla.eigsh(K, k=k, M=M, sigma=0.0, which="LM", return_eigenvectors=False)
+    return np.sqrt(np.clip(np.sort(w2), 0.0, None)) / (2 * np.pi)
+
+
 # ------------------------------------------------------------------------------------------ integration
 def _check_run(duration: float, safety_factor: float) -> None:
     if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
