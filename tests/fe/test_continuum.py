@@ -135,8 +135,9 @@ def test_propped_strip_first_mode_is_the_clamped_pinned_beam():
 
 # ------------------------------------------------------------------------------------------ time step
 def test_element_bound_is_conservative():
-    for nx, ny in [(100, 1), (40, 2)]:
-        s = scene(nx, ny)
+    stiff = {"method": "penalty", "penalty_stiffness": 1e9}  # a spring that sets the step
+    for nx, ny, contact in [(100, 1, {}), (40, 2, {}), (40, 1, stiff)]:
+        s = scene(nx, ny, contact=contact)
         assert omega_max_elementwise(s) >= omega_max_global(s)
         assert stable_time_step(s, "element") <= stable_time_step(s, "global")
 
@@ -312,3 +313,33 @@ def test_held_upper_face_and_axis_output_node():
     r = integrate_continuum(s, 0.002, output_interval=1e-5, initial_state="static", record_state=True)
     assert np.abs(r.q_samples[:, 2 * s.mesh.upper + 1]).max() == 0.0
     assert np.abs(r.x - r.x[0]).max() > 0 and np.abs(r.y - r.y[0]).max() < 1e-3 * np.abs(r.x - r.x[0]).max()
+
+
+def test_penalty_spring_shortens_the_step_and_progress_reports_the_end():
+    soft = scene(40, 1, contact={"method": "penalty", "penalty_stiffness": 1.0})
+    stiff = scene(40, 1, contact={"method": "penalty", "penalty_stiffness": 1e9})
+    assert stable_time_step(stiff) < 0.5 * stable_time_step(soft)
+    calls = []
+    r = integrate_continuum(soft, 1e-4, progress=lambda done, total: calls.append((done, total)), chunk=100)
+    assert calls[-1] == (r.n_steps, r.n_steps) and len(calls) == math.ceil(r.n_steps / 100)
+
+
+@pytest.mark.parametrize(
+    "call,key",
+    [
+        (lambda: scene(0, 1), "nx"),
+        (lambda: scene(10, 1, damping_beta=-1.0), "damping_beta"),
+        (lambda: scene(10, 1, contact_position=0.0), "contact_position"),
+        (lambda: scene(10, 1, disc_rotation="up"), "disc_rotation"),
+        (lambda: scene(10, 1, output_node="middle"), "output_node"),
+        (lambda: integrate_continuum(scene(10, 1), -1.0), "duration"),
+        (lambda: integrate_continuum(scene(10, 1), 1e-4, safety_factor=1.5), "safety_factor"),
+        (lambda: integrate_continuum(scene(10, 1), 1e-4, initial_state="hot"), "initial_state"),
+        (lambda: integrate_continuum(scene(10, 1), 1e-4, output_interval=0.0), "output_interval"),
+        (lambda: integrate_continuum(scene(10, 1), 1e-4, u0=np.zeros(3)), "u0"),
+        (lambda: stable_time_step(scene(10, 1), "guess"), "method"),
+    ],
+)
+def test_bad_input_names_the_key(call, key):
+    with pytest.raises(ValueError, match=f"^{key}"):
+        call()
