@@ -28,6 +28,7 @@ from stickslip.fe.continuum import (
     static_state,
     strip_mesh,
 )
+from stickslip.fe.continuum_kernel import friction_coefficient
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
 
 BEAM = BeamParams()
@@ -370,3 +371,17 @@ def test_description_names_mesh_contact_and_node_1():
     assert d["mesh"] == "200x2" and d["contact_method"] == "penalty" and d["damping_beta"] == 5e-9
     assert "200 x 2" in d["model_interpretation"] and "free_end_upper" in d["model_interpretation"]
     assert "penalty" in d["model_interpretation"] and "beta = 5e-09" in d["method"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.floats(0.01, 5.0), min_size=1, max_size=5),
+    st.lists(st.floats(0.0, 1.0), min_size=6, max_size=6),
+    st.floats(-10.0, 10.0),
+)
+def test_compiled_friction_lookup_equals_the_table(steps, mus, speed):
+    # the kernel re-implements FrictionTable's interpolation (static limit at 0, flat beyond the end)
+    speeds = np.concatenate([[0.0], np.cumsum(steps)])
+    table = FrictionTable(tuple(speeds), tuple(mus[: speeds.size]))
+    got = friction_coefficient(speed, np.asarray(table.speeds), np.asarray(table.mu))
+    assert got == pytest.approx(table(speed), abs=1e-12)
