@@ -280,7 +280,7 @@ def test_tilted_contact_away_from_the_free_end_is_rejected():
     with pytest.raises(ValueError, match="method"):
         scene(50, 1, contact={"method": "fixed_normal"})
     with pytest.raises(ValueError, match="output_node"):
-        scene(50, 1, output_node="free_end_axis")
+        scene(50, 1, output_node=10_000)
 
 
 # -------------------------------------------------------------------------------------- convergence
@@ -385,3 +385,22 @@ def test_compiled_friction_lookup_equals_the_table(steps, mus, speed):
     table = FrictionTable(tuple(speeds), tuple(mus[: speeds.size]))
     got = friction_coefficient(speed, np.asarray(table.speeds), np.asarray(table.mu))
     assert got == pytest.approx(table(speed), abs=1e-12)
+
+
+def test_axis_node_of_a_one_element_strip_is_the_mean_of_the_free_end_corners():
+    rs = {
+        node: integrate_continuum(scene(50, 1, output_node=node), 2e-4, output_interval=1e-5)
+        for node in ("free_end_lower", "free_end_upper", "free_end_axis")
+    }
+    for k in ("x", "y", "vx", "vy"):
+        mean = 0.5 * (getattr(rs["free_end_lower"], k) + getattr(rs["free_end_upper"], k))
+        scale = max(np.abs(getattr(rs[n], k)).max() for n in ("free_end_lower", "free_end_upper"))
+        np.testing.assert_allclose(getattr(rs["free_end_axis"], k), mean, rtol=0, atol=1e-9 * scale)
+    assert np.abs(rs["free_end_lower"].x - rs["free_end_upper"].x).max() > 0  # the corners differ
+
+
+def test_reruns_are_bit_identical():
+    a, b = (integrate_continuum(scene(50, 1), 3e-4, output_interval=1e-5) for _ in range(2))
+    assert a.dt == b.dt
+    for k in ("x", "y", "vx", "vy", "normal_force", "friction_force", "slip_velocity", "state"):
+        assert np.array_equal(getattr(a, k), getattr(b, k))
