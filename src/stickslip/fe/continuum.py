@@ -254,11 +254,12 @@ def build_continuum(
     ``contact_position``: x of the lower-face touching point [mm] (default L, the free-end lower corner); it
     snaps to the nearest lower-face node. ``disc_rotation``: "clockwise" (paper) or "counterclockwise".
     ``constrain_upper_face``: hold u_y = 0 on the upper face (Section 10). ``candidate_gap``: lower-face
-    nodes with an initial gap below it are slave nodes (default h).
+    nodes with an initial gap below it are slave nodes (default h). ``contact.surface_offset`` does not
+    apply: the strip's contact is on its lower face by construction.
     """
     if contact.method not in CONTINUUM_METHODS:
         raise ValueError(f"method: the continuum strip supports {CONTINUUM_METHODS}, got {contact.method!r}")
-    if not (math.isfinite(damping_beta) and damping_beta >= 0):
+    if not (isinstance(damping_beta, (int, float)) and math.isfinite(damping_beta) and damping_beta >= 0):
         raise ValueError(f"damping_beta: must be a finite number >= 0, got {damping_beta!r}")
     if disc_rotation not in ("clockwise", "counterclockwise"):
         raise ValueError(f"disc_rotation: must be 'clockwise' or 'counterclockwise', got {disc_rotation!r}")
@@ -287,8 +288,9 @@ def build_continuum(
     if np.any(gaps < -1e-9 * R):
         bad = float(lx[np.argmin(gaps)])
         raise ValueError(
-            f"angle_deg: with the contact at x = {p_touch[0]:g} mm the disc would penetrate the lower face "
-            f"at x = {bad:g} mm (a tilted contact needs the free-end corner)"
+            f"angle_deg: {contact.angle_deg:g} deg with the contact at x = {p_touch[0]:g} mm puts the disc "
+            f"through the lower face at x = {bad:g} mm (a straight strip touches a disc only with the "
+            "normal vertical, or tilted towards the clamp at the free-end corner)"
         )
     gmax = beam.thickness if candidate_gap is None else float(candidate_gap)
     if not gmax > 0:
