@@ -5,14 +5,19 @@ stable step (global omega_max and the element-by-element bound), increments for 
 the number comparable to the ABAQUS banner's 3 688 747, and 0.9 as run), CPU per 1e5 steps, the projected
 CPU for 0.65 s, and the per-step CPU ratio to ``fe.explicit.integrate`` on the default 20-element beam.
 
-Usage: python benchmarks/bench_fe_continuum.py [--full]   (--full also runs the 100x1 strip for 0.65 s)
+Usage: python benchmarks/bench_fe_continuum.py [--full] [--convergence]
+  --full         also runs the 100x1 strip for 0.65 s
+  --convergence  node-1 metrics of a 0.05 s drop start (beta = 5e-9 s, both disc speeds) per mesh, with CPU
 """
 
 import sys
 import time
 
+import numpy as np
+
 from stickslip.fe.continuum import build_continuum, increments, integrate_continuum, stable_time_step
 from stickslip.fe.explicit import integrate
+from stickslip.fe.metrics import dominant_frequency
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
 
@@ -62,3 +67,25 @@ if "--full" in sys.argv:
         f"full 100x1 run, {DURATION} s: {r.n_steps} increments, CPU {r.cpu_time:.1f} s "
         f"(wall {time.time() - t0:.1f} s), fractions {r.fractions()}"
     )
+
+if "--convergence" in sys.argv:
+    print("\nconvergence: drop start, 0.05 s, beta = 5e-9 s, node 1 = free-end lower corner, second half")
+    hdr = (
+        f"{'V[mm/s]':>7s} {'mesh':>6s} {'x_half_pp[mm]':>13s} {'x_mean[mm]':>11s} {'y_half_pp[mm]':>13s} "
+        f"{'f_dom[Hz]':>9s} {'stick':>6s} {'slip':>6s} {'sep':>6s} {'CPU[s]':>7s}"
+    )
+    print(hdr)
+    for speed in (0.5, 19.9):
+        d = DiscParams(surface_speed_mm_s=speed)
+        for nx, ny in MESHES:
+            s = build_continuum(beam, d, contact, fr, nx=nx, ny=ny, damping_beta=5e-9)
+            r = integrate_continuum(s, 0.05, safety_factor=SF, output_interval=2e-6)
+            h = r.t >= 0.025
+            x, y = r.x[h], r.y[h]
+            f = r.fractions()
+            fd = dominant_frequency(r.t[h], x)
+            print(
+                f"{speed:7.1f} {nx:>3d}x{ny:<2d} {0.5 * np.ptp(x):13.4e} {x.mean():11.4e} "
+                f"{0.5 * np.ptp(y):13.4e} {fd:9.1f} {f['stick']:6.3f} {f['slip']:6.3f} "
+                f"{f['separation']:6.3f} {r.cpu_time:7.1f}"
+            )
