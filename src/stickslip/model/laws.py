@@ -234,7 +234,7 @@ class TabulatedLaw(FrictionLaw):
         if not (np.all(np.isfinite(speed)) and np.all(np.isfinite(values))):
             raise ParameterError("table: speeds and mu must be finite (NaN/inf found)")
         if speed[0] != 0.0:
-            raise ParameterError(f"table: the first relative speed must be 0, got {speed[0]!r}")
+            raise ParameterError(f"table: the first relative speed must be 0, got {float(speed[0])!r}")
         if np.any(np.diff(speed) <= 0):
             raise ParameterError("table: relative speeds must be strictly increasing")
         if np.any(values < 0):
