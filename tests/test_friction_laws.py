@@ -168,3 +168,10 @@ def test_bad_tables_are_refused():
 def test_printed_sign_variants_are_not_friction_laws():
     with pytest.raises(ParameterError, match="^variant: 'eq3_printed'"):
         LawModel.from_belt_model(BeltModel.build(PAPER_BASELINE, "eq3_printed"))
+
+
+@settings(max_examples=300, deadline=None)
+@given(speed=st.floats(-0.05, 3.0))
+def test_table_scalar_path_equals_the_vectorised_interpolant(speed):
+    law = TabulatedLaw(TABLE_V, TABLE_MU)
+    assert law.mu_continued(float(speed)) == pytest.approx(float(law.mu_continued(np.array(speed))), abs=1e-15)

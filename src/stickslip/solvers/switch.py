@@ -23,6 +23,7 @@ undamped-slip case C = b (the paper's text baseline, sigma = 0.3) grazes on ever
 
 from __future__ import annotations
 
+import bisect
 import math
 from dataclasses import dataclass
 
@@ -190,19 +191,18 @@ class SwitchSolver:
 
         turning.terminal, turning.direction = False, 1
         events = [contact, turning]
-        rel0 = s * (v0 - float(vb(t0)))
-        rate0 = s * (float(rhs(t0, [x0, v0])[1]) - float(lm.params.belt_acceleration_at(t0)))
-        for speed in lm.law.breakpoints:
-            gap0 = rel0 - speed
-            # restarting on the breakpoint (the previous phase ended there): the side is where we go next
-            on_it = abs(gap0) <= 1e-9 * max(speed, abs(rel0))
-            side = np.sign(rate0) if on_it else np.sign(gap0)
+        nodes = lm.law.breakpoints
+        if nodes:  # the law is smooth between its breakpoints: leave the interval -> restart there
+            rel0 = s * (v0 - float(vb(t0)))
+            rate0 = s * (float(rhs(t0, [x0, v0])[1]) - float(lm.params.belt_acceleration_at(t0)))
+            lo, hi = smooth_interval(nodes, rel0, rate0)
 
-            def cross(t, y, speed=speed):
-                return s * (y[1] - float(vb(t))) - speed
+            def leave(t, y):
+                rel = s * (y[1] - float(vb(t)))
+                return min(rel - lo, hi - rel)
 
-            cross.terminal, cross.direction = True, -float(side)  # only the crossing back over it
-            events.append(cross)
+            leave.terminal, leave.direction = True, -1
+            events.append(leave)
         sol = solve_ivp(
             rhs,
             (t0, t_limit),
@@ -232,6 +232,19 @@ class SwitchSolver:
             stats.events += 1
             return Segment(t0, t1, s, motion), s
         return Segment(t0, t1, s, motion), s
+
+
+def smooth_interval(nodes: tuple[float, ...], rel: float, rate: float) -> tuple[float, float]:
+    """(lo, hi): the interval between breakpoints that the relative speed ``rel`` is in, or, on a
+    breakpoint (a restart there), the one it moves into (by the sign of its rate)."""
+    def node(j):
+        return -math.inf if j < 0 else (math.inf if j >= len(nodes) else nodes[j])
+
+    i = bisect.bisect_left(nodes, rel)  # nodes[i-1] < rel <= nodes[i]
+    for j in (i - 1, i):  # on (within round-off of) a node: go the way the speed moves
+        if 0 <= j < len(nodes) and abs(nodes[j] - rel) <= 1e-9 * max(nodes[j], abs(rel)):
+            return (nodes[j], node(j + 1)) if rate >= 0 else (node(j - 1), nodes[j])
+    return node(i - 1), node(i)
 
 
 def _mode_from_state(lm: LawModel, t: float, x: float, v: float):
