@@ -49,7 +49,7 @@ from stickslip.io.netcdf import read_dataset
 LAWS = ["affine", "coulomb", "stribeck", "rational", "tabulated"]
 peer_rows = pd.concat([pd.read_csv(f"results/validation/peer_{law}.csv") for law in LAWS], ignore_index=True)
 peer = read_dataset("results/validation/peer.nc")
-rt = read_dataset("results/validation/round_trip.nc")
+rt = read_dataset("results/validation/round_trip.nc").swap_dims(case="case_name")
 rt_rows = pd.read_csv("results/validation/round_trip.csv")
 
 # %% [markdown]
@@ -120,7 +120,7 @@ fig, axes = plt.subplots(1, 2, figsize=(11, 4))
 ax = axes[0]
 gap = np.abs(rt.mu_table - rt.mu_law).clip(min=1e-13)
 ax.semilogy(rt.speed, gap, color="C1", lw=1.5, label="|μ_table − μ_law|")
-last = float(rt.last_row_speed.sel(case="fig17_table"))
+last = float(rt.last_row_speed.sel(case_name="fig17_table"))
 ax.axvline(last, color="0.4", ls=":", lw=1, label=f"table's last row, {last:.3f} mm/s")
 ax.set_xlabel("relative speed |v_r| [mm/s] (up to the top speed of the cycle)")
 ax.set_ylabel("table − law, |Δμ|")
@@ -153,7 +153,7 @@ last row is {d["table_error_inside"]:.1e} (the 10 significant digits of the CSV)
 line in |v_r| and the table's rows are bin means of points on that line, so they lie on it too, and PCHIP
 through collinear points is the line. The table's last row, however, sits at the *mean* speed of the
 top bin ({last:.4f} mm/s), below the top speed the cycle reaches
-({float(rt.max_cycle_speed.sel(case="fig17_table")):.4f} mm/s); beyond it the table holds μ constant
+({float(rt.max_cycle_speed.sel(case_name="fig17_table")):.4f} mm/s); beyond it the table holds μ constant
 while the law keeps falling, by up to {d["table_error_beyond"]:.1e}. That extra friction in the fastest
 part of every slip shortens the period by {abs(d["period"]):.2e} s and moves the stick-onset position by
 {d["onset_position"]:.2e} mm; over the 40 s run the trajectories part by up to {d["max_abs_dx"]:.2e} mm.
@@ -179,16 +179,16 @@ alone, so the forward and backward branches of Fig. 17 coincide and the stick br
 # smooth law is second order in the bin width.
 
 # %%
-curved = [c for c in rt.case.values if c.startswith("stribeck_bins")]
+curved = [c for c in rt.case_name.values if c.startswith("stribeck_bins")]
 bins = np.array([int(c.split("bins")[1]) for c in curved])
 fig, ax = plt.subplots(figsize=(7, 4))
 for q, units in (("period", "s"), ("stick_duration", "s"), ("x_max", "mm"), ("x_min", "mm")):
-    diff = np.abs(rt[f"{q}_table"].sel(case=curved) - rt[f"{q}_source"].sel(case=curved))
+    diff = np.abs(rt[f"{q}_table"].sel(case_name=curved) - rt[f"{q}_source"].sel(case_name=curved))
     ax.loglog(bins, diff, "o-", label=f"|Δ {q}| [{units}]")
-ax.loglog(bins, rt.max_abs_dx.sel(case=curved), "k^-", label="max |Δx| over the run [mm]")
+ax.loglog(bins, rt.max_abs_dx.sel(case_name=curved), "k^-", label="max |Δx| over the run [mm]")
 ax.loglog(
     bins,
-    0.5 * (bins / bins[0]) ** -2.0 * float(rt.max_abs_dx.sel(case=curved[0])),
+    0.5 * (bins / bins[0]) ** -2.0 * float(rt.max_abs_dx.sel(case_name=curved[0])),
     "k:",
     lw=1,
     label="slope −2",

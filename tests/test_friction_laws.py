@@ -174,4 +174,6 @@ def test_printed_sign_variants_are_not_friction_laws():
 @given(speed=st.floats(-0.05, 3.0))
 def test_table_scalar_path_equals_the_vectorised_interpolant(speed):
     law = TabulatedLaw(TABLE_V, TABLE_MU)
-    assert law.mu_continued(float(speed)) == pytest.approx(float(law.mu_continued(np.array(speed))), abs=1e-15)
+    assert law.mu_continued(float(speed)) == pytest.approx(
+        float(law.mu_continued(np.array(speed))), abs=1e-15
+    )

@@ -81,9 +81,9 @@ def peer_dataset(rows: list[dict], runs: dict[str, dict], tolerances: dict) -> x
         [float(runs[n]["segments"]) for n in laws],
         {"units": "1", "long_name": "stick and slip phases of the switch-model run"},
     )
-    return xr.Dataset(
-        data, coords={"law": ("law", laws, {"long_name": "friction law (config validation.laws)"})}
-    )
+    # names as an auxiliary coordinate: a CF coordinate variable must be numeric and monotonic
+    names = ("law", laws, {"long_name": "friction law (config validation.laws)"})
+    return xr.Dataset(data, coords={"law_name": names})
 
 
 def _tol_class(quantity: str) -> str:
@@ -173,6 +173,6 @@ def round_trip_dataset(main: RoundTrip, cases: dict[str, RoundTrip], source_chec
     coords = {
         "time": time,
         "speed": ("speed", main.speed_grid, {"units": "mm s-1", "long_name": "relative speed |v_r|"}),
-        "case": ("case", names, {"long_name": "round-trip case"}),
+        "case_name": ("case", names, {"long_name": "round-trip case"}),  # auxiliary, as law_name
     }
     return xr.Dataset(data, coords=coords)
