@@ -177,3 +177,14 @@ def test_table_scalar_path_equals_the_vectorised_interpolant(speed):
     assert law.mu_continued(float(speed)) == pytest.approx(
         float(law.mu_continued(np.array(speed))), abs=1e-15
     )
+
+
+@settings(max_examples=100, deadline=None)
+@given(t=st.floats(0.0, 30.0), x=st.floats(-3.0, 3.0), v=st.floats(-3.0, 3.0))
+def test_affine_law_as_one_sign_equation_is_the_pipelines_equation(t, x, v):
+    """The methods study runs any law through SignLawModel; for the affine law it must be BeltModel.rhs."""
+    from stickslip.validation.methods import SignLawModel
+
+    model = BeltModel.build(PAPER_BASELINE.with_(sigma=0.5, belt_deceleration=0.02), "consistent")
+    single = SignLawModel(LawModel.from_belt_model(model))
+    assert np.allclose(single.rhs(t, [x, v]), model.rhs(t, [x, v]), rtol=1e-13, atol=1e-13)

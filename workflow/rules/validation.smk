@@ -8,6 +8,10 @@ VALIDATION.check(producible=["results/onedof/friction_mu_vr.csv"])
 
 ALL_TARGETS.extend(
     expand("results/validation/peer_{law}.csv", law=VALIDATION_LAWS)
+    + expand(
+        "results/validation/methods_{law}.nc",
+        law=config["validation"]["methods_per_law"]["laws"],
+    )
     + [
         "results/validation/peer.nc",
         "results/validation/round_trip.nc",
@@ -63,3 +67,24 @@ rule validation_round_trip:
         validation={k: v for k, v in config["validation"].items() if k in ("solver", "round_trip")},
     script:
         "../scripts/validation_round_trip.py"
+
+
+rule validation_methods:
+    """Issue 13 item 5: the methods study on nonlinear laws, so the ranking is not an artefact of the affine one."""
+    output:
+        expand(
+            "results/validation/methods_{law}.nc",
+            law=config["validation"]["methods_per_law"]["laws"],
+        ),
+    log:
+        "results/logs/validation_methods/all.log",
+    benchmark:
+        "results/benchmarks/validation_methods/all.tsv"
+    conda:
+        CONDA_ENV
+    params:
+        validation={
+            k: v for k, v in config["validation"].items() if k not in ("round_trip", "peer", "tolerances")
+        },
+    script:
+        "../scripts/validation_methods.py"

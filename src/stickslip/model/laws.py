@@ -183,7 +183,10 @@ class StribeckLaw(FrictionLaw):
         return self.mu_s
 
     def mu_continued(self, speed):
-        return self.mu_k + (self.mu_s - self.mu_k) * np.exp(-np.asarray(speed, dtype=float) / self.v_s)
+        # the continuation below 0 is only ever needed near 0: bounded far out so a diverging trial step
+        # of an integrator cannot overflow
+        speed = np.maximum(np.asarray(speed, dtype=float), -20.0 * self.v_s)
+        return self.mu_k + (self.mu_s - self.mu_k) * np.exp(-speed / self.v_s)
 
 
 @_register

@@ -55,6 +55,8 @@ def as_law_model(model) -> LawModel:
         return model
     if isinstance(model, BeltModel):
         return LawModel.from_belt_model(model)
+    if hasattr(model, "law") and hasattr(model, "params"):  # a wrapper, e.g. the work-budget proxy
+        return LawModel(model.params, model.law)
     raise ParameterError(f"model: expected a LawModel or BeltModel, got {type(model).__name__}")
 
 

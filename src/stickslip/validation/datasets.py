@@ -176,3 +176,43 @@ def round_trip_dataset(main: RoundTrip, cases: dict[str, RoundTrip], source_chec
         "case_name": ("case", names, {"long_name": "round-trip case"}),  # auxiliary, as law_name
     }
     return xr.Dataset(data, coords=coords)
+
+
+def methods_dataset(records: list[dict], ref_cycle: dict) -> xr.Dataset:
+    """Work-precision of the methods on one law: dimension ``method`` (labels as an auxiliary coordinate)."""
+    fields = (
+        ("state", "1", "max-norm state error relative to the reference's peak-to-peak x and v"),
+        ("period_error", "1", "relative error of the limit-cycle period"),
+        ("amplitude_error", "1", "relative error of the peak-to-peak amplitude"),
+        ("cpu_time", "s", "process CPU time of one run (minimum over repeats)"),
+        ("rhs_evaluations", "1", "right-hand-side evaluations"),
+    )
+    data = {
+        name: ("method", [float(r[name]) for r in records], {"units": units, "long_name": long_name})
+        for name, units, long_name in fields
+    }
+    data["failed"] = (
+        "method",
+        np.array([r["status"] != "ok" for r in records], dtype=np.int8),
+        {
+            "units": "1",
+            "long_name": "run failed",
+            "flag_values": np.array([0, 1], dtype=np.int8),
+            "flag_meanings": "ok failed",
+        },
+    )
+    data["reference_period"] = (
+        (),
+        float(ref_cycle["period"]),
+        {"units": "s", "long_name": "reference period"},
+    )
+    data["reference_amplitude"] = (
+        (),
+        float(ref_cycle["amplitude"]),
+        {"units": "mm", "long_name": "reference peak-to-peak amplitude"},
+    )
+    coords = {
+        "method_label": ("method", [r["label"] for r in records], {"long_name": "method and settings"}),
+        "solver": ("method", [r["solver"] for r in records], {"long_name": "method family"}),
+    }
+    return xr.Dataset(data, coords=coords)

@@ -106,6 +106,15 @@ class ValidationSetup:
             SwitchSolver(**rt.get("curved_solver", {}))
         except (TypeError, ParameterError) as exc:
             raise ParameterError(f"validation.round_trip.curved_solver: {exc}") from None
+        methods = self._section("methods_per_law")
+        for law in methods.get("laws", []):
+            if law not in self.law_names():
+                raise ParameterError(
+                    f"validation.methods_per_law.laws: {law!r} is not a law of validation.laws"
+                )
+        from .methods import expand_methods
+
+        expand_methods(methods.get("methods", []))
         factor = rt.get("extension_factor")
         if isinstance(factor, bool) or not isinstance(factor, (int, float)) or not factor > 1:
             raise ParameterError(f"validation.round_trip.extension_factor: a number > 1, got {factor!r}")
