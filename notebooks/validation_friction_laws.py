@@ -38,6 +38,7 @@
 
 # %%
 import json
+from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -215,7 +216,7 @@ display(
 # ## 3. Is the methods ranking an artefact of the straight-line law?
 #
 # The project's methods study (its own notebook) ranks integration methods on the paper's affine law. Here
-# the same kind of study runs on two curved laws (Stribeck and μ_s/(1 + δ|v_r|)), with the switch-model
+# the same kind of study runs on curved laws (Stribeck; μ_s/(1 + δ|v_r|) if configured), with the switch-model
 # solver as the reference. Only methods that integrate the single sign equation
 # M x'' + C x' + K x = −N μ(|v_r|) sgn(v_r) accept any law: the paper's approach (sign() + an explicit
 # Runge–Kutta pair, ode45 = RK45 at rtol 10⁻³) and its tanh-smoothed version. A run that needs more
@@ -223,9 +224,10 @@ display(
 # failure (×), not as a point.
 
 # %%
-METHOD_LAWS = ["stribeck", "rational"]
-studies = {law: read_dataset(f"results/validation/methods_{law}.nc") for law in METHOD_LAWS}
-fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
+METHOD_FILES = sorted(Path("results/validation").glob("methods_*.nc"))  # the laws config listed
+studies = {p.stem.removeprefix("methods_"): read_dataset(p) for p in METHOD_FILES}
+fig, axes = plt.subplots(1, len(studies), figsize=(5.5 * len(studies) + 0.5, 4.2), sharey=True, squeeze=False)
+axes = axes[0]
 markers = {"sign_rk": "o", "smooth": "s", "switch": "D"}
 for ax, (law, ds) in zip(axes, studies.items()):
     for family, marker in markers.items():
@@ -250,7 +252,7 @@ for ax, (law, ds) in zip(axes, studies.items()):
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_title(f"{law} law (× at 1: stalled, work budget exceeded)", fontsize=9)
 axes[0].set_ylabel("relative error of the limit-cycle period")
-axes[1].legend(fontsize=8, loc="lower right")
+axes[-1].legend(fontsize=8, loc="lower right")
 plt.tight_layout()
 plt.show()
 table = pd.concat(

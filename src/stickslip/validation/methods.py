@@ -95,7 +95,7 @@ def methods_study(law_model: LawModel, entries: list[dict], t_end: float, t_eval
     from ..analysis.errors import measure_run, segment_cycle_metrics
 
     ref = reference.solve(law_model, t_end, t_eval)
-    ref_cycle = segment_cycle_metrics(reference.segments(law_model, t_end))
+    ref_cycle = segment_cycle_metrics(reference.segments(law_model, t_end))  # to machine precision
     records = []
     for solver, settings, label in expand_methods(entries):
         _, record = measure_run(
