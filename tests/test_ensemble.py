@@ -153,3 +153,17 @@ def test_trend_claim_spread_from_the_members_curves():
     row = {**_value_row(0, 0), "kind": "trend", "dataset": "s.nc", "variable": "f", "coord": "p", "sign": 0}
     res = evaluate(row, "", lambda p: ds)
     assert res.status == "indistinguishable" and res.spread > 0
+
+
+def test_identical_members_decide_even_at_zero_margin():
+    """0 > 0 in every member (e.g. no separation at all) is robustly false: deviates, not indistinguishable."""
+    zero = _with_members([0.0, 0.0, 0.0])
+    row = {
+        **_value_row(0, 0),
+        "kind": "compare",
+        "lhs": {"dataset": "l.nc", "variable": "a"},
+        "relation": ">",
+        "rhs": {"value": 0.0},
+    }
+    res = evaluate(row, "", lambda p: zero)
+    assert res.status == "deviates" and res.margin == 0.0 and res.spread == 0.0

@@ -14,6 +14,7 @@ import numpy as np
 
 from ..model.equations import BeltModel
 from ..model.params import BeltParams
+from ..solvers.base import sample_times
 from .metrics import limit_cycle_metrics
 
 KEYS = ("stick_fraction", "stick_time", "amplitude_peak_to_peak", "frequency_peaks")
@@ -31,7 +32,7 @@ def continuation(base: BeltParams, variant: str, speeds, solver, t_end: float, t
     out = {k: np.full(len(speeds), np.nan) for k in KEYS + ("solver_ok", "steady_sliding_stable")}
     messages = []
     x, vr = base.x0, None
-    t_eval = np.arange(0.0, t_end + 0.5 * dt, dt)
+    t_eval = sample_times(t_end, dt)
     for i, vb in enumerate(speeds):
         params = base.with_(belt_velocity=float(vb), x0=float(x), v0=float(vb if vr is None else vb + vr))
         model = BeltModel.build(params, variant)

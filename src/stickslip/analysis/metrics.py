@@ -11,7 +11,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.fft
-from scipy.signal import find_peaks
 
 from ..solvers.base import STICK, Trajectory
 
@@ -76,6 +75,8 @@ def displacement_peaks(t: np.ndarray, x: np.ndarray, rel_prominence: float = 0.0
     span = np.nanmax(x) - np.nanmin(x)
     if not np.isfinite(span) or span <= 0:
         return np.array([], dtype=int)
+    from scipy.signal import find_peaks  # here: scipy.signal costs ~1 s to import, most jobs never need it
+
     peaks, _ = find_peaks(x, prominence=rel_prominence * span)
     return peaks
 

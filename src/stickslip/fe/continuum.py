@@ -189,7 +189,8 @@ class ContinuumScene:
     primary: int  #: index into contact_nodes of the node touching at t = 0
     disc_centre: tuple
     disc_speed: float  #: surface speed V [mm s-1] (>= 0; direction in ``tangents``)
-    output_node: int  #: node id of "node 1"
+    output_nodes: np.ndarray  #: node ids whose weighted mean is "node 1" (one node, or two about the axis)
+    output_weights: np.ndarray  #: their weights
     output_name: str
     damping_beta: float  #: stiffness-proportional damping [s]
 
@@ -202,26 +203,34 @@ class ContinuumScene:
         return float(self.contact.penalty_stiffness) if self.method == "penalty" else 0.0
 
     @property
+    def output_node(self) -> int:
+        """Node id of "node 1" (-1 if it is the mean of two nodes)."""
+        return int(self.output_nodes[0]) if self.output_nodes.size == 1 else -1
+
+    @property
     def free(self) -> np.ndarray:
         return np.nonzero(~self.fixed)[0]
 
 
-def _output_node_id(mesh: StripMesh, name, contact_node: int) -> int:
+def _output_point(mesh: StripMesh, name, contact_node: int) -> tuple[np.ndarray, np.ndarray]:
+    """(node ids, weights) of "node 1": one node, or the mean of the two free-end nodes straddling the axis
+    (``free_end_axis`` with odd ny: the axis point of the linear free edge)."""
     free_end = np.arange(mesh.ny + 1) * (mesh.nx + 1) + mesh.nx
+    one = np.ones(1)
     if isinstance(name, (int, np.integer)) and not isinstance(name, bool):
         if not 0 <= int(name) < mesh.n_nodes:
             raise ValueError(f"output_node: node id {name} outside 0..{mesh.n_nodes - 1}")
-        return int(name)
+        return np.array([int(name)]), one
     if name == "free_end_lower":
-        return int(free_end[0])
+        return free_end[:1].copy(), one
     if name == "free_end_upper":
-        return int(free_end[-1])
+        return free_end[-1:].copy(), one
     if name == "free_end_axis":
-        if mesh.ny % 2:
-            raise ValueError("output_node: free_end_axis needs an even ny (a node on the axis)")
-        return int(free_end[mesh.ny // 2])
+        if mesh.ny % 2 == 0:
+            return free_end[mesh.ny // 2 : mesh.ny // 2 + 1].copy(), one
+        return free_end[mesh.ny // 2 : mesh.ny // 2 + 2].copy(), np.array([0.5, 0.5])
     if name == "contact":
-        return int(contact_node)
+        return np.array([int(contact_node)]), one
     raise ValueError(f"output_node: must be a node id or one of {OUTPUT_NODES}, got {name!r}")
 
 
@@ -245,11 +254,12 @@ def build_continuum(
     ``contact_position``: x of the lower-face touching point [mm] (default L, the free-end lower corner); it
     snaps to the nearest lower-face node. ``disc_rotation``: "clockwise" (paper) or "counterclockwise".
     ``constrain_upper_face``: hold u_y = 0 on the upper face (Section 10). ``candidate_gap``: lower-face
-    nodes with an initial gap below it are slave nodes (default h).
+    nodes with an initial gap below it are slave nodes (default h). ``contact.surface_offset`` does not
+    apply: the strip's contact is on its lower face by construction.
     """
     if contact.method not in CONTINUUM_METHODS:
         raise ValueError(f"method: the continuum strip supports {CONTINUUM_METHODS}, got {contact.method!r}")
-    if not (math.isfinite(damping_beta) and damping_beta >= 0):
+    if not (isinstance(damping_beta, (int, float)) and math.isfinite(damping_beta) and damping_beta >= 0):
         raise ValueError(f"damping_beta: must be a finite number >= 0, got {damping_beta!r}")
     if disc_rotation not in ("clockwise", "counterclockwise"):
         raise ValueError(f"disc_rotation: must be 'clockwise' or 'counterclockwise', got {disc_rotation!r}")
@@ -278,8 +288,9 @@ def build_continuum(
     if np.any(gaps < -1e-9 * R):
         bad = float(lx[np.argmin(gaps)])
         raise ValueError(
-            f"angle_deg: with the contact at x = {p_touch[0]:g} mm the disc would penetrate the lower face "
-            f"at x = {bad:g} mm (a tilted contact needs the free-end corner)"
+            f"angle_deg: {contact.angle_deg:g} deg with the contact at x = {p_touch[0]:g} mm puts the disc "
+            f"through the lower face at x = {bad:g} mm (a straight strip touches a disc only with the "
+            "normal vertical, or tilted towards the clamp at the free-end corner)"
         )
     gmax = beam.thickness if candidate_gap is None else float(candidate_gap)
     if not gmax > 0:
@@ -295,9 +306,37 @@ def build_continuum(
     return ContinuumScene(
         beam, disc, contact, friction, mesh, K, mass, f, fixed, ke, me, contact_nodes, normals, tangents,
         gap0, primary, (float(centre[0]), float(centre[1])), float(disc.surface_speed),
-        _output_node_id(mesh, output_node, int(mesh.lower[k0])),
+        *_output_point(mesh, output_node, int(mesh.lower[k0])),
         output_node if isinstance(output_node, str) else f"node {output_node}", float(damping_beta),
     )  # fmt: skip
+
+
+def describe(scene: ContinuumScene) -> dict:
+    """Plain-text model description of a scene, for dataset attributes (interpretation and method)."""
+    m = scene.mesh
+    cx = float(m.nodes[scene.contact_nodes[scene.primary], 0]) if scene.contact_nodes.size else float("nan")
+    return {
+        "model": "continuum",
+        "model_interpretation": (
+            f"2-D plane-stress strip {scene.beam.length:g} x {scene.beam.thickness:g} mm, width "
+            f"{scene.beam.width:g} mm, {m.nx} x {m.ny} four-node quads with incompatible modes (QM6, "
+            "condensed; ABAQUS CPS4I kind), row-sum lumped mass, left end clamped, gravity; rigid disc "
+            f"{scene.disc.diameter:g} mm touching the lower face at x = {cx:g} mm, contact angle "
+            f"{scene.contact.angle_deg:g} deg, node-to-surface {scene.method} contact on "
+            f"{scene.contact_nodes.size} lower-face slave nodes with fixed normals, tabulated mu(|v_r|) with "
+            f"exact stick; node 1 = {scene.output_name} (mean of nodes {scene.output_nodes.tolist()}); "
+            "displacements from the "
+            "undeformed configuration"
+        ),
+        "method": (
+            "explicit central differences (half-step start), compiled element-by-element loop, stiffness-"
+            f"proportional damping beta = {scene.damping_beta:g} s, dt = safety factor x 2/omega_max (global)"
+        ),
+        "mesh": f"{m.nx}x{m.ny}",
+        "output_node": scene.output_name,
+        "contact_method": scene.method,
+        "damping_beta": scene.damping_beta,
+    }
 
 
 # ----------------------------------------------------------------------------------- stable time step
@@ -330,7 +369,8 @@ def omega_max_global(scene: ContinuumScene, tol: float = 1e-10) -> float:
     fr = scene.free
     s = sp.diags(1.0 / np.sqrt(scene.mass[fr]))
     A = (s @ (scene.K + _penalty_matrix(scene))[fr][:, fr] @ s).tocsr()
-    w2 = spla.eigsh(A, k=1, which="LA", tol=tol, return_eigenvectors=False)[0]
+    start = np.random.default_rng(0).standard_normal(A.shape[0])  # fixed start: reruns give the same dt
+    w2 = spla.eigsh(A, k=1, which="LA", tol=tol, v0=start, return_eigenvectors=False)[0]
     return float(math.sqrt(max(w2, 0.0)))
 
 
@@ -389,6 +429,31 @@ def static_state(scene: ContinuumScene) -> tuple[np.ndarray, float]:
         uf, N = spla.spsolve(Kf.tocsc(), ff), 0.0
     u[fr] = uf
     return u, N
+
+
+# ------------------------------------------------------------------------------------------ modes
+def natural_frequencies(scene: ContinuumScene, n_modes: int = 10, contact_held: bool = True) -> np.ndarray:
+    """Lowest ``n_modes`` natural frequencies [Hz] of the clamped strip (sparse shift-invert Lanczos);
+    ``contact_held``: the primary contact node's normal displacement is held (bilateral contact, no friction),
+    as in the linearisation about a closed contact."""
+    if not (isinstance(n_modes, (int, np.integer)) and n_modes >= 1):
+        raise ValueError(f"n_modes: must be an integer >= 1, got {n_modes!r}")
+    n = scene.mesh.n_dof
+    T = sp.identity(n, format="lil")
+    keep = ~scene.fixed
+    if contact_held and scene.contact_nodes.size:
+        c = 2 * int(scene.contact_nodes[scene.primary])
+        nrm = scene.normals[scene.primary]
+        T[c : c + 2, c : c + 2] = np.array([[nrm[0], -nrm[1]], [nrm[1], nrm[0]]])  # columns n, n rotated 90
+        keep = keep.copy()
+        keep[c] = False  # the normal coordinate (equal nodal masses in x and y keep M diagonal)
+    T = T.tocsr()[:, np.nonzero(keep)[0]]
+    K = (T.T @ scene.K @ T).tocsc()
+    M = (T.T @ sp.diags(scene.mass) @ T).tocsc()
+    k = min(n_modes, K.shape[0] - 2)
+    start = np.random.default_rng(0).standard_normal(K.shape[0])
+    w2 = spla.eigsh(K, k=k, M=M, sigma=0.0, which="LM", v0=start, return_eigenvectors=False)
+    return np.sqrt(np.clip(np.sort(w2), 0.0, None)) / (2 * np.pi)
 
 
 # ------------------------------------------------------------------------------------------ integration
@@ -459,13 +524,15 @@ def integrate_continuum(
     cm = scene.mass[cdof].copy()
     fs = np.asarray(scene.friction.speeds, float)
     fmu = np.asarray(scene.friction.mu, float)
-    od = 2 * scene.output_node
+    onode = (2 * scene.output_nodes).astype(np.int64)
+    ow = np.asarray(scene.output_weights, float)
+    pt = [float(ow @ arr[onode + k]) for arr in (u, v) for k in (0, 1)]
     out = np.zeros((n_out, 8))
     ost = np.zeros(n_out, np.int8)
     counts = np.zeros(3, np.int64)
     has_contact = scene.contact_nodes.size > 0
     closed = has_contact and (initial_state != "static" or N_stat > 0)
-    out[0] = (0.0, u[od], u[od + 1], v[od], v[od + 1], N_stat if initial_state == "static" else 0.0, 0.0, 0.0)
+    out[0] = (0.0, *pt, N_stat if initial_state == "static" else 0.0, 0.0, 0.0)
     if has_contact:
         c0 = 2 * scene.contact_nodes[scene.primary]
         out[0, 7] = float(scene.tangents[scene.primary] @ v[c0 : c0 + 2]) - scene.disc_speed
@@ -475,7 +542,7 @@ def integrate_continuum(
     common = (
         dofs, kind, ke_types, minv, fext, float(scene.damping_beta), u, v, cdof,
         np.ascontiguousarray(scene.normals), np.ascontiguousarray(scene.tangents), scene.gap0.copy(), cm,
-        float(scene.disc_speed), fs, fmu, int(scene.primary), int(od), int(od + 1), out, ost,
+        float(scene.disc_speed), fs, fmu, int(scene.primary), onode, ow, out, ost,
     )  # fmt: skip
     step = chunk if not record_state else every
     j, done, diverged = 1, 0, 0
@@ -510,7 +577,7 @@ def integrate_continuum(
         model="continuum",
         mesh=f"{scene.mesh.nx}x{scene.mesh.ny}",
         output_node=scene.output_name,
-        output_node_id=scene.output_node,
+        output_node_ids=scene.output_nodes.tolist(),
         initial_state=initial_state,
         damping_beta=scene.damping_beta,
         n_contact_nodes=int(scene.contact_nodes.size),

@@ -37,7 +37,7 @@ def friction_coefficient(speed, speeds, mu):
     return mu[k - 1] + w * (mu[k] - mu[k - 1])
 
 
-@njit(cache=True, fastmath=True)
+@njit(cache=True)
 def _internal_velocity_update(dofs, kind, ke, minv, fext, u, v, w, f, beta, h):
     """v += h * M^-1 (f_ext - K (u + beta v)), K applied element by element (``ke[kind[e]]`` is element
     e's condensed 8 x 8 stiffness, ``dofs[e]`` its global DOFs); w, f: scratch."""
@@ -48,27 +48,35 @@ def _internal_velocity_update(dofs, kind, ke, minv, fext, u, v, w, f, beta, h):
     else:
         w[:] = u
     f[:] = fext
-    ue = np.empty(8)
+    fe = np.empty(8)
     for e in range(dofs.shape[0]):
         K = ke[kind[e]]
+        fe[:] = 0.0
+        for b in range(8):  # column-wise with K symmetric: 8 independent sums, vectorisable as written
+            ub = w[dofs[e, b]]
+            for a in range(8):
+                fe[a] += K[b, a] * ub
         for a in range(8):
-            ue[a] = w[dofs[e, a]]
-        for a in range(8):
-            s = 0.0
-            for b in range(8):
-                s += K[a, b] * ue[b]
-            f[dofs[e, a]] -= s
+            f[dofs[e, a]] -= fe[a]
     for i in range(nd):
         v[i] += h * minv[i] * f[i]
 
 
 @njit(cache=True)
-def _record(out, ost, j, time, u, v, odx, ody, fn, ft, vr, state):
+def _record(out, ost, j, time, u, v, onode, ow, fn, ft, vr, state):
+    """Sample j: node 1 is sum_k ow[k] * node onode[k] (x DOF index; one node, or two straddling the axis)."""
     out[j, 0] = time
-    out[j, 1] = u[odx]
-    out[j, 2] = u[ody]
-    out[j, 3] = v[odx]
-    out[j, 4] = v[ody]
+    x = y = vx = vy = 0.0
+    for k in range(onode.size):
+        d = onode[k]
+        x += ow[k] * u[d]
+        y += ow[k] * u[d + 1]
+        vx += ow[k] * v[d]
+        vy += ow[k] * v[d + 1]
+    out[j, 1] = x
+    out[j, 2] = y
+    out[j, 3] = vx
+    out[j, 4] = vy
     out[j, 5] = fn
     out[j, 6] = ft
     out[j, 7] = vr
@@ -78,7 +86,7 @@ def _record(out, ost, j, time, u, v, odx, ody, fn, ft, vr, state):
 @njit(cache=True)
 def run_kinematic(
     n0, n1, dt, every, dofs, kind, ke, minv, fext, beta, u, v,
-    cdof, cn, ct, cg0, cm, speed, fs, fmu, primary, odx, ody, out, ost, j, counts, blowup,
+    cdof, cn, ct, cg0, cm, speed, fs, fmu, primary, onode, ow, out, ost, j, counts, blowup,
 ):  # fmt: skip
     """Steps n0+1 .. n1 with kinematic (predictor-corrector impulse) contact. Returns (next sample index,
     1 if a displacement exceeded ``blowup`` else 0). Step 1 is the half-step start v_1/2 = v_0 + dt/2 a_0."""
@@ -122,7 +130,7 @@ def run_kinematic(
         counts[state] += 1
         if n % every == 0:
             if j < out.shape[0]:
-                _record(out, ost, j, n * dt, u, v, odx, ody, fn_tot, ft_tot, vr, state)
+                _record(out, ost, j, n * dt, u, v, onode, ow, fn_tot, ft_tot, vr, state)
                 j += 1
             if not np.abs(u).max() < blowup:
                 return j, 1
@@ -132,7 +140,7 @@ def run_kinematic(
 @njit(cache=True)
 def run_penalty(
     n0, n1, dt, every, dofs, kind, ke, minv, fext, beta, u, v,
-    cdof, cn, ct, cg0, cm, speed, fs, fmu, primary, odx, ody, out, ost, j, counts, blowup, kp,
+    cdof, cn, ct, cg0, cm, speed, fs, fmu, primary, onode, ow, out, ost, j, counts, blowup, kp,
 ):  # fmt: skip
     """As ``run_kinematic`` with a penalty normal force kp * penetration evaluated at u_n (explicit) and the
     same exact-stick / tabulated-slip tangential impulse."""
@@ -176,7 +184,7 @@ def run_penalty(
         counts[state] += 1
         if n % every == 0:
             if j < out.shape[0]:
-                _record(out, ost, j, n * dt, u, v, odx, ody, fn_tot, ft_tot, vr, state)
+                _record(out, ost, j, n * dt, u, v, onode, ow, fn_tot, ft_tot, vr, state)
                 j += 1
             if not np.abs(u).max() < blowup:
                 return j, 1

@@ -15,7 +15,7 @@ or the paper contradicts itself: rows with ``comparable: false``). Every claim r
 variable* on one side of a threshold (value/ratio: |measured - reported| against the tolerance band;
 compare: lhs - rhs against 0; trend: the relative change against +-floor). ``margin`` is its distance to the
 threshold, ``spread`` its range across the dataset's perturbation ensemble (``<variable>_ensemble``,
-stickslip.ensemble). A margin within MARGIN_FACTOR spreads is ``indistinguishable``: the pipeline's own
+stickslip.ensemble). A margin below MARGIN_FACTOR spreads is ``indistinguishable``: the pipeline's own
 numerical noise could flip it, so it is never called reproduced or deviating. ``expected`` pins the
 status (one string, or one per reading); the check fails when a measured status differs from the pinned
 one, so every change is deliberate.
@@ -299,19 +299,21 @@ def _per_reading(value, reading, default=""):
 
 
 def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[str, str]:
-    """(status, detail). A margin within MARGIN_FACTOR spreads of the threshold (or an outcome that moves
-    between ensemble members) is ``indistinguishable``: the numbers cannot tell."""
+    """(status, detail). A margin below MARGIN_FACTOR spreads (or an outcome that moves between ensemble
+    members) is ``indistinguishable``: the numbers cannot tell. A spread of exactly 0 decides even at a
+    margin of 0 (every member computes the same numbers, e.g. no separation at all: 0 > 0 is robustly
+    false)."""
     if failures:  # a failed run measures nothing: never compare its numbers
         return "not-comparable", "solver failed (" + "; ".join(failures) + ")"
     if not comparable:
         return "not-comparable", m.detail
     if m.holds is None:
         return "not-comparable", m.detail or "not measurable in this reading (variable missing or NaN)"
-    if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin <= MARGIN_FACTOR * m.spread):
+    if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin < MARGIN_FACTOR * m.spread):
         why = (
             "an ensemble member has nothing to measure"
             if math.isinf(m.spread)
-            else f"margin {m.margin:.3g} <= {MARGIN_FACTOR:g} x spread {m.spread:.3g}"
+            else f"margin {m.margin:.3g} < {MARGIN_FACTOR:g} x spread {m.spread:.3g}"
         )
         return "indistinguishable", f"{m.detail} - {why}: below the numerical noise"
     return ("reproduced" if m.holds else "deviates"), m.detail

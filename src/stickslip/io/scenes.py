@@ -15,6 +15,7 @@ from ..model.equations import BeltModel
 from ..model.friction import VARIANTS
 from ..model.params import BeltParams, ParameterError
 from ..solvers import make_solver
+from ..solvers.base import sample_times
 from ..solvers.budget import BudgetedSolver
 
 
@@ -51,8 +52,7 @@ class RunSpec:
 
     @property
     def t_eval(self) -> np.ndarray:
-        n = int(round(self.t_end / self.output_dt))
-        return np.linspace(0.0, n * self.output_dt, n + 1)
+        return sample_times(self.t_end, self.output_dt)
 
     def interpretation(self) -> dict:
         return {

@@ -2,6 +2,7 @@
 
 from .equations import BeltModel
 from .friction import VARIANTS, AffineFriction, friction_law
+from .laws import LAW_KINDS, FrictionLaw, LawModel, law_from_config
 from .params import PAPER_BASELINE, UNIT_READINGS, BeltParams, ParameterError
 
 __all__ = [
@@ -9,6 +10,10 @@ __all__ = [
     "VARIANTS",
     "AffineFriction",
     "friction_law",
+    "LAW_KINDS",
+    "FrictionLaw",
+    "LawModel",
+    "law_from_config",
     "PAPER_BASELINE",
     "UNIT_READINGS",
     "BeltParams",

@@ -6,12 +6,14 @@ from .karnopp import Karnopp  # noqa: E402
 from .moreau import MoreauJean  # noqa: E402
 from .sign_rk import SignRungeKutta
 from .smooth import SmoothedSign  # noqa: E402
+from .switch import SwitchSolver  # noqa: E402
 
 #: Method registry: config ``solver`` name -> class. Later methods register here.
 METHODS = {"exact": ExactSwitchSolver, "sign_rk": SignRungeKutta}
 METHODS["smooth"] = SmoothedSign
 METHODS["karnopp"] = Karnopp
 METHODS["moreau"] = MoreauJean
+METHODS["switch"] = SwitchSolver  # any friction law (model/laws.py); affine laws: agrees with exact
 
 
 def make_solver(name: str, **settings):
@@ -37,6 +39,7 @@ __all__ = [
     "Trajectory",
     "ExactSwitchSolver",
     "SignRungeKutta",
+    "SwitchSolver",
     "METHODS",
     "make_solver",
 ]

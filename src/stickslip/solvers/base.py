@@ -59,6 +59,14 @@ class Trajectory:
         return self.v - self.belt_velocity
 
 
+def sample_times(t_end: float, dt: float) -> np.ndarray:
+    """Uniform output samples dt apart from 0 that never pass t_end. (n dt can exceed t_end by a rounding
+    error, e.g. when t_end and dt carry independent last-digit perturbations; a sample past the last
+    solution segment would be NaN.)"""
+    n = int(round(t_end / dt))
+    return np.linspace(0.0, min(n * dt, t_end), n + 1)
+
+
 def classify_phase(v, vb, tolerance: float) -> np.ndarray:
     """Phase per sample of a smooth-method trajectory: stick where |v - V_b| <= tolerance."""
     vr = np.asarray(v) - np.asarray(vb)
