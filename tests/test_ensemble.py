@@ -156,7 +156,7 @@ def test_trend_claim_spread_from_the_members_curves():
 
 
 def test_identical_members_decide_even_at_zero_margin():
-    """0 > 0 in every member (e.g. no separation at all) is robustly false: deviates, not indistinguishable."""
+    """0 > 0 in every member (no separation at all) is robustly false: deviates, not indistinguishable."""
     zero = _with_members([0.0, 0.0, 0.0])
     row = {
         **_value_row(0, 0),

@@ -17,7 +17,7 @@ import yaml
 from project_run import copy_project, data_differences, run_snakemake, small_config_args, start_snakemake
 
 SCENE = "section9_kinematic_0p5mm_s"
-TARGET = f"results/fe/{SCENE}.nc"
+TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"
 SLOW = {"fe": {"defaults": {"solver": {"duration": 2.0, "output_interval": 1.0e-3}}}}  # ~10 s of integration
 
 
@@ -31,7 +31,7 @@ def test_killed_job_leaves_no_dataset_and_rerun_matches(tmp_path):
     run_snakemake(work, "results/onedof/friction_mu_vr.csv", *args)  # the FE scene's input, not under test
 
     proc = start_snakemake(work, TARGET, *args, log=tmp_path / "killed.log")
-    job_log = work / "results" / "logs" / "fe_scene" / f"{SCENE}.log"
+    job_log = work / "results" / "logs" / "fe_reading" / "lower_face_drop.log"
     deadline = time.monotonic() + 120
     while not job_log.exists() and time.monotonic() < deadline and proc.poll() is None:
         time.sleep(0.2)

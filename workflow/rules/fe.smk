@@ -8,6 +8,8 @@ FE_DEFAULT_READING = FE_READINGS[0]
 FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
+#: What every FE job reads (its params): editing config/fe.yaml or the long-run switch re-runs FE jobs.
+FE_CONFIG = {"fe": FE, "fe_long_runs": config.get("fe_long_runs", False)}
 
 
 rule fe_reading:
@@ -27,6 +29,7 @@ rule fe_reading:
     conda:
         CONDA_ENV
     params:
+        config=FE_CONFIG,
         ensemble=ENSEMBLE,
     script:
         "../scripts/fe_reading.py"
@@ -48,6 +51,8 @@ rule fe_studies:
         "results/benchmarks/fe_studies/studies.tsv"
     conda:
         CONDA_ENV
+    params:
+        config=FE_CONFIG,
     script:
         "../scripts/fe_studies.py"
 
@@ -66,6 +71,8 @@ rule fe_model_comparison:
         "results/benchmarks/fe_model_comparison/model_comparison.tsv"
     conda:
         CONDA_ENV
+    params:
+        config=FE_CONFIG,
     script:
         "../scripts/fe_comparison.py"
 

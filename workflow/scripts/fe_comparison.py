@@ -10,7 +10,7 @@ from stickslip.fe.pipeline import INTERPRETATION, comparison_mapping, effective_
 from fe_common import log_to, write_dataset
 
 log_to(snakemake)  # noqa: F821
-cfg = effective_fe_config(snakemake.config)  # noqa: F821
+cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 cont, beam = {}, {}

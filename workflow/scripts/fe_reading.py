@@ -16,7 +16,7 @@ from stickslip.fe.pipeline import (
 from fe_common import log_to, write_dataset
 
 log_to(snakemake)  # noqa: F821
-cfg = effective_fe_config(snakemake.config)  # noqa: F821
+cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 spec = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821

@@ -15,7 +15,7 @@ from stickslip.fe.pipeline import (
 from fe_common import log_to, write_dataset
 
 log_to(snakemake)  # noqa: F821
-cfg = snakemake.config["fe"]  # noqa: F821
+cfg = snakemake.params.config["fe"]  # noqa: F821
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 for path in out.sweeps:

@@ -9,7 +9,7 @@ import xarray as xr
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from methods_common import expand_methods, records_dataset, run_scene, scene_model, write  # noqa: E402
 
-cfg = snakemake.config["methods_study"]  # noqa: F821
+cfg = snakemake.params.study  # noqa: F821
 fm = cfg["failure_map"]
 methods = expand_methods(fm["methods"])
 rows = []

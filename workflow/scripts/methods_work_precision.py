@@ -6,7 +6,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from methods_common import expand_methods, records_dataset, run_scene, scene_model, write  # noqa: E402
 
-cfg = snakemake.config["methods_study"]  # noqa: F821
+cfg = snakemake.params.study  # noqa: F821
 scene = snakemake.wildcards.scene  # noqa: F821
 model = scene_model(cfg, scene)
 records, ref, ref_cycle, paper = run_scene(cfg, model, cfg["t_end"], expand_methods(cfg["methods"]))
