@@ -37,14 +37,8 @@ import pandas as pd
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.plots import (
-    STATUS_COLOUR,
-    claims_frame,
-    claims_readings,
-    reading_colours,
-    status_counts,
-    styled_claims,
-)
+from stickslip.notebook import claims_frame, claims_readings, status_counts, styled_claims
+from stickslip.plots import STATUS_COLOUR, reading_colours
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)
