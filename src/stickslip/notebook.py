@@ -227,9 +227,8 @@ def reader_notebook(nb, code: str = "details", source_link: str | None = None):
                 cell.outputs.insert(0, block)
     if source_link:
         note = (
-            f"<p style='font-size: 0.85em; color: #555'>Rendered from <a href='{html.escape(source_link)}'>"
-            f"<code>{html.escape(Path(source_link).name)}</code></a>; each figure's code is under "
-            "<i>code</i> above it.</p>"
+            f"<small>Rendered from [`{Path(source_link).name}`]({source_link}); the code of each result is "
+            "under *code* above it.</small>"
         )
         top = nbformat.v4.new_markdown_cell(note)
         first_md = next((i for i, c in enumerate(out.cells) if c.cell_type == "markdown"), -1)
