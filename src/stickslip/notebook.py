@@ -18,11 +18,12 @@ from pathlib import Path
 from stickslip.io.claims import STATUSES
 from stickslip.plots import STATUS_COLOUR
 
-#: Columns of the claims table a notebook shows, in order.
+#: Columns of the claims table a notebook shows, in order (the status early, so it is on screen).
 CLAIM_COLUMNS = (
     "claim",
     "reading",
     "figure",
+    "status",
     "quantity",
     "reported",
     "measured",
@@ -30,16 +31,18 @@ CLAIM_COLUMNS = (
     "deviation",
     "margin",
     "spread",
-    "status",
     "expected",
     "reason",
 )
 
 #: A claims table longer than this is shown collapsed under its scorecard (counts stay visible).
-OPEN_ROWS = 40
+OPEN_ROWS = 25
 
 #: Tag of the cell holding the pipeline's injected parameters: executed, never shown.
 PARAMETERS_TAG = "injected-parameters"
+
+#: A <summary> with its disclosure triangle (the classic nbconvert template's CSS hides it otherwise).
+SUMMARY_STYLE = "display: list-item; cursor: pointer"
 
 
 def claims_readings(params: dict, config_path: str = "config/config.yaml") -> list[str]:
@@ -137,6 +140,11 @@ def styled_claims(frame):
             },
             na_rep="–",
         )
+        .set_properties(
+            subset=[c for c in ("reason",) if c in cols], **{"max-width": "32em", "white-space": "normal"}
+        )
+        .set_properties(subset=[c for c in ("quantity", "reason") if c in cols], **{"text-align": "left"})
+        .set_table_styles([{"selector": "", "props": [("font-size", "0.85em")]}])
         .hide(axis="index")
     )
 
@@ -172,10 +180,9 @@ def scorecard_html(frame, title: str = "Claims of this section", open_rows: int 
         f"<p><b>{len(frame)} claim checks:</b> {summary}.</p>"
         + styled_counts(counts).to_html()
         + legend_html()
-        + f"<details{is_open}><summary>the {len(frame)} claim checks: reported, measured, margin to the "
-        "threshold, ensemble spread, status (a status in bold red differs from its pin)</summary>"
-        + table
-        + "</details>"
+        + f"<details{is_open}><summary style='{SUMMARY_STYLE}'>the {len(frame)} claim checks: reported, "
+        "measured, margin to the threshold, ensemble spread, status (a status in bold red differs from its "
+        "pin)</summary>" + table + "</details>"
     )
 
 
@@ -205,7 +212,8 @@ def code_details(source: str) -> str:
     from pygments.lexers import PythonLexer
 
     code = highlight(source, PythonLexer(), HtmlFormatter(cssclass="highlight"))
-    return f'<details class="nb-code"><summary>code</summary>{code}</details>'
+    summary = f"<summary style='{SUMMARY_STYLE}; color: #777; font-size: 0.85em'>code</summary>"
+    return f'<details class="nb-code">{summary}{code}</details>'
 
 
 def reader_notebook(nb, code: str = "details", source_link: str | None = None):
