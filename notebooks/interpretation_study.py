@@ -88,8 +88,8 @@ for status in STATUSES:
     left += vals
 ax.invert_yaxis()
 ax.set_xlabel("claim checks")
-ax.set_title("readings ranked by reproduced claims (best first)", fontsize=10, pad=28)
-ax.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.06), ncol=len(STATUSES), frameon=False)
+ax.set_title("readings ranked by reproduced claims (best first)", fontsize=10)
+ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
 fig.tight_layout()
 
 # %% [markdown]
