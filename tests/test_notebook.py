@@ -173,6 +173,7 @@ def test_render_executes_and_hides_code_and_parameters(tmp_path, monkeypatch):
     assert "helper_definition_marker" in html
     assert visible.index("A section title") < visible.index("measured 42")
     assert 'href="../../notebooks/demo.py"' in html
+    assert "<title>A section title</title>" in html
     executed = nbformat.read(target.with_suffix(".ipynb"), as_version=4)
     tagged = [c for c in executed.cells if PARAMETERS_TAG in c.metadata.get("tags", [])]
     assert len(tagged) == 1 and json.dumps("injected_blob_marker") in tagged[0].source

@@ -244,6 +244,16 @@ def reader_notebook(nb, code: str = "details", source_link: str | None = None):
     return out
 
 
+def notebook_title(nb) -> str:
+    """The text of the notebook's first level-1 markdown heading (``""`` if it has none)."""
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            for line in cell.source.splitlines():
+                if line.startswith("# "):
+                    return line[2:].strip()
+    return ""
+
+
 def to_html(nb, code: str = "details", source_link: str | None = None, title: str = "") -> str:
     """HTML of an executed notebook for a reader (see ``reader_notebook``)."""
     from nbconvert import HTMLExporter
@@ -289,7 +299,7 @@ def render(
         nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": os.getcwd()}}
     ).execute()
     link = os.path.relpath(source.resolve(), target.resolve().parent)
-    body = to_html(nb, code, link, title=source.stem)
+    body = to_html(nb, code, link, title=notebook_title(nb) or source.stem)
     target.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
     with os.fdopen(fd, "w") as fh:
