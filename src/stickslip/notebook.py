@@ -140,11 +140,16 @@ def styled_claims(frame):
             },
             na_rep="–",
         )
-        .set_properties(
-            subset=[c for c in ("reason",) if c in cols], **{"max-width": "32em", "white-space": "normal"}
+        .set_table_styles(
+            [
+                {"selector": "", "props": [("font-size", "0.85em")]},
+                {"selector": "td, th", "props": [("white-space", "nowrap")]},
+            ]
         )
         .set_properties(subset=[c for c in ("quantity", "reason") if c in cols], **{"text-align": "left"})
-        .set_table_styles([{"selector": "", "props": [("font-size", "0.85em")]}])
+        .set_properties(
+            subset=[c for c in ("reason",) if c in cols], **{"white-space": "normal", "min-width": "30em"}
+        )
         .hide(axis="index")
     )
 
