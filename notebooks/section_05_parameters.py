@@ -95,7 +95,7 @@ def claims_of(prefixes):
 
 
 def show_claims(prefixes):
-    display(scorecard(claims_of(prefixes), "Claims of " + ", ".join(prefixes)))
+    display(scorecard(claims_of(prefixes), "Claims of " + ", ".join(prefixes), legend=False))
 
 
 # %% [markdown]

@@ -114,6 +114,8 @@ def test_scorecard_counts_then_table_collapsed_when_long(table):
     assert "<details open>" in html
     assert "<details open>" not in scorecard_html(frame, "x", open_rows=3)
     assert "No claim" in scorecard_html(frame.iloc[:0], "empty")
+    assert "outside it (the reason column says why)" in html  # the colour legend
+    assert "outside it (the reason column says why)" not in scorecard_html(frame, "again", legend=False)
 
 
 def _notebook(*cells):

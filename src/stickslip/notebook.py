@@ -170,9 +170,12 @@ def legend_html() -> str:
     return '<p style="font-size: 0.9em">' + " &nbsp; ".join(items) + "</p>"
 
 
-def scorecard_html(frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS) -> str:
-    """The scorecard as HTML: status counts per reading, a colour legend, then the claims table (collapsed
-    under a summary line when it has more than ``open_rows`` rows)."""
+def scorecard_html(
+    frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS, legend: bool = True
+) -> str:
+    """The scorecard as HTML: status counts per reading, a colour legend (unless ``legend=False``, for a
+    notebook's second and later scorecards), then the claims table (collapsed under a summary line when it
+    has more than ``open_rows`` rows)."""
     if not len(frame):
         return f"<h3>{html.escape(title)}</h3><p>No claim of the claims table belongs here.</p>"
     counts = status_counts(frame)
@@ -184,18 +187,18 @@ def scorecard_html(frame, title: str = "Claims of this section", open_rows: int 
         f"<h3>{html.escape(title)}</h3>"
         f"<p><b>{len(frame)} claim checks:</b> {summary}.</p>"
         + styled_counts(counts).to_html()
-        + legend_html()
+        + (legend_html() if legend else "")
         + f"<details{is_open}><summary style='{SUMMARY_STYLE}'>the {len(frame)} claim checks: reported, "
         "measured, margin to the threshold, ensemble spread, status (a status in bold red differs from its "
         "pin)</summary>" + table + "</details>"
     )
 
 
-def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS):
+def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS, legend: bool = True):
     """Display object of ``scorecard_html`` for a notebook cell."""
     from IPython.display import HTML
 
-    return HTML(scorecard_html(frame, title, open_rows))
+    return HTML(scorecard_html(frame, title, open_rows, legend))
 
 
 # -- rendering ---------------------------------------------------------------------------------------------
