@@ -87,6 +87,8 @@ def test_caption_counts_every_status_and_explains_indistinguishable():
     assert "within 3x its perturbation-ensemble spread" in text
     assert "``a`` [r1]: **reproduced** (margin 0.2, spread 0.01)" in text
     assert "``b`` [r2]: **indistinguishable** (margin 1e-09, spread 4e-09)" in text
+    stated = dict(rows[1], reason="margin 1e-09 <= 3 x spread 4e-09: below the numerical noise")
+    assert caption_text("Fig. 2", {2}, [stated]).count("margin 1e-09") == 1  # not repeated
 
 
 def test_caption_without_ensemble_or_margin_says_so():

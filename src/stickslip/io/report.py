@@ -59,9 +59,10 @@ def _number(value) -> float:
 
 
 def _margin(row: dict) -> str:
-    """`` (margin M, spread S)`` of a row that has them (the deviations table's columns), else ``""``."""
+    """`` (margin M, spread S)`` of a row that has them (the deviations table's columns), else ``""`` (also
+    when the row's reason already states them)."""
     margin, spread = _number(row.get("margin")), _number(row.get("spread"))
-    if margin != margin:  # NaN or missing: nothing decided by a threshold
+    if margin != margin or "margin" in str(row.get("reason", "")):  # NaN/missing: no threshold decided it
         return ""
     return f" (margin {margin:.3g}" + (f", spread {spread:.3g})" if spread == spread else ", no ensemble)")
 
