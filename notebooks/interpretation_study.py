@@ -36,15 +36,10 @@ import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
+from stickslip.io.claims import STATUSES
 from stickslip.io.netcdf import read_dataset
-from stickslip.plots import (
-    STATUS_COLOUR,
-    claims_frame,
-    claims_readings,
-    reading_colours,
-    status_counts,
-    styled_claims,
-)
+from stickslip.notebook import claims_frame, claims_readings, scorecard, status_counts, styled_claims
+from stickslip.plots import STATUS_COLOUR, reading_colours
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)
@@ -56,15 +51,25 @@ deviations = claims_frame("results/claims/deviations.csv")
 continuation = {r: read_dataset(f"results/onedof/critical_speed/{r}.nc") for r in CRIT_READINGS}
 
 # %% [markdown]
+# ## Scorecard: every claim of the paper
+#
+# All claim checks of all sections, per reading (`-`: claims that do not depend on the reading): counts per
+# status, then each check with its `margin` to the claim's threshold and its `spread` over a perturbation
+# ensemble. A margin within 3 spreads is *indistinguishable*: the pipeline's own numerical noise could decide
+# it, so it is called neither reproduced nor deviating (and is not counted as comparable below).
+
+# %%
+display(scorecard(deviations, "All claims of the paper"))
+
+# %% [markdown]
 # ## 1. Ranking of the readings
 #
 # Counts of claim checks per reading (a claim that refers to a per-reading dataset is checked once per
 # reading; claims about reading-independent results, e.g. Eq. 6, have no reading and are not counted). The
 # last column is reproduced / (reproduced + deviates): the share of the comparable claims a reading gets
-# right.
+# right (an indistinguishable check is decided neither way, so it is not comparable).
 
 # %%
-STATUSES = ["reproduced", "deviates", "not-comparable"]
 display(
     ranking.style.background_gradient(
         subset=["reproduced_fraction_of_comparable"], cmap="Greens", vmin=0, vmax=1
@@ -83,8 +88,8 @@ for status in STATUSES:
     left += vals
 ax.invert_yaxis()
 ax.set_xlabel("claim checks")
-ax.set_title("readings ranked by reproduced claims (best first)", fontsize=10, pad=28)
-ax.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.06), ncol=3, frameon=False)
+ax.set_title("readings ranked by reproduced claims (best first)", fontsize=10)
+ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
 fig.tight_layout()
 
 # %% [markdown]
@@ -95,7 +100,7 @@ fig.tight_layout()
 # the beam-on-disc scenes of Sections 9–12).
 
 # %%
-comparable = deviations[deviations["status"] != "not-comparable"]
+comparable = deviations[deviations["status"].isin(["reproduced", "deviates"])]
 rep_counts = comparable.pivot_table(
     index="section",
     columns="reading",
@@ -217,8 +222,9 @@ display(
     Markdown(
         f"""
 * **Best reading: `{best["reading"]}`** — {best["reproduced"]} reproduced, {best["deviates"]} deviating,
-  {best["not-comparable"]} not comparable ({best["reproduced_fraction_of_comparable"]:.0%} of the comparable
-  checks). Last by reproduced count: `{worst["reading"]}` ({worst["reproduced"]} reproduced; its
+  {best["indistinguishable"]} indistinguishable, {best["not-comparable"]} not comparable
+  ({best["reproduced_fraction_of_comparable"]:.0%} of the comparable checks).
+  Last by reproduced count: `{worst["reading"]}` ({worst["reproduced"]} reproduced; its
   {worst["not-comparable"]} not-comparable checks are runs that failed or have nothing to measure, so its
   share of comparable checks, {worst["reproduced_fraction_of_comparable"]:.0%}, rests on few rows).
 * **No reading reproduces everything:** {len(unreproduced)} claims are reproduced by none of the

@@ -22,11 +22,18 @@
 
 # %%
 import glob
+import io
 import os
 import sys
 
+import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 import xarray as xr
+from IPython.display import HTML, Image, Markdown, display
+
+from stickslip.notebook import SUMMARY_STYLE
+from stickslip.plots import STATUS_COLOUR
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
 CODE = next(
@@ -38,13 +45,22 @@ ROOT = os.getcwd() if os.path.isdir(os.path.join(os.getcwd(), "results")) else o
 sys.path.insert(0, os.path.join(CODE, "workflow", "scripts"))
 from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
 
+
+def show(fig):
+    """Show a figure here (methods_plots selects the Agg backend, so figures are not shown by themselves)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
+    plt.close(fig)
+    display(Image(buf.getvalue()))
+
+
 files = sorted(glob.glob(os.path.join(ROOT, "results", "methods", "*_work_precision.nc")))
-print("scenes:", [os.path.basename(f) for f in files])
+display(Markdown("Scenes: " + ", ".join(f"`{os.path.basename(f)}`" for f in files)))
 
 # %% [markdown]
 # ## Work-precision tables and charts, one per scene
 # `cpu_ratio_to_paper` is CPU time divided by sign()+RK45 at rtol 1e-3 (MATLAB ode45 defaults),
-# measured in the same run.
+# measured in the same run. A failed run (red) is listed with the kind of failure, never drawn as a result.
 
 # %%
 COLS = [
@@ -61,48 +77,68 @@ COLS = [
 
 
 def table(ds):
-    lines = [" | ".join(COLS), " | ".join("---" for _ in COLS)]
-    for i in range(ds.sizes["run"]):
-        row = []
-        for c in COLS:
-            v = ds[c].values[i]
-            row.append(f"{v:.3g}" if isinstance(v, (float, np.floating)) else str(v))
-        lines.append(" | ".join(row))
-    return "\n".join(lines)
+    """The scene's runs as a table, failed runs in red."""
+    frame = pd.DataFrame({c: ds[c].values for c in COLS})
+
+    def colour(row):
+        bad = row["status"] != "ok"
+        return [f"background-color: {STATUS_COLOUR['deviates']}" if bad else ""] * len(row)
+
+    return (
+        frame.style.apply(colour, axis=1)
+        .format({c: "{:.3g}" for c in COLS[1:7]}, na_rep="–")
+        .set_table_styles([{"selector": "", "props": [("font-size", "0.85em")]}])
+        .hide(axis="index")
+    )
 
 
 for f in files:
     with xr.open_dataset(f) as ds:
         ds = ds.load()
     name = os.path.basename(f).replace("_work_precision.nc", "")
-    print(
-        f"\n### {name}: paper's method {ds.attrs['paper_method_cpu_time'] * 1e3:.1f} ms CPU, "
-        f"reference period {ds.attrs['reference_period']:.10g} s"
-    )
-    print(table(ds))
     ex = ds["solver"].values == "exact"
-    if ex.any():
-        print(f"exact solver speed-up vs paper's method: {1 / ds['cpu_ratio_to_paper'].values[ex][0]:.0f}x")
-    work_precision_figure(ds, name)
+    speedup = (
+        f"; the exact solver is {1 / ds['cpu_ratio_to_paper'].values[ex][0]:.0f}x faster" if ex.any() else ""
+    )
+    display(
+        Markdown(
+            f"### {name}\n\nThe paper's method takes {ds.attrs['paper_method_cpu_time'] * 1e3:.1f} ms CPU"
+            f"{speedup}; reference period {ds.attrs['reference_period']:.10g} s."
+        )
+    )
+    show(work_precision_figure(ds, name))
+    display(
+        HTML(
+            f"<details><summary style='{SUMMARY_STYLE}'>the {ds.sizes['run']} runs of {name} "
+            f"({int((ds['status'].values != 'ok').sum())} failed, in red)</summary>"
+            + table(ds).to_html()
+            + "</details>"
+        )
+    )
 
 # %% [markdown]
 # ## Pareto-best method per accuracy level
 # For each state-error level, the cheapest (CPU) successful run that reaches it.
 
 # %%
+LEVELS = (1e-1, 1e-2, 1e-3, 1e-4, 1e-6)
+best = {}
 for f in files:
     with xr.open_dataset(f) as ds:
         ds = ds.load()
     ok = ds["status"].values == "ok"
-    print(os.path.basename(f))
-    for level in (1e-1, 1e-2, 1e-3, 1e-4, 1e-6):
+    column = {}
+    for level in LEVELS:
         good = ok & (ds["state"].values <= level) & (ds["solver"].values != "exact")
         if good.any():
             i = np.flatnonzero(good)[np.argmin(ds["cpu_time"].values[good])]
-            cpu_ms = ds["cpu_time"].values[i] * 1e3
-            print(f"  state error <= {level:g}: {ds['label'].values[i]}  ({cpu_ms:.2f} ms)")
+            column[f"state error <= {level:g}"] = (
+                f"{ds['label'].values[i]} ({ds['cpu_time'].values[i] * 1e3:.2f} ms)"
+            )
         else:
-            print(f"  state error <= {level:g}: only the exact solver")
+            column[f"state error <= {level:g}"] = "only the exact solver"
+    best[os.path.basename(f).replace("_work_precision.nc", "")] = column
+display(pd.DataFrame(best).style.set_properties(**{"text-align": "left"}))
 
 # %% [markdown]
 # ## Where methods fail
@@ -112,6 +148,7 @@ for f in files:
 fm = os.path.join(ROOT, "results", "methods", "failure_map.nc")
 with xr.open_dataset(fm) as ds:
     ds = ds.load()
-failure_map_figure(ds)
+show(failure_map_figure(ds))
 kinds = ds["failure_kind"]
-print(kinds.to_pandas().T.to_string() if hasattr(kinds, "to_pandas") else kinds)
+if hasattr(kinds, "to_pandas"):
+    display(kinds.to_pandas().T)

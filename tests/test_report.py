@@ -69,3 +69,32 @@ def test_template_selects_the_caption_of_the_rendered_output():
     assert env.from_string(template).render(snakemake=Job("results/b.png")).strip() == "caption B"
     assert "caption A {{ not jinja }}" in env.from_string(template).render(snakemake=Job("results/a.png"))
     assert "No caption" in env.from_string(template).render(snakemake=Job("results/c.png"))
+
+
+def test_caption_counts_every_status_and_explains_indistinguishable():
+    rows = [
+        dict(ROWS[0], margin="0.2", spread="0.01"),
+        dict(
+            ROWS[1],
+            status="indistinguishable",
+            expected="indistinguishable",
+            margin="1e-9",
+            spread="4e-9",
+        ),
+    ]
+    text = caption_text("Fig. 2", {2}, rows)
+    assert "Claims: 1 reproduced, 0 deviates, 1 indistinguishable, 0 not-comparable." in text
+    assert "within 3x its perturbation-ensemble spread" in text
+    assert "``a`` [r1]: **reproduced** (margin 0.2, spread 0.01)" in text
+    assert "``b`` [r2]: **indistinguishable** (margin 1e-09, spread 4e-09)" in text
+    stated = dict(rows[1], reason="margin 1e-09 <= 3 x spread 4e-09: below the numerical noise")
+    assert caption_text("Fig. 2", {2}, [stated]).count("margin 1e-09") == 1  # not repeated
+
+
+def test_caption_without_ensemble_or_margin_says_so():
+    no_ensemble = dict(ROWS[0], margin="0.2", spread="nan")
+    no_margin = dict(ROWS[2], margin="", spread="")
+    text = caption_text("x", {2, 21}, [no_ensemble, no_margin])
+    assert "**reproduced** (margin 0.2, no ensemble)" in text
+    assert "**not-comparable** (pinned reproduced) — solver failed" in text
+    assert "Indistinguishable:" not in text  # the note appears only when a row is indistinguishable

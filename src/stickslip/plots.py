@@ -1,4 +1,8 @@
-"""Figures of the reproduced results (presentation only: reads datasets, draws)."""
+"""Figures of the reproduced results (presentation only: reads datasets, draws).
+
+The claims-table helpers the notebooks use (``claims_frame``, ``styled_claims``, ``status_counts``,
+``reported_value``, ``claims_readings``) live in ``stickslip.notebook``; importing them from here still works.
+"""
 
 from __future__ import annotations
 
@@ -9,16 +13,6 @@ import numpy as np
 FAILED_TEXT = "failed – not a result"
 
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
-
-
-def claims_readings(params: dict, config_path: str = "config/config.yaml") -> list[str]:
-    """Readings a notebook shows: those the pipeline injected, else the config's claims readings."""
-    if params.get("claims_readings"):
-        return list(params["claims_readings"])
-    import yaml
-
-    with open(config_path) as fh:
-        return list(yaml.safe_load(fh)["claims"]["readings"])
 
 
 def _style(method):
@@ -88,56 +82,13 @@ def onedof_figure(datasets: dict, spec: dict, reading: str):
     return fig
 
 
-STATUS_COLOUR = {"reproduced": "#c8efc8", "deviates": "#f7c6c6", "not-comparable": "#e4e4e4"}
-
-
-def claims_frame(csv_path, sections=None, claims=None):
-    """The deviations table (optionally filtered) as a pandas DataFrame."""
-    import pandas as pd
-
-    frame = pd.read_csv(csv_path, dtype={"section": str}).fillna({"reading": "-"})
-    if sections is not None:
-        frame = frame[frame["section"].isin([str(s) for s in sections])]
-    if claims is not None:
-        frame = frame[frame["claim"].isin(claims)]
-    return frame
-
-
-def styled_claims(frame):
-    """Colour each status cell; a status that differs from its pin is marked in bold red text."""
-    cols = [
-        "claim",
-        "reading",
-        "figure",
-        "quantity",
-        "reported",
-        "measured",
-        "unit",
-        "deviation",
-        "status",
-        "expected",
-        "reason",
-    ]
-
-    def colour(row):
-        styles = [""] * len(row)
-        i = list(row.index).index("status")
-        styles[i] = f"background-color: {STATUS_COLOUR.get(row['status'], 'white')}"
-        if row["status"] != row["expected"]:
-            styles[i] += "; color: red; font-weight: bold"
-        return styles
-
-    return (
-        frame[cols]
-        .style.apply(colour, axis=1)
-        .format({"reported": "{:.4g}", "measured": "{:.4g}", "deviation": "{:+.1%}"}, na_rep="–")
-        .hide(axis="index")
-    )
-
-
-def status_counts(frame):
-    """Claims per reading and status: the compact scoreboard of a section."""
-    return frame.pivot_table(index="reading", columns="status", values="claim", aggfunc="count", fill_value=0)
+#: Colour of each claim status in tables and charts (amber: the numbers cannot decide).
+STATUS_COLOUR = {
+    "reproduced": "#c8efc8",
+    "deviates": "#f7c6c6",
+    "indistinguishable": "#ffd98a",
+    "not-comparable": "#e4e4e4",
+}
 
 
 def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
@@ -430,12 +381,6 @@ def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title="")
     return fig
 
 
-def reported_value(frame, claim):
-    """The paper's number of a claim row in the deviations table (None when the claim is not in the table)."""
-    rows = frame[frame["claim"] == claim]
-    return float(rows["reported"].iloc[0]) if len(rows) else None
-
-
 def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
     """One row (time series: x and v side by side) or one panel (velocity, phase) per reading, every method
     of the reading overlaid; failed runs are written out in red instead of drawn. `datasets` maps
@@ -516,3 +461,15 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
         fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     return fig
+
+
+#: Names moved to stickslip.notebook, still importable from here.
+_MOVED_TO_NOTEBOOK = ("claims_readings", "claims_frame", "styled_claims", "status_counts", "reported_value")
+
+
+def __getattr__(name):
+    if name in _MOVED_TO_NOTEBOOK:
+        from stickslip import notebook
+
+        return getattr(notebook, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

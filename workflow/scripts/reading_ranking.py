@@ -3,13 +3,13 @@
 import numpy as np
 import xarray as xr
 
-from stickslip.analysis.ranking import rank_readings, unreproduced_claims
+from stickslip.analysis.ranking import COLUMNS, rank_readings, unreproduced_claims
 from stickslip.io.claims import read_table
 from stickslip.io.netcdf import write_dataset
 
 rows = read_table(snakemake.input[0])
 table = rank_readings(rows, list(snakemake.params.readings))
-cols = ["reading", "reproduced", "deviates", "not-comparable", "total", "reproduced_fraction_of_comparable"]
+cols = list(COLUMNS)  # one count column per claim status
 with open(snakemake.output.csv, "w") as fh:
     fh.write(",".join(cols) + "\n")
     for t in table:

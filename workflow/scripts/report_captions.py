@@ -59,6 +59,7 @@ captions["results/claims/deviations.csv"] = caption_text(
     "The claims table: every reported number versus what this run measured",
     set(),
     rows,
-    note="Status per claim and reading; a status that differs from its pin is shown with the pinned one.",
+    note="Status per claim and reading, with the margin to the claim's threshold and the spread over the "
+    "perturbation ensemble; a status that differs from its pin is shown with the pinned one.",
 )
 write_captions(captions, snakemake.output[0])  # noqa: F821

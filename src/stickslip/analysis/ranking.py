@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
-STATUSES = ("reproduced", "deviates", "not-comparable")
+from stickslip.io.claims import STATUSES
+
+#: Columns of the ranking table, in order (one count column per status).
+COLUMNS = ("reading", *STATUSES, "total", "reproduced_fraction_of_comparable")
 
 
 def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
-    """Per reading: counts of each status over the per-reading claim rows, best first (most reproduced,
-    then fewest deviations)."""
+    """Per reading: counts of each status of ``STATUSES`` over the per-reading claim rows, best first (most
+    reproduced, then fewest deviations). The fraction is reproduced / (reproduced + deviates): an
+    indistinguishable check is decided neither way and is not comparable to the paper's number."""
     table = []
     for r in readings:
         mine = [row for row in rows if row["reading"] == r]

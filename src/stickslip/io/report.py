@@ -44,8 +44,32 @@ def _rst_escape(text: str) -> str:
     return re.sub(r"([*`|_\\])", r"\\\1", str(text))
 
 
+INDISTINGUISHABLE_NOTE = (
+    "Indistinguishable: the measurement lies within 3x its perturbation-ensemble spread of the claim's "
+    "threshold, so the pipeline's own numerical noise could decide it; it is called neither reproduced nor "
+    "deviating."
+)
+
+
+def _number(value) -> float:
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def _margin(row: dict) -> str:
+    """`` (margin M, spread S)`` of a row that has them (the deviations table's columns), else ``""`` (also
+    when the row's reason already states them)."""
+    margin, spread = _number(row.get("margin")), _number(row.get("spread"))
+    if margin != margin or "margin" in str(row.get("reason", "")):  # NaN/missing: no threshold decided it
+        return ""
+    return f" (margin {margin:.3g}" + (f", spread {spread:.3g})" if spread == spread else ", no ensemble)")
+
+
 def caption_text(title: str, figures: set[int], rows: list[dict], note: str = "") -> str:
-    """reStructuredText: the title, the paper figures, a status count and one line per claim."""
+    """reStructuredText: the title, the paper figures, the count of every status (zeros included) and one
+    line per claim with its margin to the threshold and its ensemble spread."""
     figs = (
         ", ".join(f"Fig. {n}" for n in sorted(figures))
         or "no figure of the paper (added by this replication)"
@@ -58,13 +82,15 @@ def caption_text(title: str, figures: set[int], rows: list[dict], note: str = ""
         return "\n".join(lines)
     counts = Counter(r["status"] for r in rows)
     failed = sum("solver failed" in r.get("reason", "") for r in rows)
-    summary = ", ".join(f"{counts[s]} {s}" for s in STATUSES if counts[s])
+    summary = ", ".join(f"{counts[s]} {s}" for s in STATUSES)
     lines += [f"Claims: {summary}" + (f" ({failed} on a failed solver run)" if failed else "") + ".", ""]
+    if counts["indistinguishable"]:
+        lines += [INDISTINGUISHABLE_NOTE, ""]
     for r in rows:
         reading = f" [{r['reading']}]" if r["reading"] else ""
         changed = "" if str(r.get("matches_expected")) == "True" else f" (pinned {r['expected']})"
         reason = f" — {_rst_escape(r['reason'])}" if r.get("reason") else ""
-        lines.append(f"- ``{r['claim']}``{reading}: **{r['status']}**{changed}{reason}")
+        lines.append(f"- ``{r['claim']}``{reading}: **{r['status']}**{changed}{_margin(r)}{reason}")
     return "\n".join(lines) + "\n"
 
 

@@ -1,0 +1,316 @@
+"""Helpers for the comparison notebooks: the claims tables they show and how they are rendered.
+
+The notebooks in ``notebooks/`` are a paper's supplement: they read the pipeline's results and show them
+next to what the paper reports. This module holds what they share that is not a figure (figures are in
+``stickslip.plots``): reading the deviations table, the per-section *scorecard* (status counts per reading,
+then the colour-coded claims table with each claim's margin to its threshold and its ensemble spread), and
+``render``, which executes a jupytext notebook and writes HTML for a reader: no code cells (each cell's code
+a click away in a collapsed block, the notebook's source linked at the top) and no injected parameters.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import os
+from pathlib import Path
+
+from stickslip.io.claims import STATUSES
+from stickslip.plots import STATUS_COLOUR
+
+#: Columns of the claims table a notebook shows, in order (the status early, so it is on screen).
+CLAIM_COLUMNS = (
+    "claim",
+    "reading",
+    "figure",
+    "status",
+    "quantity",
+    "reported",
+    "measured",
+    "unit",
+    "deviation",
+    "margin",
+    "spread",
+    "expected",
+    "reason",
+)
+
+#: A claims table longer than this is shown collapsed under its scorecard (counts stay visible).
+OPEN_ROWS = 25
+
+#: Tag of the cell holding the pipeline's injected parameters: executed, never shown.
+PARAMETERS_TAG = "injected-parameters"
+
+#: A <summary> with its disclosure triangle (the classic nbconvert template's CSS hides it otherwise).
+SUMMARY_STYLE = "display: list-item; cursor: pointer"
+
+
+def claims_readings(params: dict, config_path: str = "config/config.yaml") -> list[str]:
+    """Readings a notebook shows: those the pipeline injected, else the config's claims readings."""
+    if params.get("claims_readings"):
+        return list(params["claims_readings"])
+    import yaml
+
+    with open(config_path) as fh:
+        return list(yaml.safe_load(fh)["claims"]["readings"])
+
+
+def claims_frame(csv_path, sections=None, claims=None):
+    """The deviations table (optionally filtered by section or claim id) as a pandas DataFrame.
+
+    Reading-independent rows get the reading ``-``. A table written before the ``margin``/``spread``
+    columns existed gets them as NaN, so every notebook shows the same columns."""
+    import pandas as pd
+
+    frame = pd.read_csv(csv_path, dtype={"section": str}).fillna({"reading": "-"})
+    for col in ("margin", "spread"):
+        if col not in frame:
+            frame[col] = float("nan")
+    if sections is not None:
+        frame = frame[frame["section"].isin([str(s) for s in sections])]
+    if claims is not None:
+        frame = frame[frame["claim"].isin(claims)]
+    return frame
+
+
+def reported_value(frame, claim):
+    """The paper's number of a claim row in the deviations table (None when the claim is not in the table)."""
+    rows = frame[frame["claim"] == claim]
+    return float(rows["reported"].iloc[0]) if len(rows) else None
+
+
+def status_counts(frame):
+    """Claim checks per reading (rows, in the table's order) and status (columns, every status of
+    ``STATUSES`` in that order, zeros included), with a ``total`` column: the compact scorecard of a
+    section."""
+    import pandas as pd
+
+    counts = pd.crosstab(frame["reading"], frame["status"]) if len(frame) else pd.DataFrame()
+    unknown = set(counts.columns) - set(STATUSES)
+    if unknown:
+        raise ValueError(f"status: {sorted(unknown)} not one of {STATUSES}")
+    order = list(dict.fromkeys(frame["reading"]))  # readings in the table's order
+    counts = counts.reindex(index=order, columns=list(STATUSES), fill_value=0).astype(int)
+    counts["total"] = counts.sum(axis=1)
+    counts.index.name = "reading"
+    counts.columns.name = None
+    return counts
+
+
+def _status_style(status) -> str:
+    return f"background-color: {STATUS_COLOUR.get(status, 'white')}"
+
+
+def styled_counts(counts):
+    """The status counts with each status column coloured like its status (a zero count left white)."""
+    styler = counts.style.map_index(
+        lambda v: _status_style(v) if v in STATUS_COLOUR else "font-weight: bold", axis="columns"
+    )
+    for status in STATUSES:
+        styler = styler.map(lambda v, s=status: _status_style(s) if v else "", subset=[status])
+    return styler
+
+
+def styled_claims(frame):
+    """The claims table, status cells coloured; a status that differs from its pin is in bold red text.
+
+    ``margin`` is the distance of the measured decision variable to the claim's threshold, ``spread`` its
+    range over the perturbation ensemble (``–``: no ensemble); a margin within 3 spreads is
+    ``indistinguishable``."""
+    cols = [c for c in CLAIM_COLUMNS if c in frame]
+
+    def colour(row):
+        styles = [""] * len(row)
+        i = list(row.index).index("status")
+        styles[i] = _status_style(row["status"])
+        if "expected" in row and row["status"] != row["expected"]:
+            styles[i] += "; color: red; font-weight: bold"
+        return styles
+
+    return (
+        frame[cols]
+        .style.apply(colour, axis=1)
+        .format(
+            {
+                "reported": "{:.4g}",
+                "measured": "{:.4g}",
+                "deviation": "{:+.1%}",
+                "margin": "{:.3g}",
+                "spread": "{:.3g}",
+            },
+            na_rep="–",
+        )
+        .set_table_styles(
+            [
+                {"selector": "", "props": [("font-size", "0.85em")]},
+                {"selector": "td, th", "props": [("white-space", "nowrap")]},
+            ]
+        )
+        .set_properties(subset=[c for c in ("quantity", "reason") if c in cols], **{"text-align": "left"})
+        .set_properties(
+            subset=[c for c in ("reason",) if c in cols], **{"white-space": "normal", "min-width": "30em"}
+        )
+        .hide(axis="index")
+    )
+
+
+def legend_html() -> str:
+    """One line naming each status colour."""
+    meaning = {
+        "reproduced": "within the claim's tolerance",
+        "deviates": "outside it (the reason column says why)",
+        "indistinguishable": "within 3× the ensemble spread of the threshold: the numbers cannot decide",
+        "not-comparable": "nothing to measure, or the paper contradicts itself",
+    }
+    items = [
+        f'<span style="{_status_style(s)}; padding: 0 0.4em; border: 1px solid #999">{s}</span> '
+        f"{html.escape(meaning.get(s, ''))}"
+        for s in STATUSES
+    ]
+    return '<p style="font-size: 0.9em">' + " &nbsp; ".join(items) + "</p>"
+
+
+def scorecard_html(
+    frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS, legend: bool = True
+) -> str:
+    """The scorecard as HTML: status counts per reading, a colour legend (unless ``legend=False``, for a
+    notebook's second and later scorecards), then the claims table (collapsed under a summary line when it
+    has more than ``open_rows`` rows)."""
+    if not len(frame):
+        return f"<h3>{html.escape(title)}</h3><p>No claim of the claims table belongs here.</p>"
+    counts = status_counts(frame)
+    totals = counts[list(STATUSES)].sum()
+    summary = ", ".join(f"{int(totals[s])} {s}" for s in STATUSES)
+    table = styled_claims(frame).to_html()
+    is_open = " open" if len(frame) <= open_rows else ""
+    return (
+        f"<h3>{html.escape(title)}</h3>"
+        f"<p><b>{len(frame)} claim checks:</b> {summary}.</p>"
+        + styled_counts(counts).to_html()
+        + (legend_html() if legend else "")
+        + f"<details{is_open}><summary style='{SUMMARY_STYLE}'>the {len(frame)} claim checks: reported, "
+        "measured, margin to the threshold, ensemble spread, status (a status in bold red differs from its "
+        "pin)</summary>" + table + "</details>"
+    )
+
+
+def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPEN_ROWS, legend: bool = True):
+    """Display object of ``scorecard_html`` for a notebook cell."""
+    from IPython.display import HTML
+
+    return HTML(scorecard_html(frame, title, open_rows, legend))
+
+
+# -- rendering ---------------------------------------------------------------------------------------------
+
+
+def parameters_cell(params: dict):
+    """The cell that sets ``PARAMS`` in the kernel, tagged so the renderer never shows it."""
+    import nbformat
+
+    cell = nbformat.v4.new_code_cell(f"import json\nPARAMS = json.loads({json.dumps(params)!r})")
+    cell.metadata["tags"] = [PARAMETERS_TAG]
+    return cell
+
+
+def code_details(source: str) -> str:
+    """A cell's code as a collapsed, syntax-highlighted ``<details>`` block."""
+    from pygments import highlight
+    from pygments.formatters import HtmlFormatter
+    from pygments.lexers import PythonLexer
+
+    code = highlight(source, PythonLexer(), HtmlFormatter(cssclass="highlight"))
+    summary = f"<summary style='{SUMMARY_STYLE}; color: #777; font-size: 0.85em'>code</summary>"
+    return f'<details class="nb-code">{summary}{code}</details>'
+
+
+def reader_notebook(nb, code: str = "details", source_link: str | None = None):
+    """A copy of an executed notebook as a reader sees it: without the parameters cell and, for
+    ``code="details"``, each code cell's source in a collapsed block above its outputs (``"hide"``: no code
+    at all, ``"show"``: code cells as they are). ``source_link`` (a relative URL) is linked at the top."""
+    import copy
+
+    import nbformat
+
+    if code not in ("details", "hide", "show"):
+        raise ValueError(f"code: {code!r} is not one of ['details', 'hide', 'show']")
+    out = copy.deepcopy(nb)
+    out.cells = [c for c in out.cells if PARAMETERS_TAG not in c.metadata.get("tags", [])]
+    if code == "details":
+        for cell in out.cells:
+            if cell.cell_type == "code" and cell.source.strip():
+                block = nbformat.v4.new_output("display_data", data={"text/html": code_details(cell.source)})
+                cell.outputs.insert(0, block)
+    if source_link:
+        note = (
+            f"<small>Rendered from [`{Path(source_link).name}`]({source_link}); the code of each result is "
+            "under *code* above it.</small>"
+        )
+        top = nbformat.v4.new_markdown_cell(note)
+        first_md = next((i for i, c in enumerate(out.cells) if c.cell_type == "markdown"), -1)
+        out.cells.insert(first_md + 1, top)
+    return out
+
+
+def notebook_title(nb) -> str:
+    """The text of the notebook's first level-1 markdown heading (``""`` if it has none)."""
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            for line in cell.source.splitlines():
+                if line.startswith("# "):
+                    return line[2:].strip()
+    return ""
+
+
+def to_html(nb, code: str = "details", source_link: str | None = None, title: str = "") -> str:
+    """HTML of an executed notebook for a reader (see ``reader_notebook``)."""
+    from nbconvert import HTMLExporter
+
+    exporter = HTMLExporter(template_name="classic")
+    if code != "show":
+        exporter.exclude_input = True
+        exporter.exclude_input_prompt = True
+        exporter.exclude_output_prompt = True
+    body, _ = exporter.from_notebook_node(
+        reader_notebook(nb, code, source_link), resources={"metadata": {"name": title}}
+    )
+    return body
+
+
+def render(
+    source: Path,
+    target: Path,
+    params: dict | None = None,
+    timeout: int = 600,
+    code: str = "details",
+) -> None:
+    """Execute a jupytext notebook (kernel working directory: the current one) and write its reader's HTML
+    atomically to ``target`` and the executed notebook, parameters included, next to it (``.ipynb``).
+
+    ``params`` are set as ``PARAMS`` in a tagged cell before the first code cell (papermill-style); the
+    HTML never shows that cell. Raises ``nbclient.exceptions.CellExecutionError`` if a cell fails."""
+    import tempfile
+
+    import jupytext
+    import nbformat
+    from nbclient import NotebookClient
+
+    from stickslip.io.netcdf import publish
+
+    source, target = Path(source), Path(target)
+    nb = jupytext.read(source)
+    if params is not None:
+        first_code = next(i for i, c in enumerate(nb.cells) if c.cell_type == "code")
+        nb.cells.insert(first_code, parameters_cell(params))
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    NotebookClient(
+        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": os.getcwd()}}
+    ).execute()
+    link = os.path.relpath(source.resolve(), target.resolve().parent)
+    body = to_html(nb, code, link, title=notebook_title(nb) or source.stem)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
+    with os.fdopen(fd, "w") as fh:
+        fh.write(body)
+    publish(tmp, target)
+    nbformat.write(nb, target.with_suffix(".ipynb"))
