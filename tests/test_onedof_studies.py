@@ -9,10 +9,10 @@ import pytest
 
 from stickslip.analysis.critical import critical_speed, steady_sliding_stable
 from stickslip.analysis.divergence import BoundedSolver, growth_message
-from stickslip.analysis.ranking import rank_readings, unreproduced_claims
 from stickslip.model import BeltModel, BeltParams
 from stickslip.model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
 from stickslip.solvers import make_solver
+from stickslip.studies.ranking import rank_readings, unreproduced_claims
 
 BASE = BeltParams(
     mass=1, stiffness=5, damping=1.5, mu_s=0.5, sigma=0.5, normal_force=10, x0=0, v0=0.5, belt_velocity=0.5

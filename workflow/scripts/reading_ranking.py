@@ -3,9 +3,9 @@
 import numpy as np
 import xarray as xr
 
-from stickslip.analysis.ranking import COLUMNS, rank_readings, unreproduced_claims
 from stickslip.io.claims import read_table
 from stickslip.io.netcdf import write_dataset
+from stickslip.studies.ranking import COLUMNS, rank_readings, unreproduced_claims
 
 rows = read_table(snakemake.input[0])
 table = rank_readings(rows, list(snakemake.params.readings))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from stickslip.io.claims import STATUSES
+from ..io.claims import STATUSES
 
 #: Columns of the ranking table, in order (one count column per status).
 COLUMNS = ("reading", *STATUSES, "total", "reproduced_fraction_of_comparable")
