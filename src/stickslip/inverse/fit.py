@@ -85,14 +85,16 @@ def _fun(forward: Forward, problem: Problem):
         if not problem.in_bounds(values):
             return np.full(len(problem.observations), INFEASIBLE_RESIDUAL)
         r = forward.residuals(values)  # clipped: a run growing without bound must not overflow the solver
-        return np.clip(np.where(np.isfinite(r), r, INFEASIBLE_RESIDUAL), -INFEASIBLE_RESIDUAL, INFEASIBLE_RESIDUAL)
+        return np.clip(
+            np.where(np.isfinite(r), r, INFEASIBLE_RESIDUAL), -INFEASIBLE_RESIDUAL, INFEASIBLE_RESIDUAL
+        )
 
     return fun
 
 
-def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None) -> BestFit:
+def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None, candidates=()) -> BestFit:
     """Seeded multi-start least squares; the first start is the stated set (or ``x0``), the others the best
-    points of a seeded uniform batch over the bounds."""
+    of ``candidates`` (free-parameter sets, e.g. the per-figure fits) or else of a seeded uniform batch."""
     p = forward.problem
     lo, hi = p.log_bounds
     rng = np.random.default_rng(seed)
@@ -101,8 +103,10 @@ def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None) -
     fun = _fun(forward, p)
     n0 = forward.evaluations
     x0s = [np.clip(first, *inner)]
-    if starts > 1:  # the other starts: the best of a seeded uniform batch (an infeasible start cannot move)
-        batch = rng.uniform(*inner, size=(SCOUTS_PER_START * (starts - 1), len(lo)))
+    if starts > 1:  # the other starts: the best of the candidates (e.g. other fits) or of a seeded batch
+        batch = [np.clip(np.log10(np.asarray(c, dtype=float)), *inner) for c in candidates]
+        if not batch:
+            batch = list(rng.uniform(*inner, size=(SCOUTS_PER_START * (starts - 1), len(lo))))
         cost = np.array([float(np.sum(fun(u) ** 2)) for u in batch])
         x0s += [batch[i] for i in np.argsort(cost, kind="stable")[: starts - 1]]
     best, costs = None, []
@@ -126,16 +130,23 @@ def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None) -
 
 
 def prior_precision(problem: Problem) -> float:
-    """1 / variance of a uniform prior over the mean log10 width of the bounds (regularises flat directions)."""
+    """1 / variance of a uniform prior over the mean log10 width of the bounds (regularises flat
+    directions)."""
     lo, hi = problem.log_bounds
     return float(12.0 / np.mean((hi - lo) ** 2))
+
+
+def laplace_cov_w(problem: Problem, jacobian: np.ndarray) -> np.ndarray:
+    """Gauss-Newton (Laplace) covariance of the identifiable coordinates w at a best fit."""
+    basis = problem.identifiable_basis()
+    jw = jacobian @ basis
+    return np.linalg.inv(jw.T @ jw + prior_precision(problem) * np.eye(basis.shape[1]))
 
 
 def laplace_sd(problem: Problem, jacobian: np.ndarray) -> np.ndarray:
     """Gauss-Newton standard deviation of log10 free parameters in the identifiable directions."""
     basis = problem.identifiable_basis()
-    jw = jacobian @ basis
-    cov_w = np.linalg.inv(jw.T @ jw + prior_precision(problem) * np.eye(basis.shape[1]))
+    cov_w = laplace_cov_w(problem, jacobian)
     return np.sqrt(np.clip(np.diag(basis @ cov_w @ basis.T), 0.0, None))
 
 
@@ -152,7 +163,7 @@ def log_probability(forward: Forward):
 
 
 def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed: int) -> Region:
-    """emcee around the best fit, seeded; the first half of the chain is discarded as burn-in."""
+    """emcee from the best fit's Laplace approximation, seeded; the first half of the chain is burn-in."""
     p = forward.problem
     ndim = p.identifiable_basis().shape[1]
     if walkers < 2 * ndim:
@@ -160,9 +171,11 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
     rng = np.random.default_rng(seed)
     w0 = p.to_coordinates(fit.free_values)
     log_prob = log_probability(forward)
+    # start from the Laplace approximation (capped), so the walkers begin spread along weak directions
+    spread = np.minimum(np.sqrt(np.diag(laplace_cov_w(p, fit.jacobian))), 0.3)
     start = []
     for _ in range(walkers):
-        scale = 1e-2
+        scale = spread
         for _ in range(20):  # a start must be feasible; shrink toward the best fit until it is
             w = w0 + scale * rng.standard_normal(ndim)
             if np.isfinite(log_prob(w)):

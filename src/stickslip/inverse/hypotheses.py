@@ -74,7 +74,11 @@ def single_changes(problem: Problem, points: int, hypothesis: dict | None = None
         for value in grid:
             values = stated.copy()
             values[i] = value
-            s = score(problem, forward.residuals(values)) if problem.in_bounds(values) else (np.inf, 0, np.inf, "")
+            s = (
+                score(problem, forward.residuals(values))
+                if problem.in_bounds(values)
+                else (np.inf, 0, np.inf, "")
+            )
             chi2.append(s[0])
             scores.append(s)
         chi2 = np.array(chi2)
@@ -83,8 +87,19 @@ def single_changes(problem: Problem, points: int, hypothesis: dict | None = None
         c, n_ok, worst, claim = scores[k]
         z = (np.log10(grid[k]) - np.log10(stated[i])) / sd if np.isfinite(sd) and sd > 0 else np.nan
         out.append(
-            Score("single_change", name, float(grid[k]), float(stated[i]), c, n_ok, len(problem.observations),
-                  worst, claim, float(z), f"only {name} changed, scanned over the bounds")
+            Score(
+                "single_change",
+                name,
+                float(grid[k]),
+                float(stated[i]),
+                c,
+                n_ok,
+                len(problem.observations),
+                worst,
+                claim,
+                float(z),
+                f"only {name} changed, scanned over the bounds",
+            )
         )
     return out
 
@@ -92,8 +107,18 @@ def single_changes(problem: Problem, points: int, hypothesis: dict | None = None
 def stated_score(problem: Problem, hypothesis: dict | None = None, label="stated", description="") -> Score:
     forward = Forward(problem, dict(hypothesis or {}))
     c, n_ok, worst, claim = score(problem, forward.residuals(problem.stated_free))
-    return Score(label, "", np.nan, np.nan, c, n_ok, len(problem.observations), worst, claim,
-                 description=description or "every parameter as stated")
+    return Score(
+        label,
+        "",
+        np.nan,
+        np.nan,
+        c,
+        n_ok,
+        len(problem.observations),
+        worst,
+        claim,
+        description=description or "every parameter as stated",
+    )
 
 
 def named_hypotheses(problem: Problem, specs: dict, points: int) -> list[Score]:
@@ -112,14 +137,38 @@ def named_hypotheses(problem: Problem, specs: dict, points: int) -> list[Score]:
                 results.append(score(problem, forward.residuals(problem.stated_free)))
             k = int(np.argmin([s[0] for s in results]))
             c, n_ok, worst, claim = results[k]
-            out.append(Score(label, "mu_k/mu_s", float(grid[k]), 1.0, c, n_ok, len(problem.observations),
-                             worst, claim, description=description))
+            out.append(
+                Score(
+                    label,
+                    "mu_k/mu_s",
+                    float(grid[k]),
+                    1.0,
+                    c,
+                    n_ok,
+                    len(problem.observations),
+                    worst,
+                    claim,
+                    description=description,
+                )
+            )
             continue
         s = stated_score(problem, spec, label, description)
         param = next(iter(spec), "")
         value = spec.get(param, np.nan)
-        out.append(Score(label, param, float(value) if isinstance(value, (int, float)) else np.nan,
-                         np.nan, s.chi2, s.reproduced, s.numbers, s.worst, s.worst_claim, description=description))
+        out.append(
+            Score(
+                label,
+                param,
+                float(value) if isinstance(value, (int, float)) else np.nan,
+                np.nan,
+                s.chi2,
+                s.reproduced,
+                s.numbers,
+                s.worst,
+                s.worst_claim,
+                description=description,
+            )
+        )
     return out
 
 
@@ -127,7 +176,18 @@ def ranking(problem: Problem, best_free: np.ndarray, sd_log10: np.ndarray) -> li
     """Each stated parameter: inferred (joint best fit) vs stated in units of the posterior spread (log10)."""
     rows = []
     for i, name in enumerate(problem.free):
-        z = (np.log10(best_free[i]) - np.log10(problem.stated_free[i])) / sd_log10[i] if sd_log10[i] > 0 else np.nan
-        rows.append({"parameter": name, "stated": float(problem.stated_free[i]), "inferred": float(best_free[i]),
-                     "sd_log10": float(sd_log10[i]), "z": float(z)})
+        z = (
+            (np.log10(best_free[i]) - np.log10(problem.stated_free[i])) / sd_log10[i]
+            if sd_log10[i] > 0
+            else np.nan
+        )
+        rows.append(
+            {
+                "parameter": name,
+                "stated": float(problem.stated_free[i]),
+                "inferred": float(best_free[i]),
+                "sd_log10": float(sd_log10[i]),
+                "z": float(z),
+            }
+        )
     return sorted(rows, key=lambda r: -abs(r["z"]) if np.isfinite(r["z"]) else 0.0)

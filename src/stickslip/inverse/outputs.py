@@ -28,7 +28,7 @@ def write_csv(rows: list[dict], path) -> Path:
 
 
 def corner_plot(ds, family: str, path) -> Path:
-    """Corner plot of one family's samples (log10 of the free parameters), stated values and best fit marked."""
+    """Corner plot of one family's samples (log10 of the free parameters), stated set and best fit marked."""
     import corner
     import matplotlib
 
@@ -84,13 +84,26 @@ def write_study(out: dict, outdir) -> list[Path]:
     outdir = Path(outdir)
     written = []
     scene = {"study": "inverse (issue 14)", "mode": out["settings"]["mode"]}
-    method = {"forward": "exact event-driven solver", "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
-              "region": "emcee EnsembleSampler (seeded)", **{k: v for k, v in out["settings"].items() if k != "mode"}}
+    method = {
+        "forward": "exact event-driven solver",
+        "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
+        "region": "emcee EnsembleSampler (seeded)",
+        **{k: v for k, v in out["settings"].items() if k != "mode"},
+    }
     for name, ds in out["datasets"].items():
-        written.append(write_dataset(ds, outdir / f"{name}.nc", scene=scene, interpretation=INTERPRETATION,
-                                     method=method, title=ds.attrs["title"]))
-        for family in ds.family.values:
-            written.append(corner_plot(ds, str(family), outdir / "corner" / f"{name}_{family}.png"))
+        written.append(
+            write_dataset(
+                ds,
+                outdir / f"{name}.nc",
+                scene=scene,
+                interpretation=INTERPRETATION,
+                method=method,
+                title=ds.attrs["title"],
+            )
+        )
+        if name in out["settings"].get("corner", []):
+            for family in ds.family.values:
+                written.append(corner_plot(ds, str(family), outdir / "corner" / f"{name}_{family}.png"))
     written.append(write_csv(out["summary"], outdir / "summary.csv"))
     written.append(write_csv(out["hypotheses"], outdir / "hypotheses.csv"))
     written.append(write_csv(out["ranking"], outdir / "ranking.csv"))

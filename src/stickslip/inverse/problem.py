@@ -229,7 +229,9 @@ def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
     """(run name, metric, overrides relative to the defaults) of a value claim, from its dataset path."""
     where = f"claim {row['id']}"
     if row.get("kind") != "value":
-        raise ParameterError(f"{where}.kind: only value claims are reported numbers (got {row.get('kind')!r})")
+        raise ParameterError(
+            f"{where}.kind: only value claims are reported numbers (got {row.get('kind')!r})"
+        )
     if row.get("comparable", True) is False:
         raise ParameterError(f"{where}.comparable: false (the paper contradicts itself there); not fitted")
     path, variable = row["dataset"], row["variable"]
