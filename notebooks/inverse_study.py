@@ -98,8 +98,8 @@ display(
 # %% [markdown]
 # ## 2. Residual of every reported number: stated parameters vs the best fit
 #
-# Grey: the stated parameters (what the claims table shows); coloured: the best fit. The band is the reading
-# precision. A missing grey bar is a number the stated parameters cannot produce at all (infeasible).
+# Grey: the stated parameters (what the claims table shows); blue: the best fit. The band is the reading
+# precision; "not produced" marks a number the run cannot produce at all (infeasible, e.g. no stick).
 
 # %%
 for name in FIGURES:
@@ -112,15 +112,20 @@ for name in FIGURES:
     for ax, fam in zip(axes[0], fams):
         sub = ds.sel(family=fam)
         ax.axvspan(-1, 1, color="0.9")
-        ax.barh(y + 0.2, np.clip(sub.residual_stated, -20, 20), height=0.4, color="0.6", label="stated")
-        ax.barh(y - 0.2, np.clip(sub.residual, -20, 20), height=0.4, color="tab:blue", label="best fit")
+        for values, dy, colour, label in (
+            (sub.residual_stated.values, 0.2, "0.6", "stated"),
+            (sub.residual.values, -0.2, "tab:blue", "best fit"),
+        ):
+            ax.barh(y + dy, np.clip(np.nan_to_num(values), -20, 20), height=0.4, color=colour, label=label)
+            for k in np.nonzero(~np.isfinite(values))[0]:  # a number the run cannot produce: infeasible
+                ax.text(0.3, y[k] + dy, "not produced (infeasible)", color=colour, fontsize=7, va="center")
         ax.set_yticks(y, [str(c) for c in ds.claim.values], fontsize=8)
         ax.set_xlim(-20, 20)
         ax.set_xlabel("(measured − reported) / reading precision (clipped at ±20)")
         verdict = "consistent" if int(sub.consistent) else "inconsistent"
         ax.set_title(f"{fam}: {verdict}", fontsize=10)
     axes[0][0].legend(fontsize=8, loc="lower left")
-    fig.suptitle(f"FIT — {ds.attrs['title']}", fontsize=11)
+    fig.suptitle(ds.attrs["title"], fontsize=11)
     fig.tight_layout()
     plt.show()
 

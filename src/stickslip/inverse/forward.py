@@ -123,8 +123,8 @@ def observe(traj: Trajectory, transient: float, count_window: float, names) -> d
 class Forward:
     """Measured numbers of a problem's observations for a free-parameter vector, with run counters.
 
-    ``hypothesis`` may set ``eq4_term`` / ``mu_k_ratio`` (model laws) or BeltParams fields (``units``,
-    ``sigma``, ...) applied to every run on top of the free values.
+    ``hypothesis`` may set ``eq4_term`` / ``mu_k_ratio`` (model laws), ``output_dt`` (sample spacing) or
+    BeltParams fields (``units``, ``sigma``, ...) applied to every run on top of the free values.
     """
 
     problem: Problem
@@ -140,14 +140,16 @@ class Forward:
         run = p.runs[run_index]
         hyp = dict(self.hypothesis)
         eq4, ratio = bool(hyp.pop("eq4_term", False)), float(hyp.pop("mu_k_ratio", 1.0))
+        dt = float(hyp.pop("output_dt", p.run_settings["output_dt"]))  # a faster reading needs finer samples
         params = p.run_params(free_values, run, hyp)
-        key = (tuple(sorted(params.as_dict().items())), eq4, ratio)
+        key = (tuple(sorted(params.as_dict().items())), eq4, ratio, dt)
         names = sorted({o.metric for o in p.observations if o.run == run_index})
         if key not in self._cache:
             model, solver = build_model(params, p.variant, eq4_term=eq4, mu_k_ratio=ratio)
             s = p.run_settings
-            n = int(round(s["t_end"] / s["output_dt"]))
-            traj = solver.solve(model, s["t_end"], np.linspace(0.0, n * s["output_dt"], n + 1))
+            n = int(round(s["t_end"] / dt))
+            with np.errstate(over="ignore", invalid="ignore"):  # runs growing without bound are data here
+                traj = solver.solve(model, s["t_end"], np.linspace(0.0, n * dt, n + 1))
             self.runs += 1
             self.failed_runs += int(not traj.ok)
             self._cache[key] = observe(traj, s["transient"], s["count_window"], names)
