@@ -172,7 +172,7 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
     w0 = p.to_coordinates(fit.free_values)
     log_prob = log_probability(forward)
     # start from the Laplace approximation (capped), so the walkers begin spread along weak directions
-    spread = np.minimum(np.sqrt(np.diag(laplace_cov_w(p, fit.jacobian))), 0.3)
+    spread = np.clip(np.sqrt(np.diag(laplace_cov_w(p, fit.jacobian))), 1e-3, 0.3)
     start = []
     for _ in range(walkers):
         scale = spread
@@ -185,7 +185,9 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
     sampler = emcee.EnsembleSampler(walkers, ndim, log_prob)
     sampler.random_state = np.random.RandomState(seed).get_state()
     n0, inf0 = forward.evaluations, forward.infeasible
-    sampler.run_mcmc(np.array(start), steps, progress=False)
+    # the starts are independent Gaussian draws; a start shrunk toward the best fit (to be feasible) may make
+    # the ensemble nearly degenerate, which emcee's start check rejects, though the stretch move recovers
+    sampler.run_mcmc(np.array(start), steps, progress=False, skip_initial_state_check=True)
     burn = steps // 2
     chain = sampler.get_chain(discard=burn, flat=True)
     logp = sampler.get_log_prob(discard=burn, flat=True)
