@@ -200,8 +200,9 @@ display(Markdown("\n".join(lines)))
 # Samples of log10 of the free parameters (each the set closest to the stated one with its motion); red lines:
 # stated values, blue ×: best fit. The diagnostics say how far the chains can be trusted: emcee's integrated
 # autocorrelation time τ should be well below the chain length / 50 for a converged posterior. In the default
-# build the chains are short (a cost limit; `inverse.long: true` gives the long run) — there the spreads used
-# in the ranking are the Laplace ones, and the corner plots show where the walkers went, not a posterior.
+# build the chains are short and the joint problem is not sampled at all (a cost limit; `inverse.long: true`
+# gives the long run) — there the spreads used in the ranking are the Laplace (Gauss-Newton) ones, and the
+# corner plots show where the walkers went, not a converged posterior.
 
 # %%
 rows = []
@@ -224,7 +225,7 @@ for name in FIGURES:
 display(pd.DataFrame(rows).round(3).style.hide(axis="index"))
 
 # %%
-for name in ["joint", "fig02"]:
+for name in settings.get("corner", []):  # the figures whose corner plots this build drew
     for fam in data[name].family.values:
         display(Markdown(f"**{name} / {fam}**"))
         display(Image(filename=f"results/inverse/corner/{name}_{fam}.png", width=640))

@@ -46,7 +46,9 @@ def corner_plot(ds, family: str, path) -> Path:
     best = np.log10([float(sub.best_fit.sel(parameter=p)) for p in free])
     if len(samples) <= len(free):
         fig, ax = plt.subplots(figsize=(6, 2))
-        ax.text(0.5, 0.5, "no feasible parameter set sampled", ha="center", va="center")
+        steps = float(sub.chain_steps)
+        text = "not sampled in this build" if not np.isfinite(steps) else "no feasible parameter set sampled"
+        ax.text(0.5, 0.5, text, ha="center", va="center")
         ax.set_axis_off()
     else:
         fig = corner.corner(

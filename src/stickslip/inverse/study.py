@@ -14,7 +14,7 @@ import time
 import numpy as np
 import xarray as xr
 
-from .fit import best_fit, loo_linear, loo_refit, sample_region
+from .fit import best_fit, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem, build_problem
@@ -32,8 +32,11 @@ def settings_of(config: dict) -> dict:
     s = dict(inv["settings"][mode])
     s["mode"] = mode
     for key in ("starts", "max_nfev", "walkers", "steps", "joint_steps", "scan_points"):
-        if not isinstance(s.get(key), int) or s[key] < 1:
-            raise ValueError(f"inverse.settings.{mode}.{key}: must be a positive integer, got {s.get(key)!r}")
+        minimum = 0 if key == "joint_steps" else 1  # joint_steps 0: the joint region is the Laplace one only
+        if not isinstance(s.get(key), int) or s[key] < minimum:
+            raise ValueError(
+                f"inverse.settings.{mode}.{key}: must be an integer >= {minimum}, got {s.get(key)!r}"
+            )
     if s.get("loo") not in ("linear", "refit"):
         raise ValueError(f"inverse.settings.{mode}.loo: must be 'linear' or 'refit', got {s.get('loo')!r}")
     return s
@@ -45,7 +48,8 @@ def fit_problem(problem: Problem, settings: dict, steps: int, loo: bool = False,
     forward = Forward(problem)
     seed = int(settings["seed"])
     fit = best_fit(forward, settings["starts"], settings["max_nfev"], seed, candidates=candidates)
-    region = sample_region(forward, fit, settings["walkers"], steps, seed) if np.isfinite(fit.chi2) else None
+    sampled = steps > 0 and np.isfinite(fit.chi2)  # an infeasible best fit has no region to sample from
+    region = sample_region(forward, fit, settings["walkers"], steps, seed) if sampled else None
     loo_r = None
     if loo:
         loo_r = (
@@ -131,6 +135,8 @@ def figure_dataset(name: str, results: dict[str, dict], settings: dict) -> xr.Da
         scalars["dims"][f] = p.identifiable_basis().shape[1]
         scalars["evaluations"][f] = r["forward"].evaluations
         scalars["cpu"][f] = r["cpu"]
+        if np.all(np.isfinite(fit.jacobian)):
+            v["laplace"][f] = v["sd"][f] = _pad(laplace_sd(p, fit.jacobian), p.free)
         if region is not None:
             n = len(region.samples_free)
             for i in range(n):
@@ -382,7 +388,7 @@ def misprint_tables(config: dict, claims: dict, joint: dict[str, dict], settings
         )
         rows += single_changes(p, settings["scan_points"])
         hyp_rows += [s.row(fam) for s in rows]
-        sd = r["region"].sd_log10 if r["region"] is not None else np.full(len(p.free), np.nan)
+        sd = r["region"].sd_log10 if r["region"] is not None else laplace_sd(p, r["fit"].jacobian)
         rank_rows += [{"family": fam, **row} for row in ranking(p, r["fit"].free_values, sd)]
     return hyp_rows, rank_rows
 
