@@ -187,10 +187,14 @@ stated_n = hypotheses[hypotheses.hypothesis == "stated"].set_index("family")["re
 lines = []
 for fam, grp in best.groupby("family"):
     top = grp.iloc[0]
+    what = (
+        f"changing {top.parameter} alone to {top.value:.3g} (stated {top.stated:g})"
+        if top.hypothesis == "single_change"
+        else f"the hypothesis *{top.hypothesis}* ({top.description})"
+    )
     lines.append(
-        f"* **{fam}**: the single change that reproduces most numbers is *{top.hypothesis}* "
-        f"({top.parameter} = {top.value:.3g}): {top.reproduced} of {top.numbers} within precision "
-        f"(stated parameters: {stated_n.get(fam, 'n/a')})."
+        f"* **{fam}**: the single change that reproduces most numbers is {what}: {top.reproduced} of "
+        f"{top.numbers} within their reading precision (stated parameters: {stated_n.get(fam, 'n/a')})."
     )
 display(Markdown("\n".join(lines)))
 
