@@ -50,13 +50,12 @@ def fit_problem(problem: Problem, settings: dict, steps: int, loo: bool = False,
     fit = best_fit(forward, settings["starts"], settings["max_nfev"], seed, candidates=candidates)
     sampled = steps > 0 and np.isfinite(fit.chi2)  # an infeasible best fit has no region to sample from
     region = sample_region(forward, fit, settings["walkers"], steps, seed) if sampled else None
-    loo_r = None
-    if loo:
-        loo_r = (
-            loo_refit(forward, fit, settings.get("loo_nfev", settings["max_nfev"]), seed)
-            if settings["loo"] == "refit"
-            else loo_linear(problem, fit)
-        )
+    # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
+    refit = loo and settings["loo"] == "refit"
+    if refit:
+        loo_r = loo_refit(forward, fit, settings.get("loo_nfev", settings["max_nfev"]), seed)
+    else:
+        loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
     return {
         "problem": problem,
@@ -260,7 +259,9 @@ def figure_dataset(name: str, results: dict[str, dict], settings: dict) -> xr.Da
                 {
                     "units": "1",
                     "long_name": "leave-one-out residual (number left out of the fit)",
-                    "comment": f"method: {settings['loo']}",
+                    "comment": "method: "
+                    + (settings["loo"] if name == "joint" else "linear")
+                    + " (linear: r_i / (1 - h_ii) at the best fit; refit: the problem refitted without it)",
                 },
             ),
             "worst_residual": (
