@@ -27,6 +27,9 @@ from .problem import Problem, with_observations
 INFEASIBLE_RESIDUAL = 100.0
 
 
+#: Below this 1 - h_ii a leave-one-out residual is undefined (the number alone fixes a direction).
+LOO_MIN_LEVER = 0.05
+
 #: Seeded random points scouted per extra least-squares start.
 SCOUTS_PER_START = 8
 
@@ -212,14 +215,15 @@ def loo_linear(problem: Problem, fit: BestFit) -> np.ndarray:
     """Leave-one-out residuals, linearised at the best fit: r_i / (1 - h_ii) (PRESS residuals).
 
     h is the hat matrix of the whitened Gauss-Newton problem in the identifiable coordinates (with the weak
-    prior of ``prior_precision``); a number that alone fixes a direction (h_ii -> 1) gets NaN.
+    prior of ``prior_precision``); a number that alone fixes a direction (1 - h_ii < LOO_MIN_LEVER) gets NaN:
+    left out, nothing predicts it, and the linearisation would divide by round-off.
     """
     basis = problem.identifiable_basis()
     jw = fit.jacobian @ basis
     h = jw @ np.linalg.inv(jw.T @ jw + prior_precision(problem) * np.eye(basis.shape[1])) @ jw.T
     lever = 1.0 - np.diag(h)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(lever > 1e-6, fit.residuals / lever, np.nan)
+        return np.where(lever > LOO_MIN_LEVER, fit.residuals / lever, np.nan)
 
 
 def loo_refit(forward: Forward, fit: BestFit, max_nfev: int, seed: int) -> np.ndarray:
