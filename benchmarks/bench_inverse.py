@@ -1,0 +1,81 @@
+"""Cost of the inverse study (issue 14) in the default build: CPU seconds per stage, measured in one run.
+
+Target: the whole study (fits, sampling, misprint scans, datasets and corner plots) within 90 s of CPU, so the
+clean build keeps its 4 min budget. `--long` measures the long run (config `inverse.long: true`) instead.
+
+usage: PYTHONPATH=src python benchmarks/bench_inverse.py [--long] [--out DIR]
+"""
+
+import argparse
+import glob
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from stickslip.inverse.forward import Forward
+from stickslip.inverse.outputs import write_study
+from stickslip.inverse.problem import build_problem, load_claim_rows
+from stickslip.inverse.study import run_study
+
+ROOT = Path(__file__).resolve().parents[1]
+BUDGET = 90.0
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--long", action="store_true")
+    ap.add_argument("--out", default=None)
+    args = ap.parse_args()
+    config = {}
+    for name in ("config.yaml", "inverse.yaml"):
+        config.update(yaml.safe_load((ROOT / "config" / name).read_text()))
+    config["inverse"]["long"] = bool(args.long)
+    claims = load_claim_rows(sorted(glob.glob(str(ROOT / "config" / "claims" / "*.yaml"))))
+
+    # cost of one forward evaluation (all runs of a problem), the unit everything else is made of
+    rows = []
+    for name, fam in (
+        ("fig02", "consistent"),
+        ("fig02", "plateau"),
+        ("joint", "consistent"),
+        ("joint", "plateau"),
+    ):
+        p = build_problem(config, claims, name, fam)
+        fw = Forward(p)
+        t0 = time.process_time()
+        for k in range(5):
+            fw.measure(p.stated_free * (1 + 1e-3 * (k + 1)))
+        rows.append((f"one evaluation: {name}/{fam} ({len(p.runs)} runs)", (time.process_time() - t0) / 5))
+
+    t0 = time.process_time()
+    out = run_study(config, claims)
+    study = time.process_time() - t0
+    t1 = time.process_time()
+    target = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="bench_inverse_"))
+    write_study(out, target)
+    writing = time.process_time() - t1
+    rows += [(f"fit {name} (both families)", cpu) for name, cpu in out["cpu"].items()]
+    rows += [
+        ("study (fits, sampling, scans)", study),
+        ("datasets + corner plots", writing),
+        ("whole study", study + writing),
+    ]
+    mode = "long" if args.long else "default"
+    print(f"inverse study, {mode} mode (process CPU seconds; budget {BUDGET:g} s for the default build)")
+    print(f"{'stage':58s} {'CPU [s]':>10s} {'/ budget':>9s}")
+    for label, cpu in rows:
+        print(f"{label:58s} {cpu:10.3f} {cpu / BUDGET:9.3f}")
+    total = study + writing
+    print(
+        f"{'within budget' if total <= BUDGET else 'OVER BUDGET'}: {total:.1f} s of {BUDGET:g} s"
+        f" ({mode} mode; outputs in {target})"
+    )
+    return 0 if (args.long or total <= BUDGET) else 1
+
+
+if __name__ == "__main__":
+    np.seterr(all="ignore")
+    raise SystemExit(main())

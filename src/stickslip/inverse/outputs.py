@@ -1,0 +1,112 @@
+"""Write the study: one netCDF per figure (atomic, with provenance), summary/hypotheses/ranking CSVs, corner
+plots of the sampled regions."""
+
+from __future__ import annotations
+
+import csv
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..io.netcdf import publish, write_dataset
+from .study import INTERPRETATION
+
+
+def write_csv(rows: list[dict], path) -> Path:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fields = list(dict.fromkeys(k for row in rows for k in row))
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    with os.fdopen(fd, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=fields)
+        writer.writeheader()
+        writer.writerows(rows)
+    publish(tmp, path)
+    return path
+
+
+def corner_plot(ds, family: str, path) -> Path:
+    """Corner plot of one family's samples (log10 of the free parameters), stated set and best fit marked."""
+    import corner
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    sub = ds.sel(family=family)
+    free = [str(p) for p in sub.parameter.values if np.isfinite(sub.best_fit.sel(parameter=p))]
+    samples = np.log10(np.column_stack([sub.samples.sel(parameter=p).values for p in free]))
+    samples = samples[np.all(np.isfinite(samples), axis=1)]
+    labels = [f"log10 {sub.parameter_symbol.sel(parameter=p).item()}" for p in free]
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    stated = np.log10([float(sub.stated.sel(parameter=p)) for p in free])
+    best = np.log10([float(sub.best_fit.sel(parameter=p)) for p in free])
+    if len(samples) <= len(free):
+        fig, ax = plt.subplots(figsize=(6, 2))
+        steps = float(sub.chain_steps)
+        text = "not sampled in this build" if not np.isfinite(steps) else "no feasible parameter set sampled"
+        ax.text(0.5, 0.5, text, ha="center", va="center")
+        ax.set_axis_off()
+    else:
+        fig = corner.corner(
+            samples,
+            labels=labels,
+            truths=stated,
+            truth_color="tab:red",
+            plot_datapoints=True,
+            plot_density=False,
+            plot_contours=False,
+            data_kwargs={"alpha": 0.3, "ms": 2},
+            hist_kwargs={"color": "0.3"},
+            range=_ranges(samples, stated, best),
+        )
+        corner.overplot_points(fig, best[None, :], marker="x", color="tab:blue", ms=8)
+    verdict = "consistent" if int(sub.consistent) else "inconsistent"
+    fig.suptitle(
+        f"FIT {ds.attrs['figure']} / {family}: {verdict} (worst |residual| {float(sub.worst_residual):.2f})\n"
+        "red: stated, blue x: best fit",
+        fontsize=10,
+    )
+    fig.savefig(path, dpi=60)
+    plt.close(fig)
+    return path
+
+
+def _ranges(samples, stated, best, margin=0.05):
+    """Axis ranges holding the samples, the stated set and the best fit (the distance is the point)."""
+    lo = np.minimum(np.minimum(samples.min(0), stated), best)
+    hi = np.maximum(np.maximum(samples.max(0), stated), best)
+    return [(a - margin, b + margin) for a, b in zip(lo, hi)]
+
+
+def write_study(out: dict, outdir) -> list[Path]:
+    outdir = Path(outdir)
+    written = []
+    scene = {"study": "inverse (issue 14)", "mode": out["settings"]["mode"]}
+    method = {
+        "forward": "exact event-driven solver",
+        "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
+        "region": "emcee EnsembleSampler (seeded)",
+        **{k: v for k, v in out["settings"].items() if k != "mode"},
+    }
+    for name, ds in out["datasets"].items():
+        written.append(
+            write_dataset(
+                ds,
+                outdir / f"{name}.nc",
+                scene=scene,
+                interpretation=INTERPRETATION,
+                method=method,
+                title=ds.attrs["title"],
+            )
+        )
+        if name in out["settings"].get("corner", []):
+            for family in ds.family.values:
+                written.append(corner_plot(ds, str(family), outdir / "corner" / f"{name}_{family}.png"))
+    written.append(write_csv(out["summary"], outdir / "summary.csv"))
+    written.append(write_csv(out["hypotheses"], outdir / "hypotheses.csv"))
+    written.append(write_csv(out["ranking"], outdir / "ranking.csv"))
+    return written

@@ -1,0 +1,353 @@
+"""An identification problem: runs of the forward model, the reported numbers they must reproduce, the free
+parameters with their bounds, and the directions of parameter space the numbers can identify at all.
+
+The reported numbers, their tolerances and reasons come from the claims table by claim id; the stated
+parameters from the pipeline config (onedof.defaults and the figure's scene or sweep). Nothing is copied.
+
+Identifiability. In the units-as-given reading the equation of motion divided by M is
+
+    x'' + (C/M) x' + (K/M) x = -(mu_s N / M) (sgn(v_r) - sigma v_r'),
+
+so a run depends on M, K, C, mu_s, N only through K/M, C/M and mu_s N/M (plus sigma and the plateau speed).
+In log10 coordinates these are linear maps (rows of ``COMBINATIONS``); a problem whose runs fix some
+parameters (a sweep, the changed parameter of a figure) identifies the row space of the stacked maps, and
+the orthogonal complement is exactly flat in the likelihood. The sampler works in the identifiable
+coordinates; a raw parameter set is reported as the one *closest to the stated set* (in log10 distance) among
+all sets giving the same motion: stated + B w, with B an orthonormal basis of the identifiable directions.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from ..model.params import BeltParams, ParameterError
+
+#: Free parameters the study may vary, in a fixed order (BeltParams field names).
+PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")
+SYMBOLS = {
+    "sigma": "sigma",
+    "damping": "C",
+    "mu_s": "mu_s",
+    "normal_force": "N",
+    "stiffness": "K",
+    "mass": "M",
+    "plateau_speed": "v_p",
+}
+UNITS = {
+    "sigma": "s mm-1",
+    "damping": "N s mm-1",
+    "mu_s": "1",
+    "normal_force": "N",
+    "stiffness": "N mm-1",
+    "mass": "kg",
+    "plateau_speed": "mm s-1",
+}
+
+#: log10 of the combinations a run depends on, as rows over PARAMS.
+COMBINATIONS = {
+    "K/M": {"stiffness": 1, "mass": -1},
+    "C/M": {"damping": 1, "mass": -1},
+    "mu_s N/M": {"mu_s": 1, "normal_force": 1, "mass": -1},
+    "sigma": {"sigma": 1},
+    "v_p": {"plateau_speed": 1},
+}
+COMBINATION_UNITS = {"K/M": "s-2", "C/M": "s-1", "mu_s N/M": "mm s-2", "sigma": "s mm-1", "v_p": "mm s-1"}
+
+#: Metrics a value claim may name (the subset of ``limit_cycle_metrics`` the forward model measures).
+METRICS = (
+    "max_displacement",
+    "stick_time",
+    "slip_time",
+    "frequency_peaks",
+    "peaks_in_count_window",
+    "stick_velocity",
+    "max_speed",
+    "max_speed_position",
+    "stick_end_position",
+    "amplitude_peak_to_peak",
+    "amplitude_peak_to_zero",
+    "periodic",
+)
+
+
+@dataclass(frozen=True)
+class Observation:
+    """One reported number: the claim row's value and its reading precision (one standard deviation)."""
+
+    claim: str
+    run: int
+    metric: str
+    value: float
+    sd: float
+    unit: str
+    reason: str
+    figure: str
+    quote: str = ""
+
+
+@dataclass(frozen=True)
+class RunDef:
+    """One run of the forward model: parameters this run fixes on top of the free ones."""
+
+    name: str
+    overrides: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Problem:
+    name: str
+    title: str
+    family: str
+    variant: str
+    stated: dict
+    """Stated value of every BeltParams field (the base scene's caption values)."""
+    free: tuple
+    bounds: dict
+    runs: tuple
+    observations: tuple
+    run_settings: dict
+    nonnegative_plateau: bool = True
+
+    @property
+    def stated_free(self) -> np.ndarray:
+        return np.array([self.stated[p] for p in self.free], dtype=float)
+
+    @property
+    def log_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        lo = np.log10([self.bounds[p][0] for p in self.free])
+        hi = np.log10([self.bounds[p][1] for p in self.free])
+        return lo, hi
+
+    def values(self, free_values) -> dict:
+        """Free parameter values as a mapping."""
+        return dict(zip(self.free, (float(v) for v in free_values)))
+
+    def run_params(self, free_values, run: RunDef, extra: dict | None = None) -> BeltParams:
+        """Parameters of one run: stated, then the free values, then what the run fixes (its overrides)."""
+        mapping = {**self.stated, **self.values(free_values), **run.overrides, **(extra or {})}
+        return BeltParams.from_mapping(mapping)
+
+    def in_bounds(self, free_values) -> bool:
+        v = np.asarray(free_values, dtype=float)
+        lo, hi = (10.0**b for b in self.log_bounds)
+        if not (np.all(np.isfinite(v)) and np.all(v >= lo * (1 - 1e-12)) and np.all(v <= hi * (1 + 1e-12))):
+            return False
+        if self.nonnegative_plateau and "plateau_speed" in self.free:
+            vals = self.values(v)
+            if vals.get("sigma", self.stated["sigma"]) * vals["plateau_speed"] > 1.0:
+                return False
+        return True
+
+    # -- identifiable directions ------------------------------------------------------------------------
+    def combination_matrix(self) -> np.ndarray:
+        """Stacked log-combination rows over the free parameters, one block per run (fixed columns zeroed)."""
+        rows = []
+        for run in self.runs:
+            for combo in COMBINATIONS.values():
+                row = [0.0 if p in run.overrides else float(combo.get(p, 0)) for p in self.free]
+                if any(row):
+                    rows.append(row)
+        return np.array(rows, dtype=float).reshape(-1, len(self.free))
+
+    def identifiable_basis(self) -> np.ndarray:
+        """Orthonormal basis (columns) of the free log10 directions that change at least one run."""
+        a = self.combination_matrix()
+        _, s, vt = np.linalg.svd(a, full_matrices=False)
+        rank = int(np.sum(s > 1e-10 * max(s.max(), 1.0)))
+        basis = vt[:rank].T
+        # a deterministic sign: the largest entry of each column positive
+        signs = np.sign(basis[np.argmax(np.abs(basis), axis=0), np.arange(rank)])
+        return basis * signs
+
+    def from_coordinates(self, w) -> np.ndarray:
+        """Free parameter values of identifiable coordinates w: the set closest to the stated one."""
+        basis = self.identifiable_basis()
+        return 10.0 ** (np.log10(self.stated_free) + basis @ np.asarray(w, dtype=float))
+
+    def to_coordinates(self, free_values) -> np.ndarray:
+        basis = self.identifiable_basis()
+        return basis.T @ (np.log10(np.asarray(free_values, dtype=float)) - np.log10(self.stated_free))
+
+    def closest_equivalent(self, free_values) -> np.ndarray:
+        """The set giving the same motion as ``free_values`` that is closest to the stated set."""
+        return self.from_coordinates(self.to_coordinates(free_values))
+
+    def combinations(self, free_values, run: RunDef | None = None) -> dict:
+        """K/M, C/M, mu_s N/M, sigma (and v_p) of a parameter set, for the first run or the one given."""
+        p = self.run_params(free_values, run or self.runs[0]).as_dict()
+        out = {}
+        for name, combo in COMBINATIONS.items():
+            if name == "v_p" and "plateau_speed" not in self.free:
+                continue
+            out[name] = float(np.prod([p[k] ** e for k, e in combo.items()]))
+        return out
+
+
+# -- building problems from the config and the claims table ----------------------------------------------
+
+
+def load_claim_rows(paths) -> dict:
+    rows = {}
+    for path in sorted(Path(p) for p in paths):
+        for row in yaml.safe_load(Path(path).read_text()) or []:
+            rows[row["id"]] = row
+    return rows
+
+
+def _tolerance_sd(row: dict) -> tuple[float, str]:
+    tol = row.get("tolerance")
+    where = f"claim {row['id']}.tolerance"
+    if not isinstance(tol, dict):
+        raise ParameterError(f"{where}: missing (a reported number needs its reading precision)")
+    value = float(row["value"])
+    if "rel" in tol:
+        sd = float(tol["rel"]) * abs(value)
+    elif "abs" in tol:
+        sd = float(tol["abs"])
+    else:
+        raise ParameterError(f"{where}: needs rel or abs")
+    if not (math.isfinite(sd) and sd > 0):
+        raise ParameterError(f"{where}: must give a positive spread, got {sd!r}")
+    return sd, str(tol.get("reason", ""))
+
+
+_SCENE_PATH = re.compile(r"results/onedof/(?P<scene>[^/]+)/\{reading\}/exact\.nc$")
+_SWEEP_PATH = re.compile(r"results/onedof/sweeps/(?P<sweep>[^/]+)/\{reading\}\.nc$")
+
+
+def _value_tag(value: float) -> str:
+    return f"{value:g}".replace(".", "p")  # as workflow/scripts/onedof_sweeps.py names the variables
+
+
+def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
+    """(run name, metric, overrides relative to the defaults) of a value claim, from its dataset path."""
+    where = f"claim {row['id']}"
+    if row.get("kind") != "value":
+        raise ParameterError(
+            f"{where}.kind: only value claims are reported numbers (got {row.get('kind')!r})"
+        )
+    if row.get("comparable", True) is False:
+        raise ParameterError(f"{where}.comparable: false (the paper contradicts itself there); not fitted")
+    path, variable = row["dataset"], row["variable"]
+    m = _SCENE_PATH.match(path)
+    if m:
+        scene = m["scene"]
+        if scene not in onedof["scenes"]:
+            raise ParameterError(f"{where}.dataset: scene {scene!r} is not in onedof.scenes")
+        if variable not in METRICS:
+            raise ParameterError(f"{where}.variable: {variable!r} is not one of {METRICS}")
+        return scene, variable, dict(onedof["scenes"][scene].get("params", {}))
+    m = _SWEEP_PATH.match(path)
+    if m:
+        sweep = onedof["sweeps"].get(m["sweep"])
+        if sweep is None:
+            raise ParameterError(f"{where}.dataset: sweep {m['sweep']!r} is not in onedof.sweeps")
+        metric, _, tag = variable.rpartition("_at_")
+        values = [v for v in sweep["values"] if _value_tag(float(v)) == tag]
+        if metric not in METRICS or not values:
+            raise ParameterError(f"{where}.variable: {variable!r} is not <metric>_at_<sweep value>")
+        value = float(values[0])
+        param = sweep["parameter"]
+        overrides = {param: value, **{k: f * value for k, f in (sweep.get("linked") or {}).items()}}
+        base = dict(onedof["scenes"][sweep.get("scene", "fig02")].get("params", {}))
+        return f"{m['sweep']}:{param}={value:g}", metric, {**base, **overrides}
+    raise ParameterError(f"{where}.dataset: {path!r} is neither a 1-DOF scene nor a sweep dataset")
+
+
+def _bounds(cfg: dict) -> dict:
+    out = {}
+    for name in PARAMS:
+        b = cfg["bounds"].get(name)
+        if not isinstance(b, dict) or "min" not in b or "max" not in b or not b.get("reason"):
+            raise ParameterError(f"inverse.bounds.{name}: needs min, max and a reason")
+        lo, hi = float(b["min"]), float(b["max"])
+        if not (0 < lo < hi and math.isfinite(hi)):
+            raise ParameterError(f"inverse.bounds.{name}: need 0 < min < max, got {lo!r}, {hi!r}")
+        out[name] = (lo, hi)
+    return out
+
+
+def build_problem(config: dict, claims: dict, name: str, family: str) -> Problem:
+    """The identification problem of one figure (or ``joint``) for one model family."""
+    inv, onedof = config["inverse"], config["onedof"]
+    if family not in inv["families"]:
+        raise ParameterError(f"inverse.families: {family!r} is not one of {sorted(inv['families'])}")
+    fam = inv["families"][family]
+    for p in fam["free"]:
+        if p not in PARAMS:
+            raise ParameterError(f"inverse.families.{family}.free: {p!r} is not one of {PARAMS}")
+    figures = inv["joint"] if name == "joint" else [name]
+    stated = {**onedof["defaults"]["params"], **inv.get("stated", {})}
+    if "plateau_speed" not in fam["free"]:
+        stated["plateau_speed"] = math.inf
+    runs: list[RunDef] = []
+    observations = []
+    fixed_everywhere: set[str] | None = None
+    for fig in figures:
+        fig_cfg = inv["figures"].get(fig)
+        if fig_cfg is None:
+            raise ParameterError(f"inverse.figures.{fig}: not defined (named in inverse.joint)")
+        for cid in fig_cfg["claims"]:
+            if cid not in claims:
+                raise ParameterError(f"inverse.figures.{fig}.claims: {cid!r} is not a claim id")
+            row = claims[cid]
+            run_name, metric, overrides = claim_run(row, onedof)
+            if name != "joint" and "scene" in fig_cfg:
+                overrides = {}  # one scene: every parameter free, its caption values the stated ones
+            names = [r.name for r in runs]
+            if run_name not in names:
+                runs.append(RunDef(run_name, overrides))
+                names.append(run_name)
+            sd, reason = _tolerance_sd(row)
+            observations.append(
+                Observation(
+                    claim=cid,
+                    run=names.index(run_name),
+                    metric=metric,
+                    value=float(row["value"]),
+                    sd=sd,
+                    unit=str(row.get("unit", "")),
+                    reason=reason,
+                    figure=fig,
+                    quote=str(row.get("quote", "")),
+                )
+            )
+        if name != "joint" and "scene" in fig_cfg:
+            stated.update(onedof["scenes"][fig_cfg["scene"]].get("params", {}))
+    for run in runs:
+        keys = {k for k in run.overrides if k in fam["free"]}
+        fixed_everywhere = keys if fixed_everywhere is None else fixed_everywhere & keys
+    free = tuple(p for p in PARAMS if p in fam["free"] and p not in (fixed_everywhere or set()))
+    defaults = onedof["defaults"]
+    title = "Sections 3-5 jointly" if name == "joint" else inv["figures"][name]["title"]
+    return Problem(
+        name=name,
+        title=title,
+        family=family,
+        variant=fam["variant"],
+        stated=stated,
+        free=free,
+        bounds=_bounds(inv),
+        runs=tuple(runs),
+        observations=tuple(observations),
+        run_settings={
+            "t_end": float(defaults["t_end"]),
+            "output_dt": float(defaults["output_dt"]),
+            "transient": float(defaults.get("transient", 0.0)),
+            "count_window": float(defaults.get("count_window", 18.0)),
+        },
+        nonnegative_plateau="nonnegative_plateau_friction" in (inv.get("constraints") or {}),
+    )
+
+
+def with_observations(problem: Problem, observations) -> Problem:
+    """The same problem fitted to other numbers (recovery checks, leave-one-out)."""
+    from dataclasses import replace
+
+    return replace(problem, observations=tuple(observations))
