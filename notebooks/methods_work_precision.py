@@ -24,7 +24,6 @@
 import glob
 import io
 import os
-import sys
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -32,22 +31,16 @@ import pandas as pd
 import xarray as xr
 from IPython.display import HTML, Image, Markdown, display
 
+from stickslip.methods_plots import failure_map_figure, work_precision_figure
 from stickslip.notebook import SUMMARY_STYLE
 from stickslip.plots import STATUS_COLOUR
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
-CODE = next(
-    d
-    for d in (os.path.join(HERE, ".."), os.getcwd(), os.path.join(os.getcwd(), ".."))
-    if os.path.isdir(os.path.join(d, "workflow", "scripts"))
-)
-ROOT = os.getcwd() if os.path.isdir(os.path.join(os.getcwd(), "results")) else os.path.abspath(CODE)
-sys.path.insert(0, os.path.join(CODE, "workflow", "scripts"))
-from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
+ROOT = os.getcwd() if os.path.isdir("results") else os.path.abspath(os.path.join(HERE, ".."))
 
 
 def show(fig):
-    """Show a figure here (methods_plots selects the Agg backend, so figures are not shown by themselves)."""
+    """Show a figure here, at a fixed size and resolution."""
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
     plt.close(fig)

@@ -1,12 +1,14 @@
 """Snakemake script: work-precision charts (one per scene) and the failure map figure."""
 
 import os
-import sys
 
-import xarray as xr
+import matplotlib
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
+matplotlib.use("Agg")
+
+import xarray as xr  # noqa: E402
+
+from stickslip.methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
 
 sm = snakemake  # noqa: F821
 for nc, png in zip(sm.input.work_precision, sm.output.work_precision):

@@ -4,11 +4,9 @@ from __future__ import annotations
 
 import json
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.colors
+import matplotlib.pyplot as plt
+import numpy as np
 
 FAILURE_COLORS = {
     "none": "#2ca02c",
