@@ -249,10 +249,12 @@ def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
         if sweep is None:
             raise ParameterError(f"{where}.dataset: sweep {m['sweep']!r} is not in onedof.sweeps")
         metric, _, tag = variable.rpartition("_at_")
-        values = [v for v in sweep["values"] if _value_tag(float(v)) == tag]
-        if metric not in METRICS or not values:
+        try:  # the paper's value is in the variable's name (0p9 = 0.9), whatever values a config sweeps
+            value = float(tag.replace("p", "."))
+        except ValueError:
+            value = None
+        if metric not in METRICS or value is None or _value_tag(value) != tag:
             raise ParameterError(f"{where}.variable: {variable!r} is not <metric>_at_<sweep value>")
-        value = float(values[0])
         param = sweep["parameter"]
         overrides = {param: value, **{k: f * value for k, f in (sweep.get("linked") or {}).items()}}
         base = dict(onedof["scenes"][sweep.get("scene", "fig02")].get("params", {}))
