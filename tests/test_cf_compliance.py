@@ -1,4 +1,6 @@
-"""Every netCDF dataset of the small configuration passes the CF-1.10 suite of the IOOS compliance-checker.
+"""One netCDF dataset of every kind the small configuration writes passes the CF-1.10 suite of the IOOS
+compliance-checker (a kind: the same set of variables; the checker is slow, quadratic in the variables, and
+datasets of one kind differ only in their numbers). Every dataset's units parse in UDUNITS-2.
 
 Runs offline (the checker and its UDUNITS-backed cf-units come from PyPI wheels). One waiver, stated here
 rather than hidden: the datasets' ``time`` is elapsed simulated time in ``s`` (the paper's runs have no
@@ -27,9 +29,20 @@ def run(tmp_path_factory):
     return shared_small_run(tmp_path_factory)
 
 
+def one_per_kind(run, paths):
+    """The first dataset of each distinct set of variable names."""
+    import xarray as xr
+
+    kinds = {}
+    for p in paths:
+        with xr.open_dataset(run / "results" / p, decode_times=False) as ds:
+            kinds.setdefault(tuple(sorted(map(str, ds.variables))), p)
+    return sorted(kinds.values())
+
+
 @pytest.mark.pipeline
-def test_every_dataset_passes_cf(run):
-    paths = datasets(run)
+def test_one_dataset_of_every_kind_passes_cf(run):
+    paths = one_per_kind(run, datasets(run))
     assert len(paths) >= 10, paths
     failures = {str(p): _relevant(cf_findings(run / "results" / p, min_weight=2)) for p in paths}
     failures = {p: f for p, f in failures.items() if f}
