@@ -141,3 +141,23 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
                     f"{r.claim} [{r.reading}] {before} -> {r.status} at the ensemble {reduce.__name__}"
                 )
     return flipped
+
+
+def data_differences_in_subprocess(root_a: Path, root_b: Path, paths) -> dict[str, list[str]]:
+    """``data_differences`` of many dataset pairs, computed in a fresh interpreter.
+
+    Opening hundreds of netCDF files in the long-lived test process (after the compliance checker has
+    opened them all through netCDF4 directly) crashed HDF5 once (a segfault in open_dataset); a fresh
+    process per comparison batch keeps one library state per run."""
+    import json
+
+    code = (
+        "import json, sys; sys.path.insert(0, sys.argv[1]); from pathlib import Path; "
+        "from project_run import data_differences; a, b = Path(sys.argv[2]), Path(sys.argv[3]); "
+        "print(json.dumps({p: data_differences(a / p, b / p) for p in json.loads(sys.argv[4])}))"
+    )
+    args = [sys.executable, "-c", code, str(ROOT / "tests"), str(root_a), str(root_b)]
+    proc = subprocess.run([*args, json.dumps([str(p) for p in paths])], capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise AssertionError(f"comparison failed ({proc.returncode}):\n{proc.stderr[-3000:]}")
+    return json.loads(proc.stdout)

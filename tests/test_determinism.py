@@ -5,7 +5,7 @@ import pytest
 
 from project_run import (
     copy_project,
-    data_differences,
+    data_differences_in_subprocess,
     datasets,
     run_snakemake,
     shared_small_run,
@@ -22,6 +22,6 @@ def test_two_clean_runs_are_bit_identical(tmp_path_factory):
     ]  # only the data: figures and notebooks are not compared
     run_snakemake(second, *targets, *small_config_args(second))  # targets first: --configfile takes a list
     assert datasets(second) == datasets(first)
-    diffs = {str(p): data_differences(first / "results" / p, second / "results" / p) for p in datasets(first)}
+    diffs = data_differences_in_subprocess(first / "results", second / "results", datasets(first))
     diffs = {p: d for p, d in diffs.items() if d}
     assert not diffs, diffs
