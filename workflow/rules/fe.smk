@@ -53,6 +53,7 @@ rule fe_studies:
         CONDA_ENV
     params:
         config=FE_CONFIG,
+        ensemble=ENSEMBLE,
     script:
         "../scripts/fe_studies.py"
 

@@ -2,6 +2,7 @@
 
 from pathlib import Path
 
+from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.comparison import increments_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.pipeline import (
@@ -18,18 +19,24 @@ log_to(snakemake)  # noqa: F821
 cfg = snakemake.params.config["fe"]  # noqa: F821
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
+ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (claimed: sweeps, stability, increments)
 for path in out.sweeps:
     name = Path(path).stem
-    ds = sweep_dataset(cfg, name, friction)
+    ds = ensemble_dataset(lambda c, name=name: sweep_dataset(c, name, friction), cfg, ensemble)
     method = {"integrator": "central_difference", "sweep": name}
     write_dataset(ds, path, scene=dict(cfg["sweeps"][name]), interpretation=INTERPRETATION, method=method)
     print(f"sweep {name} written", flush=True)
 for kind, build in (("convergence", convergence_dataset), ("stability", stability_dataset)):
-    ds = build(cfg, friction)
+    spec = ensemble if kind == "stability" else None  # the convergence study is a spread measurement itself
+    ds = ensemble_dataset(lambda c, build=build: build(c, friction), cfg, spec)
     write_dataset(ds, out[kind], scene=dict(cfg[kind]), interpretation=INTERPRETATION, method={"study": kind})
     print(f"{kind} written", flush=True)
 inc = cfg["increments"]
-ds = increments_dataset(
-    scene_mapping(cfg, inc["base"]), [tuple(m) for m in inc["meshes"]], inc["safety_factors"], inc["betas"]
+ds = ensemble_dataset(
+    lambda c: increments_dataset(
+        scene_mapping(c, inc["base"]), [tuple(m) for m in inc["meshes"]], inc["safety_factors"], inc["betas"]
+    ),
+    cfg,
+    ensemble,
 )
 write_dataset(ds, out.increments, scene=dict(inc), interpretation=INTERPRETATION, method={"kind": "eigen"})
