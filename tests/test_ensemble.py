@@ -53,7 +53,8 @@ def test_ensemble_dataset_stacks_every_metric_per_member_base_first():
         )
 
     ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None))
-    assert list(ds[MEMBER_DIM].values) == ["base", "perturbed-1", "perturbed-2", "step"]
+    assert list(ds[f"{MEMBER_DIM}_label"].values) == ["base", "perturbed-1", "perturbed-2", "step"]
+    assert list(ds[MEMBER_DIM].values) == [0, 1, 2, 3]
     assert ds.amplitude_ensemble.dims == (MEMBER_DIM,) and ds.curve_ensemble.dims == (MEMBER_DIM, "k")
     assert "series_ensemble" not in ds  # time series are the base run's only
     assert float(ds.amplitude_ensemble[0]) == float(ds.amplitude) == 2.0

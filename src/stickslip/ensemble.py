@@ -140,8 +140,16 @@ def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:
             "long_name": f"{var.attrs.get('long_name', name)}, per perturbation-ensemble member",
         }
         base[name + SUFFIX] = ((MEMBER_DIM, *var.dims), np.stack(values), attrs)
+    # An integer dimension coordinate and the labels as an auxiliary coordinate: CF wants dimension
+    # coordinates numeric and monotonic.
+    index_attrs = {"long_name": "perturbation-ensemble member index (0: the base run)", "units": "1"}
     label_attrs = {"long_name": "perturbation-ensemble member"}
-    base = base.assign_coords({MEMBER_DIM: (MEMBER_DIM, np.array(labels, dtype=object), label_attrs)})
+    base = base.assign_coords(
+        {
+            MEMBER_DIM: (MEMBER_DIM, np.arange(len(labels), dtype=np.int32), index_attrs),
+            f"{MEMBER_DIM}_label": (MEMBER_DIM, np.array(labels, dtype=object), label_attrs),
+        }
+    )
     return base
 
 
