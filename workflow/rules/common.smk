@@ -139,3 +139,12 @@ def dense_map_chunks(wildcards):
         map=wildcards.map,
         chunk=range(dense_map(config, wildcards.map).chunks),
     )
+
+
+def dense_map_subconfig(name):
+    """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
+    reading and method it runs (a job re-runs when any of them changes)."""
+    cfg = config["dense_map"]["maps"][name]
+    sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
+    section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
+    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}

@@ -6,15 +6,6 @@ DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["map
 DENSE_RESOURCES = config["dense_map"]["resources"]
 
 
-def dense_map_subconfig(name):
-    """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
-    reading and method it runs (a job re-runs when any of them changes)."""
-    cfg = config["dense_map"]["maps"][name]
-    sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
-    section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
-    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}
-
-
 rule dense_map_chunk:
     """Metrics of one contiguous slice of a map's grid (flattened C order)."""
     output:
