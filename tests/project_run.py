@@ -9,11 +9,14 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def copy_project(dest: Path) -> Path:
-    """A throw-away copy of everything the pipeline reads (no results), for isolated Snakemake runs."""
+    """A throw-away copy of everything the pipeline reads (no results), for isolated Snakemake runs.
+
+    Bytecode caches are copied too (with their sources' times, so they stay valid): the copy's jobs need not
+    recompile the package where PYTHONDONTWRITEBYTECODE is set."""
     for name in ("Snakefile", "workflow", "config", "notebooks", "src"):
         src = ROOT / name
         if src.is_dir():
-            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("*.egg-info"))
         else:
             shutil.copy2(src, dest / name)
     return dest
