@@ -40,15 +40,25 @@ REPORT_CAPTIONS = "results/report/captions.rst"
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
-def onedof_subconfig(reading=None, scene=None, method=None, methods=None):
-    """The part of the config a 1-DOF job reads, passed as its params: editing a figure list, a notebook or
-    another reading then does not re-run it (Snakemake re-runs jobs whose params change)."""
-    sub = {k: v for k, v in ONEDOF.items() if k not in ("figures", "sweep_figures")}
-    for key, name in (("readings", reading), ("scenes", scene), ("methods", method)):
-        if name is not None:
-            sub[key] = {name: ONEDOF[key][name]}
-    if methods is not None:
-        sub["methods"] = {m: ONEDOF["methods"][m] for m in methods}
+#: The scene the critical-speed continuation and the Eq. 6 curve run (stickslip.studies.onedof), and the
+#: default of a sweep without `scene:`.
+BASELINE_SCENE = "fig02"
+
+
+def _names(value):
+    return None if value is None else [value] if isinstance(value, str) else sorted(set(value))
+
+
+def onedof_subconfig(readings=None, scenes=None, methods=None, study=None):
+    """The part of the config a 1-DOF job reads, passed as its params: the defaults, the named readings,
+    scenes and methods (a name or a list; None: all) and at most one study section. Snakemake re-runs a job
+    whose params change, so an edit re-runs exactly the jobs that read the edited value."""
+    sub = {"defaults": ONEDOF["defaults"]}
+    for key, names in (("readings", readings), ("scenes", scenes), ("methods", methods)):
+        names = _names(names)
+        sub[key] = ONEDOF[key] if names is None else {n: ONEDOF[key][n] for n in names}
+    if study is not None:
+        sub[study] = ONEDOF[study]
     return {"onedof": sub}
 
 
@@ -76,10 +86,7 @@ def onedof_runs():
 
 def onedof_batch_subconfig(scene, runs):
     """The config one scene's batch job reads (only its readings and methods)."""
-    sub = onedof_subconfig(scene=scene)["onedof"]
-    sub["readings"] = {r: ONEDOF["readings"][r] for r in sorted({r for r, _ in runs})}
-    sub["methods"] = {m: ONEDOF["methods"][m] for m in sorted({m for _, m in runs})}
-    return {"onedof": sub}
+    return onedof_subconfig([r for r, _ in runs], scene, [m for _, m in runs])
 
 
 def figure_datasets(figure):

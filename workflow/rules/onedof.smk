@@ -75,6 +75,7 @@ rule friction_table:
             ONEDOF["friction_table"]["reading"],
             ONEDOF["friction_table"]["scene"],
             ONEDOF["friction_table"]["method"],
+            study="friction_table",
         ),
         ensemble=ENSEMBLE,
     script:

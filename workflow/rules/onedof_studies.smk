@@ -3,6 +3,7 @@
 SWEEPS = ONEDOF.get("sweeps", {})
 SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
 SWEEP_METHODS = sorted({sw.get("method", "exact") for sw in SWEEPS.values()})
+SWEEP_SCENES = sorted({sw.get("scene", BASELINE_SCENE) for sw in SWEEPS.values()})
 CRITICAL = ONEDOF.get("critical_speed")
 
 
@@ -18,7 +19,7 @@ rule eq6_curve:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(method="exact"),
+        config=onedof_subconfig("consistent_caption", BASELINE_SCENE, "exact", study="eq6"),
         ensemble=ENSEMBLE,
     script:
         "../scripts/eq6_curve.py"
@@ -37,7 +38,7 @@ rule onedof_sweeps:
     conda:
         CONDA_ENV
     params:
-        config=lambda wc: onedof_subconfig(wc.reading, methods=SWEEP_METHODS),
+        config=lambda wc: onedof_subconfig(wc.reading, SWEEP_SCENES, SWEEP_METHODS, study="sweeps"),
         ensemble=ENSEMBLE,
         ensemble_outputs=lambda wc: sorted(
             CLAIMED_DATASETS & {sweep_dataset(s, wc.reading, d) for s in SWEEPS for d in (False, True)}
@@ -83,10 +84,15 @@ rule critical_speed:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(method="exact"),
+        config=onedof_subconfig(
+            CRITICAL["readings"] if CRITICAL else [], BASELINE_SCENE, "exact", study="critical_speed"
+        ),
         readings=CRITICAL["readings"] if CRITICAL else [],
         ensemble=ENSEMBLE,
-        ensemble_outputs=sorted(CLAIMED_DATASETS),
+        ensemble_outputs=sorted(
+            CLAIMED_DATASETS
+            & {f"results/onedof/critical_speed/{r}.nc" for r in (CRITICAL["readings"] if CRITICAL else [])}
+        ),
     script:
         "../scripts/critical_speed.py"
 

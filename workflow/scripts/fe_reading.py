@@ -20,16 +20,20 @@ cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 spec = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821
-built = {}
+built, mappings = {}, {}
 for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
-    mapping = scene_mapping(cfg, name, reading)
-    ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mapping, spec)
+    mappings[name] = scene_mapping(cfg, name, reading)
+    ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mappings[name], spec)
     ds.attrs["fe_reading"] = reading
     print(f"{reading}/{name}: {ds.attrs['method']}, cpu={float(ds['cpu_time']):.2f} s", flush=True)
-    write_dataset(ds, path, scene=mapping, interpretation=INTERPRETATION, method={"fe_reading": reading})
     built[name] = ds
 cross = cross_scene_dataset(built, cfg["cross_scene"])
+# Written only once every scene is computed: a job killed while integrating leaves no dataset behind.
+for path in snakemake.output.scenes:  # noqa: F821
+    name = Path(path).stem
+    method = {"fe_reading": reading}
+    write_dataset(built[name], path, scene=mappings[name], interpretation=INTERPRETATION, method=method)
 write_dataset(
     cross,
     snakemake.output.cross,  # noqa: F821
