@@ -60,3 +60,35 @@ def test_initial_state_and_residual(m, c, k, g0, g1, x0, v0):
     residual = m * accel + c * vt + k * xt - (g0 + g1 * tau)
     scale = abs(g0) + abs(g1) + abs(k * xt) + abs(c * vt) + abs(m * accel) + 1
     assert abs(residual) < 1e-5 * scale
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    m=st.floats(0.1, 5),
+    c=st.floats(-2, 20),
+    k=st.floats(0.5, 20),
+    g0=st.floats(-5, 5),
+    g1=st.floats(-1, 1),
+    x0=st.floats(-2, 2),
+    v0=st.floats(-2, 2),
+    lo=st.floats(0.0, 3.0),
+    width=st.floats(0.01, 2.0),
+)
+def test_velocity_curvature_bound_holds_on_the_interval(m, c, k, g0, g1, x0, v0, lo, width):
+    """The bound the exact solver's event search relies on: |v''| never exceeds it on [lo, lo + width]."""
+    seg = LinearSegment(m=m, c=c, k=k, g0=g0, g1=g1, x0=x0, v0=v0)
+    hi = lo + width
+    tau = np.linspace(lo, hi, 201)
+    x, v = seg.state(tau)
+    # v'' = d/dtau of the ODE's acceleration (g1 - c v' - k v) / m, with v' the acceleration itself
+    accel = (g0 + g1 * tau - c * v - k * x) / m
+    curvature = (g1 - c * accel - k * v) / m
+    bound = float(seg.velocity_curvature_bound(lo, hi))
+    assert np.max(np.abs(curvature)) <= bound * (1 + 1e-9) + 1e-12
+
+
+def test_velocity_curvature_bound_is_zero_at_rest_and_tight_for_a_pure_oscillation():
+    at_rest = LinearSegment(m=1.0, c=3.0, k=1.0, g0=2.0, g1=0.0, x0=2.0, v0=0.0)  # overdamped, at equilibrium
+    assert float(at_rest.velocity_curvature_bound(0.0, 5.0)) == 0.0
+    harmonic = LinearSegment(m=1.0, c=0.0, k=4.0, g0=0.0, g1=0.0, x0=0.0, v0=1.0)  # v = cos 2t, |v''| <= 4
+    assert float(harmonic.velocity_curvature_bound(0.0, 10.0)) == pytest.approx(4.0, rel=1e-12)

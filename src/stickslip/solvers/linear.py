@@ -59,6 +59,33 @@ class LinearSegment:
         p0, p1 = self._p
         return p0 + p1 * tau + xh, p1 + vh
 
+    def velocity_curvature_bound(self, tau_lo, tau_hi):
+        """An upper bound of |d^2 v / d tau^2| on [tau_lo, tau_hi] (arrays allowed); inf at critical damping.
+
+        The particular part of v is linear in tau, so only the free part counts. Underdamped, it is
+        e^{alpha tau} (A cos w tau + B sin w tau), a phasor turning at alpha + i w: |v''| <= (k/m) R e^{alpha tau}
+        with R = hypot(A, B). Overdamped, it is c1 e^{l1 tau} + c2 e^{l2 tau}: |v''| <= sum l^2 |c| e^{l tau}.
+        The exact solver uses the bound to skip the root search at sampled minima of the slip velocity that
+        provably stay clear of zero."""
+        alpha, w2 = self._alpha, self._w2
+        h0, h1 = self._h
+        b = alpha * (h1 - alpha * h0) - w2 * h0  # v_h = e^{alpha tau} (h1 C(tau) + b S(tau))
+        lo, hi = np.asarray(tau_lo, dtype=float), np.asarray(tau_hi, dtype=float)
+
+        def envelope(rate):  # max of e^{rate tau} on [lo, hi]
+            return np.exp(rate * (lo if rate < 0.0 else hi))
+
+        with np.errstate(over="ignore", invalid="ignore"):
+            if w2 > 0.0:
+                w = np.sqrt(w2)
+                return (self.k / self.m) * np.hypot(h1, b / w) * envelope(alpha)
+            if w2 < 0.0:
+                w = np.sqrt(-w2)
+                c1, c2 = 0.5 * (h1 + b / w), 0.5 * (h1 - b / w)
+                l1, l2 = alpha + w, alpha - w
+                return l1 * l1 * abs(c1) * envelope(l1) + l2 * l2 * abs(c2) * envelope(l2)
+        return np.full(np.shape(lo), np.inf)
+
     def acceleration(self, tau):
         x, v = self.state(tau)
         return (self.g0 + self.g1 * np.asarray(tau, dtype=float) - self.c * v - self.k * x) / self.m
