@@ -124,11 +124,15 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
     readings = sorted({r["reading"] for r in table} - {""})
 
     def moved(reduce):
+        opened = {}  # every claim of a dataset reads the same moved copy: open each file once
+
         def open_dataset(path):
-            ds = read_dataset(workdir / path)
-            for name in [v for v in ds.data_vars if f"{v}_ensemble" in ds]:
-                ds[name] = (ds[name].dims, reduce(ds[f"{name}_ensemble"].values, axis=0))
-            return ds
+            if path not in opened:
+                ds = read_dataset(workdir / path)
+                for name in [v for v in ds.data_vars if f"{v}_ensemble" in ds]:
+                    ds[name] = (ds[name].dims, reduce(ds[f"{name}_ensemble"].values, axis=0))
+                opened[path] = ds
+            return opened[path]
 
         return open_dataset
 
