@@ -296,12 +296,29 @@ class ExactSwitchSolver:
             event = self._first_event(taus, gaps, gap, gap_rate, tol, seg.velocity_curvature_bound)
             if event is not None:
                 return finish(event)
-            if grid[-1] >= tau_max:
+            if grid[-1] >= tau_max or self._clear_to_the_end(seg, s, vb0, slope, vp, outside, grid[-1], tol):
                 return Segment(t0, t_limit, s, seg), False
             # overlap the next window by one sample so a minimum of the gap that falls exactly on a
             # window boundary is still seen with both neighbours (a graze is never skipped)
             lo_tau, lo_gap = grid[-2], values[-2]
             tau_k = grid[-1]
+
+    @staticmethod
+    def _clear_to_the_end(seg, s, vb0, slope, vp, outside, tau_from, tol) -> bool:
+        """True when the slip provably lasts to the end of the run: at constant belt speed the gap is a
+        constant plus s v_h, and the free velocity's envelope keeps it above ``tol`` for every tau >= tau_from
+        (the window scan would find no event; this returns the same segment without scanning)."""
+        if slope != 0.0:
+            return False
+        spread = seg.free_velocity_envelope(tau_from)
+        if not math.isfinite(spread):
+            return False
+        centre = s * (seg.particular_velocity - vb0)  # s v_r without the free motion
+        if outside:
+            return centre - vp - spread > tol
+        if not math.isfinite(vp):
+            return centre - spread > tol
+        return centre - spread > tol and vp - (centre + spread) > tol
 
     @staticmethod
     def _first_event(taus, gaps, gap, gap_rate, tol, curvature=None):

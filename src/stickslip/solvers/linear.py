@@ -86,6 +86,29 @@ class LinearSegment:
                 return l1 * l1 * abs(c1) * envelope(l1) + l2 * l2 * abs(c2) * envelope(l2)
         return np.full(np.shape(lo), np.inf)
 
+    def free_velocity_envelope(self, tau_from: float) -> float:
+        """A bound of |v - v_particular| for every tau >= tau_from (inf if the free motion can grow).
+
+        Underdamped |v_h| <= R e^{alpha tau}; overdamped |v_h| <= |c1| e^{l1 tau} + |c2| e^{l2 tau}; both
+        non-increasing when every rate is <= 0. The exact solver uses it to end a slip that provably never
+        returns to v_r = 0 without sampling the rest of the interval."""
+        alpha, w2 = self._alpha, self._w2
+        h0, h1 = self._h
+        b = alpha * (h1 - alpha * h0) - w2 * h0
+        if w2 > 0.0 and alpha <= 0.0:
+            return float(np.hypot(h1, b / np.sqrt(w2)) * np.exp(alpha * tau_from))
+        if w2 < 0.0:
+            w = np.sqrt(-w2)
+            if alpha + w <= 0.0:
+                c1, c2 = 0.5 * (h1 + b / w), 0.5 * (h1 - b / w)
+                return float(abs(c1) * np.exp((alpha + w) * tau_from) + abs(c2) * np.exp((alpha - w) * tau_from))
+        return np.inf
+
+    @property
+    def particular_velocity(self) -> float:
+        """dv/dtau of the particular solution p0 + p1 tau (constant)."""
+        return self._p[1]
+
     def acceleration(self, tau):
         x, v = self.state(tau)
         return (self.g0 + self.g1 * np.asarray(tau, dtype=float) - self.c * v - self.k * x) / self.m
