@@ -127,6 +127,7 @@ def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:
     """The base dataset plus ``<metric>_ensemble`` variables (member values, base first). A metric a member
     lacks (its run failed) is NaN there, so the spread becomes infinite and the claim indistinguishable."""
     base = datasets[0].copy()
+    stacked = {}  # assigned at once: each single assignment re-aligns the whole dataset
     for name in metric_names(base):
         var = base[name]
         values = []
@@ -139,7 +140,8 @@ def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:
             "units": var.attrs.get("units", "1"),
             "long_name": f"{var.attrs.get('long_name', name)}, per perturbation-ensemble member",
         }
-        base[name + SUFFIX] = ((MEMBER_DIM, *var.dims), np.stack(values), attrs)
+        stacked[name + SUFFIX] = ((MEMBER_DIM, *var.dims), np.stack(values), attrs)
+    base = base.assign(stacked)
     # An integer dimension coordinate and the labels as an auxiliary coordinate: CF wants dimension
     # coordinates numeric and monotonic.
     index_attrs = {"long_name": "perturbation-ensemble member index (0: the base run)", "units": "1"}

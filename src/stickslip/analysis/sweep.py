@@ -107,8 +107,12 @@ def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: d
     count = len(next(v for k, v in results.items() if k != "_meta"))
     index = np.arange(start, start + count)
     ds = xr.Dataset(coords={"point": ("point", index, {"long_name": "flattened grid index", "units": "1"})})
-    for name, metric in results["_meta"].items():
-        ds[name] = ("point", results[name], {"units": metric.units, "long_name": metric.long_name})
+    ds = ds.assign(
+        {
+            name: ("point", results[name], {"units": metric.units, "long_name": metric.long_name})
+            for name, metric in results["_meta"].items()
+        }
+    )
     ds.attrs["grid_size"] = n
     return ds
 

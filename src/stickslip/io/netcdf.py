@@ -117,16 +117,18 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
             "message": message,
         },
     )
+    scalars = {}  # assigned at once: each single assignment re-aligns the whole dataset
     for name, units, long_name in (
         ("rhs_evaluations", "1", "right-hand-side evaluations"),
         ("steps", "1", "accepted steps or segments"),
         ("events", "1", "switching events handled"),
         ("cpu_time", "s", "process CPU time of the solve"),
     ):
-        ds[f"solver_{name}"] = ((), float(getattr(stats, name)), {"units": units, "long_name": long_name})
+        attrs = {"units": units, "long_name": long_name}
+        scalars[f"solver_{name}"] = ((), float(getattr(stats, name)), attrs)
     for name, metric in (metrics or {}).items():
-        ds[name] = ((), float(metric.value), {"units": metric.units, "long_name": metric.long_name})
-    return ds
+        scalars[name] = ((), float(metric.value), {"units": metric.units, "long_name": metric.long_name})
+    return ds.assign(scalars)
 
 
 def software_versions() -> dict:

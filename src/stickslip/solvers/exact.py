@@ -324,10 +324,10 @@ class ExactSwitchSolver:
     def _first_event(taus, gaps, gap, gap_rate, tol, curvature=None):
         """Earliest return to v_r = 0 within the sampled window: a crossing or a grazing touch.
 
-        ``curvature(lo, hi)`` bounds |gap''| on [lo, hi]; a sampled minimum g_k with g_k - bound * (hi - lo)^2 / 2
-        > tol cannot hide a touch or a crossing (the true minimum is within (hi - lo) / 2 of a sample, so at
-        most bound * (hi - lo)^2 / 8 below it) and needs no root search: the result is the same, found
-        without evaluating the gap at every oscillation of a long slip."""
+        ``curvature(lo, hi)`` bounds |gap''| on [lo, hi]; a sampled minimum g_k with
+        g_k - bound * (hi - lo)^2 / 2 > tol cannot hide a touch or a crossing (the true minimum is within
+        (hi - lo) / 2 of a sample, so at most bound * (hi - lo)^2 / 8 below it) and needs no root search: the
+        result is the same, found without evaluating the gap at every oscillation of a long slip."""
         nonpos = np.nonzero(gaps[1:] <= 0.0)[0]
         first_cross = nonpos[0] + 1 if nonpos.size else len(gaps)
         # interior local minima of the gap before the first crossing could hide a touch or a double root

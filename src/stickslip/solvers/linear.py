@@ -63,8 +63,9 @@ class LinearSegment:
         """An upper bound of |d^2 v / d tau^2| on [tau_lo, tau_hi] (arrays allowed); inf at critical damping.
 
         The particular part of v is linear in tau, so only the free part counts. Underdamped, it is
-        e^{alpha tau} (A cos w tau + B sin w tau), a phasor turning at alpha + i w: |v''| <= (k/m) R e^{alpha tau}
-        with R = hypot(A, B). Overdamped, it is c1 e^{l1 tau} + c2 e^{l2 tau}: |v''| <= sum l^2 |c| e^{l tau}.
+        e^{alpha tau} (A cos w tau + B sin w tau), a phasor turning at alpha + i w:
+        |v''| <= (k/m) R e^{alpha tau} with R = hypot(A, B). Overdamped, it is c1 e^{l1 tau} + c2 e^{l2 tau}:
+        |v''| <= sum l^2 |c| e^{l tau}.
         The exact solver uses the bound to skip the root search at sampled minima of the slip velocity that
         provably stay clear of zero."""
         alpha, w2 = self._alpha, self._w2
@@ -101,7 +102,8 @@ class LinearSegment:
             w = np.sqrt(-w2)
             if alpha + w <= 0.0:
                 c1, c2 = 0.5 * (h1 + b / w), 0.5 * (h1 - b / w)
-                return float(abs(c1) * np.exp((alpha + w) * tau_from) + abs(c2) * np.exp((alpha - w) * tau_from))
+                decay1, decay2 = np.exp((alpha + w) * tau_from), np.exp((alpha - w) * tau_from)
+                return float(abs(c1) * decay1 + abs(c2) * decay2)
         return np.inf
 
     @property

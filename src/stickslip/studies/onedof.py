@@ -105,9 +105,10 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
         dims = (spec.parameter, "time")
         ds["displacement"] = (dims, series[:, 0], {"units": "mm", "long_name": "mass displacement x"})
         ds["velocity"] = (dims, series[:, 1], {"units": "mm s-1", "long_name": "mass velocity"})
+        at_values = {}  # assigned at once: each single assignment re-aligns the whole dataset
         for m in POINT_METRICS:
             for value in spec.values:
-                ds[f"{m}_at_{value:g}".replace(".", "p")] = (
+                at_values[f"{m}_at_{value:g}".replace(".", "p")] = (
                     (),
                     float(ds[m].sel({spec.parameter: value})),
                     {
@@ -115,6 +116,7 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
                         "long_name": f"{ds[m].attrs['long_name']} at {spec.parameter} = {value:g}",
                     },
                 )
+        ds = ds.assign(at_values)
     ds["failure_message"] = (
         spec.parameter,
         np.array(messages, dtype=object),
