@@ -1,6 +1,5 @@
 """The methods-study config validates against its schema and every listed setting builds a solver."""
 
-import importlib.util
 from pathlib import Path
 
 import jsonschema
@@ -8,11 +7,9 @@ import pytest
 import yaml
 
 from stickslip.solvers import make_solver
+from stickslip.studies import methods as methods_study
 
 ROOT = Path(__file__).resolve().parents[2]
-spec = importlib.util.spec_from_file_location("methods_common", ROOT / "workflow/scripts/methods_common.py")
-methods_common = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(methods_common)
 
 
 @pytest.mark.parametrize("path", ["config/methods.yaml", "config/test/methods.yaml"])
@@ -22,15 +19,15 @@ def test_config_validates_and_builds(path):
     jsonschema.validate(cfg, schema)
     study = cfg["methods_study"]
     for entries in (study["methods"], study["failure_map"]["methods"]):
-        for name, settings, label in methods_common.expand_methods(entries):
+        for name, settings, label in methods_study.expand_methods(entries):
             make_solver(name, **settings)
             assert label.startswith(name)
     for scene in study["scenes"]:
-        methods_common.scene_model(study, scene)
+        methods_study.scene_model(study, scene)
 
 
 def test_atol_follows_rtol():
-    runs = methods_common.expand_methods(
+    runs = methods_study.expand_methods(
         [{"solver": "sign_rk", "atol_per_rtol": 1e-3, "sweep": {"rtol": [1e-2, 1e-4]}}]
     )
     assert [s["atol"] for _, s, _ in runs] == pytest.approx([1e-5, 1e-7])

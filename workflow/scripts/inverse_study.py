@@ -1,14 +1,11 @@
 """Thin wiring of rule inverse_study: run the whole inverse study (issue 14) and write results/inverse/."""
 
 import glob
-import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "src"))
-
-from stickslip.inverse.outputs import write_study  # noqa: E402
-from stickslip.inverse.problem import load_claim_rows  # noqa: E402
-from stickslip.inverse.study import run_study  # noqa: E402
+from stickslip.inverse.outputs import write_study
+from stickslip.inverse.problem import load_claim_rows
+from stickslip.inverse.study import run_study
 
 config = dict(snakemake.params.config)  # noqa: F821 (injected by Snakemake)
 claims = load_claim_rows(sorted(glob.glob(config["inverse"]["claims_glob"])))

@@ -1,8 +1,18 @@
-"""The methods study's config entries: one entry with a ``sweep`` of settings is many methods."""
+"""The methods study (work-precision and failure map of the integration methods against the exact solver):
+config entries expanded to methods, one study run per scene, and the datasets the pipeline writes."""
 
 from __future__ import annotations
 
 import itertools
+import json
+
+import numpy as np
+import xarray as xr
+
+from ..analysis.errors import measure_run, segment_cycle_metrics
+from ..analysis.failure import FAILURE_KINDS, classify
+from ..model import BeltModel, BeltParams
+from ..solvers import make_solver
 
 
 def expand_methods(entries) -> list[tuple[str, dict, str]]:
@@ -21,3 +31,134 @@ def expand_methods(entries) -> list[tuple[str, dict, str]]:
             )
             out.append((entry["solver"], settings, label))
     return out
+
+
+INTERPRETATION = (
+    "consistent friction law F = -mu_s N (sgn(v_r) - sigma v_r); paper numbers used as given (units as_given)"
+)
+
+
+def scene_model(cfg, scene: str, **overrides) -> BeltModel:
+    sc = cfg["scenes"][scene]
+    params = BeltParams.from_mapping({**cfg["base_params"], **sc.get("params", {}), **overrides})
+    return BeltModel.build(params, sc["variant"])
+
+
+def run_scene(cfg, model, t_end, methods, paper=True):
+    """Reference + every method; returns (records, reference, ref_cycle, paper_record)."""
+    n = int(round(t_end * cfg["samples_per_second"])) + 1
+    t_eval = np.linspace(0.0, t_end, n)
+    exact = make_solver("exact")
+    ref = exact.solve(model, t_end, t_eval)
+    if not ref.ok:
+        raise RuntimeError(f"exact reference failed: {ref.stats.message}")
+    ref_cycle = segment_cycle_metrics(exact.segments(model, t_end))
+    kw = dict(cfg["budget"], **cfg["timing"])
+    paper_rec = None
+    if paper:
+        pm = cfg["paper_method"]
+        _, paper_rec = measure_run(
+            make_solver(pm["solver"], **pm.get("settings", {})), model, t_end, t_eval, ref, ref_cycle, **kw
+        )
+    records = []
+    for name, settings, label in methods:
+        traj, rec = measure_run(make_solver(name, **settings), model, t_end, t_eval, ref, ref_cycle, **kw)
+        rec.update(classify(traj, ref, model.params))
+        rec.update(solver=name, settings=json.dumps(settings, sort_keys=True), label=label)
+        records.append(rec)
+    return records, ref, ref_cycle, paper_rec
+
+
+NUMERIC = {
+    "state": ("1", "max-norm state error relative to the reference's peak-to-peak x and v"),
+    "state_rms": ("1", "rms state error relative to the reference's peak-to-peak x and v"),
+    "x_max": ("mm", "max displacement error"),
+    "v_max": ("mm s-1", "max velocity error"),
+    "period": ("s", "limit-cycle period (spacing of maxima of x)"),
+    "amplitude": ("mm", "limit-cycle peak-to-peak displacement"),
+    "period_error": ("1", "relative period error vs exact"),
+    "amplitude_error": ("1", "relative peak-to-peak amplitude error vs exact"),
+    "cpu_time": ("s", "CPU time, min over repeats"),
+    "cpu_time_median": ("s", "CPU time, median over repeats"),
+    "repeats": ("1", "number of timed repeats"),
+    "rhs_evaluations": ("1", "right-hand-side (force) evaluations"),
+    "steps": ("1", "accepted steps (segments for the exact solver)"),
+    "creep_mm": ("mm", "drift of x - X_b over the first reference stick"),
+    "sign_changes_in_stick": ("1", "mean sign changes of v_r per reference stick interval"),
+    "stick_time_ratio": ("1", "time with |v_r| <= 1% V_b over the reference stick time"),
+}
+FLAGS = ("diverged", "step_collapse", "missed_stick", "chatter", "creep")
+STRINGS = {
+    "solver": "method name",
+    "settings": "method settings (JSON)",
+    "label": "method and settings",
+    "status": "run status: ok | failed (failed runs are data, not results)",
+    "message": "failure message",
+    "failure_kind": f"most severe failure, one of {FAILURE_KINDS}",
+}
+
+
+def records_dataset(records, dim="run") -> xr.Dataset:
+    ds = xr.Dataset()
+    for key, (units, long_name) in NUMERIC.items():
+        ds[key] = (dim, np.array([float(r[key]) for r in records]), {"units": units, "long_name": long_name})
+    for key in FLAGS:
+        ds[key] = (
+            dim,
+            np.array([int(bool(r[key])) for r in records], dtype=np.int8),
+            {"units": "1", "long_name": f"failure flag: {key}", "flag_values": "0 1"},
+        )
+    for key, long_name in STRINGS.items():
+        ds[key] = (dim, np.array([str(r[key]) for r in records], dtype=object), {"long_name": long_name})
+    return ds
+
+
+def work_precision_dataset(cfg: dict, scene: str) -> tuple[xr.Dataset, BeltModel]:
+    """Every method of ``methods_study.methods`` on one scene, against the exact reference, with each run's
+    CPU time relative to the paper's method on the same machine and run."""
+    model = scene_model(cfg, scene)
+    records, _, ref_cycle, paper = run_scene(cfg, model, cfg["t_end"], expand_methods(cfg["methods"]))
+    ds = records_dataset(records)
+    ds["cpu_ratio_to_paper"] = (
+        "run",
+        ds["cpu_time"].values / paper["cpu_time"],
+        {"units": "1", "long_name": "CPU time / paper's method (sign+RK45 rtol 1e-3), same run"},
+    )
+    ds.attrs.update(
+        title=f"Work-precision of integration methods, scene {scene}",
+        paper_method_cpu_time=paper["cpu_time"],
+        paper_method_rhs_evaluations=paper["rhs_evaluations"],
+        reference_period=ref_cycle["period"],
+        reference_amplitude=ref_cycle["amplitude"],
+        t_end=cfg["t_end"],
+    )
+    return ds, model
+
+
+def failure_map_dataset(cfg: dict) -> xr.Dataset:
+    """``methods_study.failure_map``: every method's run and failure flags over one swept parameter."""
+    fm = cfg["failure_map"]
+    methods = expand_methods(fm["methods"])
+    rows = []
+    for value in fm["values"]:
+        model = scene_model(cfg, fm["scene"], **{fm["parameter"]: value})
+        records, *_ = run_scene(cfg, model, fm["t_end"], methods, paper=False)
+        rows.append(records_dataset(records))
+    ds = xr.concat(rows, dim="parameter")
+    ds = ds.assign_coords(
+        parameter=(
+            "parameter",
+            np.array(fm["values"], dtype=float),
+            {
+                "long_name": f"swept parameter {fm['parameter']}",
+                "units": "s mm-1" if fm["parameter"] == "sigma" else "1",
+            },
+        ),
+        run=("run", np.arange(len(methods))),
+    )
+    labels = np.array([m[2] for m in methods], dtype=object)
+    ds["label"] = ("run", labels, {"long_name": "method and settings"})
+    ds.attrs.update(
+        title="Failure map of integration methods", swept_parameter=fm["parameter"], t_end=fm["t_end"]
+    )
+    return ds
