@@ -115,7 +115,13 @@ def count_peaks(t: np.ndarray, x: np.ndarray, t_from: float, t_to: float) -> int
     return int(np.sum((t[peaks] >= t_from) & (t[peaks] <= t_to)))
 
 
-def limit_cycle_metrics(traj: Trajectory, transient: float, count_window: float = 18.0) -> dict[str, Metric]:
+#: The window of the paper's peak count ("four peaks in 18 seconds", Section 3): the default of every study.
+PAPER_COUNT_WINDOW = 18.0
+
+
+def limit_cycle_metrics(
+    traj: Trajectory, transient: float, count_window: float = PAPER_COUNT_WINDOW
+) -> dict[str, Metric]:
     """The metric table of one run; the steady window is t >= ``transient``."""
     t, x, v = traj.t, traj.x, traj.v
     nan = float("nan")

@@ -18,7 +18,7 @@ import xarray as xr
 
 from ..model.equations import BeltModel
 from ..model.params import BeltParams, ParameterError
-from .metrics import limit_cycle_metrics
+from .metrics import PAPER_COUNT_WINDOW, limit_cycle_metrics
 
 
 @dataclass(frozen=True)
@@ -74,7 +74,7 @@ def run_points(
     t_end: float,
     t_eval: np.ndarray,
     transient: float,
-    count_window: float = 18.0,
+    count_window: float = PAPER_COUNT_WINDOW,
     progress: Callable[[int, int], None] | None = None,
     on_trajectory: Callable[[int, object], None] | None = None,
 ) -> dict[str, np.ndarray]:

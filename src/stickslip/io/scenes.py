@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..model.equations import BeltModel
 from ..model.friction import VARIANTS
 from ..model.params import BeltParams, ParameterError
@@ -125,7 +126,7 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
         t_end=float(run["t_end"]),
         output_dt=float(run["output_dt"]),
         transient=float(run.get("transient", 0.0)),
-        count_window=float(run.get("count_window", 18.0)),
+        count_window=float(run.get("count_window", PAPER_COUNT_WINDOW)),
         solver_settings=dict(method_cfg),
         figure=str(scene_cfg.get("figure", "")),
         description=str(scene_cfg.get("description", "")),
