@@ -15,13 +15,13 @@ import time
 import numpy as np
 import yaml
 
-from stickslip.fe.comparison import continuum_scene_from_mapping
 from stickslip.fe.continuum import integrate_continuum
 from stickslip.fe.explicit import integrate
 from stickslip.fe.metrics import trajectory_metrics
 from stickslip.fe.params import FrictionTable
-from stickslip.fe.pipeline import deep_merge, run_scene, scene_mapping
 from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.studies.fe import deep_merge, run_scene, scene_mapping
+from stickslip.studies.fe_comparison import continuum_scene_from_mapping
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 0.05
 cfg = yaml.safe_load(open("config/fe.yaml"))["fe"]

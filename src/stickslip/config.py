@@ -97,8 +97,8 @@ def _check_dense_maps(config: dict) -> None:
 def check_fe_config(fe_cfg: dict, producible: list[str], studies=("convergence", "stability")) -> None:
     """Resolve every FE scene and reference, so a bad value fails before any job starts, with the config
     key named (the schema cannot see NaN, unknown scene names or a missing table)."""
-    from .fe.pipeline import scene_mapping
     from .fe.scene import SceneParams
+    from .studies.fe import scene_mapping
 
     for name in fe_cfg["scenes"]:
         mapping = scene_mapping(fe_cfg, name)

@@ -3,14 +3,14 @@ paper's 100 x 1 mesh: same mapping, same window, node-1 metrics within 5 %."""
 
 import pytest
 
-from stickslip.fe.comparison import (
+from stickslip.fe.params import FrictionTable
+from stickslip.studies.fe_comparison import (
     agrees,
     beam_metrics,
     comparison_rows,
     continuum_dataset,
     relative_difference,
 )
-from stickslip.fe.params import FrictionTable
 
 FIG17 = FrictionTable.paper_fig17()
 

@@ -7,8 +7,8 @@ import pytest
 matplotlib.use("Agg")
 
 from stickslip.fe.params import FrictionTable  # noqa: E402
-from stickslip.fe.pipeline import result_dataset, scene_dataset  # noqa: E402
 from stickslip.fe_plots import fe_readings_figure, fe_scene_figure  # noqa: E402
+from stickslip.studies.fe import result_dataset, scene_dataset  # noqa: E402
 
 MAPPING = {
     "beam": {"n_elements": 6},
@@ -51,7 +51,7 @@ def test_scene_and_readings_figures_draw(ds):
 
 
 def test_result_dataset_windows_default_to_start_and_end(ds):
-    from stickslip.fe.pipeline import run_scene
+    from stickslip.studies.fe import run_scene
 
     r, m, _ = run_scene(MAPPING, FrictionTable.paper_fig17())
     d = result_dataset(r, m)

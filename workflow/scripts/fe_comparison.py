@@ -3,9 +3,14 @@
 import csv
 from pathlib import Path
 
-from stickslip.fe.comparison import beam_metrics, comparison_dataset, comparison_rows, continuum_dataset
 from stickslip.fe.params import FrictionTable
-from stickslip.fe.pipeline import INTERPRETATION, comparison_mapping, effective_fe_config
+from stickslip.studies.fe import INTERPRETATION, comparison_mapping, effective_fe_config
+from stickslip.studies.fe_comparison import (
+    beam_metrics,
+    comparison_dataset,
+    comparison_rows,
+    continuum_dataset,
+)
 
 from fe_common import log_to, write_dataset
 

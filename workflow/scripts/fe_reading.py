@@ -5,7 +5,7 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
-from stickslip.fe.pipeline import (
+from stickslip.studies.fe import (
     INTERPRETATION,
     cross_scene_dataset,
     effective_fe_config,

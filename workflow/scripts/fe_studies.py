@@ -3,15 +3,15 @@
 from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
-from stickslip.fe.comparison import increments_dataset
 from stickslip.fe.params import FrictionTable
-from stickslip.fe.pipeline import (
+from stickslip.studies.fe import (
     INTERPRETATION,
     convergence_dataset,
     scene_mapping,
     stability_dataset,
     sweep_dataset,
 )
+from stickslip.studies.fe_comparison import increments_dataset
 
 from fe_common import log_to, write_dataset
 

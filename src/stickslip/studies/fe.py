@@ -14,13 +14,13 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from .beam import cantilever_axial_frequencies, cantilever_bending_frequencies, modal_analysis
-from .explicit import integrate, static_state
-from .metrics import trajectory_metrics, trend_sign, window_envelope
-from .params import FrictionTable
-from .reduced import contact_boundary, craig_bampton
-from .scene import SceneParams, build_scene
-from .stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
+from ..fe.beam import cantilever_axial_frequencies, cantilever_bending_frequencies, modal_analysis
+from ..fe.explicit import integrate, static_state
+from ..fe.metrics import trajectory_metrics, trend_sign, window_envelope
+from ..fe.params import FrictionTable
+from ..fe.reduced import contact_boundary, craig_bampton
+from ..fe.scene import SceneParams, build_scene
+from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 
 INTERPRETATION = (
     "2-D frame elements (axial bar + Euler-Bernoulli bending stiffness, Rayleigh rotary inertia rho*I), "
@@ -123,7 +123,7 @@ def _natural_frequencies(scene) -> np.ndarray:
     s = scene.system
     if scene.law.method == "fixed_normal" or not np.any(s.c_n):
         return modal_analysis(s.K, s.M, 40)[0]
-    from .stability import _null
+    from ..fe.stability import _null
 
     Z = _null(s.c_n)
     return modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, 40)[0]
@@ -414,7 +414,7 @@ def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
             for q in CONVERGENCE_QUANTITIES:
                 vals[q][i, j] = m[q]
             dt[i, j] = r.dt
-        from .beam import assemble_beam, classify_modes
+        from ..fe.beam import assemble_beam, classify_modes
 
         bp = scene.params.beam
         b = assemble_beam(bp)

@@ -13,10 +13,10 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from .metrics import trajectory_metrics
-from .params import FrictionTable
-from .pipeline import INTERPRETATION, result_dataset, run_scene
-from .scene import SceneParams
+from ..fe.metrics import trajectory_metrics
+from ..fe.params import FrictionTable
+from ..fe.scene import SceneParams
+from .fe import INTERPRETATION, result_dataset, run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -41,7 +41,7 @@ def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: 
     """The continuum scene of a beam scene mapping (same geometry reading, damping and contact law)."""
     from dataclasses import replace
 
-    from .continuum import build_continuum
+    from ..fe.continuum import build_continuum
 
     p = _params(mapping)
     contact = p.contact
@@ -67,7 +67,7 @@ def continuum_dataset(
     mapping: Mapping, friction: FrictionTable, *, nx: int = 100, ny: int = 1, name: str = ""
 ) -> xr.Dataset:
     """Pure build: run the continuum strip for the scene mapping; same variables as the beam's dataset."""
-    from .continuum import integrate_continuum
+    from ..fe.continuum import integrate_continuum
 
     p = _params(mapping)
     scene = continuum_scene_from_mapping(mapping, friction, nx, ny)
@@ -201,7 +201,7 @@ def increments_dataset(
 ) -> xr.Dataset:
     """Increment count of the continuum strip for ``duration`` (the paper's banner: 3 688 747 at 0.65 s)
     for each mesh x safety factor x stiffness damping, from its global stable step."""
-    from .continuum import build_continuum, increments, stable_time_step
+    from ..fe.continuum import build_continuum, increments, stable_time_step
 
     p = _params(beam_mapping)
     fr = FrictionTable.paper_fig17()
