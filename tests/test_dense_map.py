@@ -199,3 +199,43 @@ def test_bad_chunk_size_fails_at_parse_time(project, tmp_path, override, match):
     assert proc.returncode != 0
     assert match in proc.stdout + proc.stderr
     assert "dense_map_chunk" not in proc.stdout  # no job was planned
+
+
+def with_law(config, law, method="switch"):
+    maps = config["dense_map"]["maps"]
+    maps["with_law"] = {**maps["speed_damping"], "method": method, "law": law}
+    return config
+
+
+def test_a_map_with_the_readings_own_affine_law_matches_the_exact_map():
+    """Issue 13 item 6: a map accepts any friction law. Given the reading's own affine law (mu_s 0.5,
+    sigma 0.5), the switch-solver map must reproduce the exact solver's map of the same grid."""
+    config = with_law(small_config(), {"kind": "affine", "mu_s": 0.5, "sigma": 0.5})
+    exact, switch = dmc.dense_map(config, "speed_damping"), dmc.dense_map(config, "with_law")
+    assert switch.law is not None and switch.spec.solver_settings["solver"] == "switch"
+    a, b = build(exact, exact.points), build(switch, switch.points)
+    assert int(a.solver_ok.sum()) == a.solver_ok.size and int(b.solver_ok.sum()) == b.solver_ok.size
+    for name in ("amplitude_peak_to_peak", "stick_fraction", "stick_time", "slip_time", "frequency_peaks"):
+        np.testing.assert_allclose(b[name].values, a[name].values, rtol=1e-6, atol=1e-9, err_msg=name)
+
+
+def test_a_nonlinear_law_changes_the_map():
+    config = with_law(small_config(), {"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.3, "v_s": 0.5})
+    affine = build(dmc.dense_map(config, "speed_damping"), 12)
+    stribeck = build(dmc.dense_map(config, "with_law"), 12)
+    assert not np.allclose(stribeck.amplitude_peak_to_peak.values, affine.amplitude_peak_to_peak.values)
+
+
+@pytest.mark.parametrize(
+    "law, method, words",
+    [
+        ({"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.3, "v_s": 0.5}, "exact", ["with_law.method", "switch"]),
+        ({"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.3}, "switch", ["with_law.law.v_s"]),
+        ({"kind": "coulomb", "mu_s": 0.3, "mu_k": 0.5}, "switch", ["with_law.law.mu_k"]),
+    ],
+)
+def test_a_bad_law_or_method_is_rejected_naming_its_key(law, method, words):
+    with pytest.raises(ParameterError) as info:
+        dmc.dense_map(with_law(small_config(), law, method), "with_law")
+    for word in words:
+        assert word in str(info.value), str(info.value)

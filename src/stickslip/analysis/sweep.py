@@ -17,6 +17,7 @@ import numpy as np
 import xarray as xr
 
 from ..model.equations import BeltModel
+from ..model.laws import LawModel
 from ..model.params import BeltParams, ParameterError
 from .metrics import PAPER_COUNT_WINDOW, limit_cycle_metrics
 
@@ -77,12 +78,16 @@ def run_points(
     count_window: float = PAPER_COUNT_WINDOW,
     progress: Callable[[int, int], None] | None = None,
     on_trajectory: Callable[[int, object], None] | None = None,
+    law=None,
 ) -> dict[str, np.ndarray]:
     """Metric arrays (one entry per point); a failed run gives NaN metrics and solver_ok = 0.
-    ``on_trajectory(i, traj)`` sees every run's trajectory (time series, messages) without solving twice."""
+    ``on_trajectory(i, traj)`` sees every run's trajectory (time series, messages) without solving twice.
+    With a friction ``law`` (model/laws.py) each point is a ``LawModel`` (the law replaces the reading's
+    friction; the solver must accept any law, i.e. the switch solver) instead of a ``BeltModel``."""
     rows = []
     for i, point in enumerate(points):
-        model = BeltModel.build(base.with_(**point), variant)
+        params = base.with_(**point)
+        model = BeltModel.build(params, variant) if law is None else LawModel(params, law)
         traj = solver.solve(model, t_end, t_eval)
         if on_trajectory is not None:
             on_trajectory(i, traj)

@@ -10,6 +10,7 @@ import dataclasses
 from dataclasses import dataclass
 
 from ..analysis.sweep import SweepAxis, axes_from_config, check_axes, check_chunking, grid_size, run_points
+from ..model.laws import FrictionLaw, law_from_config
 from ..model.params import ParameterError
 from .scenes import RunSpec, run_spec
 
@@ -27,6 +28,8 @@ class DenseMap:
     chunks: int
     title: str
     plot: tuple
+    law: FrictionLaw | None = None
+    """Any friction law replacing the reading's (solved with the switch solver); None: the reading's law."""
 
     @property
     def points(self) -> int:
@@ -45,6 +48,7 @@ class DenseMap:
             s.transient,
             s.count_window,
             progress=progress,
+            law=self.law,
         )
 
     def method_attrs(self) -> dict:
@@ -65,6 +69,8 @@ class DenseMap:
         for axis in self.axes:  # a swept parameter's base value is not used: point to the coordinate
             for name in (axis.name, *axis.linked):
                 base[name] = f"swept (coordinate {axis.name})"
+        if self.law is not None:
+            base["friction_law"] = repr(self.law)
         return {
             **base,
             "map": self.name,
@@ -84,6 +90,14 @@ def dense_map(config: dict, name: str) -> DenseMap:
         spec = run_spec(config, cfg["scene"], cfg["reading"], cfg["method"])
     except ParameterError as exc:
         raise ParameterError(f"{key} (scene/reading/method): {exc}") from None
+    law = None
+    if "law" in cfg:
+        law = law_from_config(cfg["law"], key=f"{key}.law")
+        if spec.solver_settings.get("solver") != "switch":
+            raise ParameterError(
+                f"{key}.method: a map with a friction law needs a method whose solver is 'switch' (the exact "
+                f"solver handles the readings' affine laws only), got {cfg['method']!r}"
+            )
     overrides = {k: float(cfg[k]) for k in RUN_OVERRIDES if k in cfg}
     spec = dataclasses.replace(spec, **overrides)
     axes = axes_from_config(cfg.get("axes"), f"{key}.axes")
@@ -100,4 +114,5 @@ def dense_map(config: dict, name: str) -> DenseMap:
         chunks=chunks,
         title=str(cfg.get("title", name)),
         plot=plot,
+        law=law,
     )
