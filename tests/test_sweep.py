@@ -88,3 +88,47 @@ def test_bad_axes_and_chunks_name_the_problem():
         SweepAxis("mass", ())
     with pytest.raises(ParameterError, match="chunk"):
         chunk_points(AXES, 4, 5)
+
+
+def _sweep_config(law=None, method="switch"):
+    from glob import glob
+
+    from stickslip.config import load_config
+
+    from project_run import ROOT
+
+    config = load_config(sorted(glob(str(ROOT / "config" / "*.yaml"))) + [ROOT / "config/test/onedof.yaml"])
+    config["onedof"]["methods"]["switch"] = {"solver": "switch"}
+    sweep = {**config["onedof"]["sweeps"]["fig12"], "method": method, "law": law}
+    config["onedof"]["sweeps"]["with_law"] = sweep
+    return config
+
+
+def test_a_sweep_with_the_readings_own_affine_law_matches_the_exact_sweep():
+    """Issue 13 item 6: sweeps accept any friction law; given the reading's own affine law the switch-solver
+    sweep reproduces the exact solver's (paper values and their time series)."""
+    from stickslip.studies.onedof import sweep_from_config
+
+    config = _sweep_config({"kind": "affine", "mu_s": 0.5, "sigma": 0.5})
+    exact = sweep_from_config(config, sweep="fig12", reading="consistent_caption", dense=False)
+    switch = sweep_from_config(config, sweep="with_law", reading="consistent_caption", dense=False)
+    assert "affine" in switch.attrs["friction_law"].lower()
+    assert int(exact.solver_ok.sum()) == exact.solver_ok.size == int(switch.solver_ok.sum())
+    for name in ("amplitude_peak_to_peak", "stick_fraction", "frequency_peaks"):
+        np.testing.assert_allclose(switch[name].values, exact[name].values, rtol=1e-6, err_msg=name)
+    np.testing.assert_allclose(switch.displacement.values, exact.displacement.values, atol=1e-7)
+
+
+def test_a_sweep_law_needs_the_switch_method_and_valid_parameters():
+    from stickslip.io.scenes import sweep_spec
+
+    with pytest.raises(ParameterError, match="onedof.sweeps.with_law.method"):
+        sweep_spec(
+            _sweep_config({"kind": "coulomb", "mu_s": 0.5, "mu_k": 0.3}, "exact"),
+            "with_law",
+            "consistent_caption",
+        )
+    with pytest.raises(ParameterError, match="onedof.sweeps.with_law.law.v_s"):
+        sweep_spec(
+            _sweep_config({"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.3}), "with_law", "consistent_caption"
+        )

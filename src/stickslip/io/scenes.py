@@ -164,6 +164,8 @@ class SweepSpec:
     long_name: str
     base: RunSpec
     coord_scale: str = "linear"
+    law: object = None
+    """Any friction law (model/laws.py) replacing the reading's (switch solver); None: the reading's."""
 
     def axis(self, dense: bool):
         from ..analysis.sweep import SweepAxis
@@ -215,6 +217,16 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
             base.params.with_(**{param: float(v)}, **{k: f * float(v) for k, f in linked.items()})
         except ParameterError as exc:
             raise ParameterError(f"{where}.values: {exc}") from None
+    law = None
+    if "law" in cfg:
+        from ..model.laws import law_from_config
+
+        law = law_from_config(cfg["law"], key=f"{where}.law")
+        if base.solver_settings.get("solver") != "switch":
+            raise ParameterError(
+                f"{where}.method: a sweep with a friction law needs a method whose solver is 'switch' (the "
+                f"exact solver handles the readings' affine laws only), got {cfg.get('method', 'exact')!r}"
+            )
     return SweepSpec(
         name=sweep,
         figure=str(cfg.get("figure", "")),
@@ -226,6 +238,7 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
         long_name=str(cfg.get("long_name", param)),
         base=base,
         coord_scale=scale,
+        law=law,
     )
 
 

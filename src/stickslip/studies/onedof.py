@@ -86,6 +86,7 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
         base.count_window,
         progress=progress,
         on_trajectory=keep,
+        law=spec.law,
     )
     ds = merge_chunks([axis], [chunk_dataset([axis], n, 0, results)])
     for m in SWEEP_METRICS:  # every run failed: keep the variables, all NaN
@@ -127,6 +128,7 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
             "sweep_parameter": spec.parameter,
             "sweep_figure": spec.figure,
             "sweep_kind": "dense" if dense else "paper values",
+            "friction_law": repr(spec.law) if spec.law is not None else "the reading's",
             "failed_runs": int(np.sum(ds.solver_ok.values != 1)),
         }
     )
