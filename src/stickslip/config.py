@@ -1,9 +1,9 @@
 """The pipeline's configuration, checked in one place before any job runs.
 
 ``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
-the JSON schemas (types, ranges, unknown keys; defaults filled in), then every check a schema cannot make
-(NaN, unknown scene/reading/method names, solver settings, references between sections, the friction
-table), each error naming the offending config key.
+the typed models of ``stickslip.config_models`` (types, physical ranges, finite numbers, unknown keys), then
+what a model alone cannot see (names that refer to other sections, solver settings, every scene's model,
+the friction table), each error naming the offending config key.
 """
 
 from __future__ import annotations
@@ -14,9 +14,6 @@ from pathlib import Path
 import yaml
 
 from .model.params import ParameterError
-
-#: Schema files under workflow/schemas/, one per config concern.
-SCHEMAS = ("config", "dense_map", "fe", "methods")
 
 
 class ConfigError(ValueError):
@@ -41,14 +38,28 @@ def load_config(paths: Iterable[str | Path]) -> dict:
     return config
 
 
-def validate_config(config: dict, schema_dir: str | Path, *, producible: Iterable[str] = ()) -> None:
-    """Raise ConfigError naming the key of the first bad value; fills schema defaults into ``config``.
+def typed_errors(exc) -> str:
+    """A pydantic ValidationError as one line per problem: ``dotted.key: message (got value)``."""
+    lines = []
+    for err in exc.errors():
+        key = ".".join(str(part) for part in err["loc"])
+        got = "" if err["type"] == "missing" else f" (got {err['input']!r})"
+        lines.append(f"{key}: {err['msg']}{got}")
+    return "\n".join(lines)
+
+
+def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
+    """Raise ConfigError naming the key of the first bad value (all typed errors at once).
 
     ``producible`` lists files a rule writes (a friction table need not exist before the run)."""
-    from snakemake.utils import validate
+    from pydantic import ValidationError
 
-    for name in SCHEMAS:
-        validate(config, str(Path(schema_dir) / f"{name}.schema.yaml"))
+    from .config_models import PipelineConfig
+
+    try:
+        PipelineConfig.model_validate(config)
+    except ValidationError as exc:
+        raise ConfigError(typed_errors(exc)) from None
     try:
         _check_ensemble(config)
         _check_onedof(config)
