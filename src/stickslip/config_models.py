@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 #: Where the generated JSON schema lives (for editors, `snakemake --lint` readers and documentation).
 SCHEMA_PATH = Path("workflow/schemas/config.schema.json")
@@ -28,6 +28,13 @@ Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
 Names = Annotated[list[str], Field(min_length=1)]
+
+
+def check_refs(refs, known: dict, section: str) -> None:
+    """Every (key, name) in ``refs`` names an entry of ``known`` (the mapping at ``section``)."""
+    for key, name in refs:
+        if name not in known:
+            raise ValueError(f"{key}: {name!r} is not an entry of {section} ({sorted(known)})")
 
 
 class Section(BaseModel):
@@ -86,6 +93,15 @@ class Method(Open):
     solver: str
     rtol: Positive | None = None
     atol: Positive | None = None
+
+    @field_validator("solver")
+    @classmethod
+    def registered(cls, name: str) -> str:
+        from .solvers import METHODS  # the registry is the one list of solver names
+
+        if name not in METHODS:
+            raise ValueError(f"{name!r} is not one of {sorted(METHODS)}")
+        return name
 
 
 class Scene(RunLengths):
@@ -167,6 +183,32 @@ class Onedof(Section):
     critical_speed: CriticalSpeed | None = None
     friction_table: FrictionTable
     figures: dict[str, Figure]
+
+    @model_validator(mode="after")
+    def names_refer_to_entries(self):
+        """Figures, sweeps, sweep figures, the friction table and the critical speed name existing
+        scenes, readings, methods and sweeps."""
+        scenes, readings, methods = [], [], []
+        for name, fig in self.figures.items():
+            scenes.append((f"onedof.figures.{name}.scene", fig.scene))
+            readings += [(f"onedof.figures.{name}.readings", r) for r in fig.readings]
+            methods += [(f"onedof.figures.{name}.methods", m) for m in fig.methods]
+        for name, sweep in self.sweeps.items():
+            scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or "fig02"))
+            methods.append((f"onedof.sweeps.{name}.method", sweep.method or "exact"))
+        table = self.friction_table
+        scenes.append(("onedof.friction_table.scene", table.scene))
+        readings.append(("onedof.friction_table.reading", table.reading))
+        methods.append(("onedof.friction_table.method", table.method))
+        if self.critical_speed is not None:
+            readings += [("onedof.critical_speed.readings", r) for r in self.critical_speed.readings]
+        for name, fig in self.sweep_figures.items():
+            check_refs([(f"onedof.sweep_figures.{name}.sweep", fig.sweep)], self.sweeps, "onedof.sweeps")
+            readings += [(f"onedof.sweep_figures.{name}.readings", r) for r in fig.readings]
+        check_refs(scenes, self.scenes, "onedof.scenes")
+        check_refs(readings, self.readings, "onedof.readings")
+        check_refs(methods, self.methods, "onedof.methods")
+        return self
 
 
 class Claims(Open):
@@ -405,6 +447,14 @@ class Fe(Section):
     comparison: Comparison
     increments: Increments
 
+    @model_validator(mode="after")
+    def bases_are_scenes(self):
+        refs = [(f"fe.sweeps.{n}.base", sw.base) for n, sw in self.sweeps.items()]
+        refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
+        refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
+        check_refs(refs, self.scenes, "fe.scenes")
+        return self
+
 
 # -- the whole config ----------------------------------------------------------------------------------------
 
@@ -422,6 +472,23 @@ class PipelineConfig(Section):
     fe_long_runs: bool = Field(False, description="run the paper's windows (fe.long_runs), not short ones")
     inverse: dict[str, Any] = Field(description="typed by stickslip.inverse.problem")
     validation: dict[str, Any] = Field(description="typed by stickslip.validation.setup")
+
+    @model_validator(mode="after")
+    def sections_refer_to_each_other(self):
+        """Claims readings, dense maps and notebooks name existing 1-DOF entries."""
+        onedof = self.onedof
+        check_refs([("claims.readings", r) for r in self.claims.readings], onedof.readings, "onedof.readings")
+        for name, m in self.dense_map.maps.items():
+            key = f"dense_map.maps.{name}"
+            check_refs([(f"{key}.scene", m.scene)], onedof.scenes, "onedof.scenes")
+            check_refs([(f"{key}.reading", m.reading)], onedof.readings, "onedof.readings")
+            check_refs([(f"{key}.method", m.method)], onedof.methods, "onedof.methods")
+        for name, nb in self.notebooks.items():
+            key = f"notebooks.{name}"
+            check_refs([(f"{key}.figures", f) for f in nb.figures or []], onedof.figures, "onedof.figures")
+            figs = [(f"{key}.sweep_figures", f) for f in nb.sweep_figures or []]
+            check_refs(figs, onedof.sweep_figures, "onedof.sweep_figures")
+        return self
 
 
 def json_schema() -> dict:
