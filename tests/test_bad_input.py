@@ -112,7 +112,7 @@ def base_config() -> dict:
 def test_broken_config_is_rejected_naming_its_key(case):
     override, words = CASES[case]
     with pytest.raises(Exception) as info:  # noqa: B017 - schema errors are Snakemake's WorkflowError
-        validate_config(merge(base_config(), override), ROOT / "workflow" / "schemas", producible=PRODUCIBLE)
+        validate_config(merge(base_config(), override), producible=PRODUCIBLE)
     text = str(info.value)
     print(f"\n[{case}] {override}\n{text[-600:]}")
     for word in words:
@@ -120,7 +120,7 @@ def test_broken_config_is_rejected_naming_its_key(case):
 
 
 def test_the_repository_config_passes():
-    validate_config(base_config(), ROOT / "workflow" / "schemas", producible=PRODUCIBLE)
+    validate_config(base_config(), producible=PRODUCIBLE)
 
 
 @pytest.mark.parametrize("case", sorted(BAD_CLAIMS))

@@ -1,9 +1,9 @@
 """The pipeline's configuration, checked in one place before any job runs.
 
 ``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
-the JSON schemas (types, ranges, unknown keys; defaults filled in), then every check a schema cannot make
-(NaN, unknown scene/reading/method names, solver settings, references between sections, the friction
-table), each error naming the offending config key.
+the typed models of ``stickslip.config_models`` (types, physical ranges, finite numbers, unknown keys), then
+what a model alone cannot see (names that refer to other sections, solver settings, every scene's model,
+the friction table), each error naming the offending config key.
 """
 
 from __future__ import annotations
@@ -14,9 +14,6 @@ from pathlib import Path
 import yaml
 
 from .model.params import ParameterError
-
-#: Schema files under workflow/schemas/, one per config concern.
-SCHEMAS = ("config", "dense_map", "fe", "methods")
 
 
 class ConfigError(ValueError):
@@ -41,14 +38,32 @@ def load_config(paths: Iterable[str | Path]) -> dict:
     return config
 
 
-def validate_config(config: dict, schema_dir: str | Path, *, producible: Iterable[str] = ()) -> None:
-    """Raise ConfigError naming the key of the first bad value; fills schema defaults into ``config``.
+def typed_errors(exc) -> str:
+    """A pydantic ValidationError as one line per problem: ``dotted.key: message (got value)``."""
+    lines = []
+    for err in exc.errors():
+        key = ".".join(str(part) for part in err["loc"])
+        if err["type"] == "value_error":  # a validator's own message (cross-references name their key)
+            text = str(err["ctx"]["error"])
+            lines.append(text if key and text.startswith(key) else f"{key}: {text}")
+            continue
+        got = "" if err["type"] == "missing" else f" (got {err['input']!r})"
+        lines.append(f"{key}: {err['msg']}{got}")
+    return "\n".join(lines)
+
+
+def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
+    """Raise ConfigError naming the key of the first bad value (all typed errors at once).
 
     ``producible`` lists files a rule writes (a friction table need not exist before the run)."""
-    from snakemake.utils import validate
+    from pydantic import ValidationError
 
-    for name in SCHEMAS:
-        validate(config, str(Path(schema_dir) / f"{name}.schema.yaml"))
+    from .config_models import PipelineConfig
+
+    try:
+        PipelineConfig.model_validate(config)
+    except ValidationError as exc:
+        raise ConfigError(typed_errors(exc)) from None
     try:
         _check_ensemble(config)
         _check_onedof(config)
@@ -73,10 +88,6 @@ def _check_onedof(config: dict) -> None:
     from .io.scenes import figure_runs, run_spec, sweep_spec
 
     onedof = config["onedof"]
-    for reading in config["claims"]["readings"]:
-        if reading not in onedof["readings"]:
-            known = sorted(onedof["readings"])
-            raise ConfigError(f"claims.readings: {reading!r} is not a reading of onedof.readings ({known})")
     for figure in onedof["figures"]:
         for scene, reading, method in figure_runs(config, figure):
             run_spec(config, scene, reading, method)
@@ -94,9 +105,9 @@ def _check_dense_maps(config: dict) -> None:
         dense_map(config, name)
 
 
-def check_fe_config(fe_cfg: dict, producible: list[str], studies=("convergence", "stability")) -> None:
-    """Resolve every FE scene and reference, so a bad value fails before any job starts, with the config
-    key named (the schema cannot see NaN, unknown scene names or a missing table)."""
+def check_fe_config(fe_cfg: dict, producible: list[str]) -> None:
+    """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
+    before any job starts with the config key named (references between entries: config_models)."""
     from .fe.scene import SceneParams
     from .studies.fe import scene_mapping
 
@@ -108,12 +119,6 @@ def check_fe_config(fe_cfg: dict, producible: list[str], studies=("convergence",
             )
         except (ValueError, TypeError, KeyError) as exc:
             raise ConfigError(f"fe.scenes.{name}: {exc}") from None
-    refs = [(f"fe.sweeps.{n}.base", sw["base"]) for n, sw in fe_cfg["sweeps"].items()]
-    refs += [(f"fe.{study}.base", fe_cfg[study]["base"]) for study in studies]
-    refs += [(f"fe.cross_scene.{n}", s) for n, pair in fe_cfg["cross_scene"].items() for s in pair[:2]]
-    for key, scene in refs:
-        if scene not in fe_cfg["scenes"]:
-            raise ConfigError(f"{key}: {scene!r} is not a scene of fe.scenes ({sorted(fe_cfg['scenes'])})")
     table = fe_cfg["friction_table"]
     if table not in producible and not Path(table).is_file():
         raise ConfigError(

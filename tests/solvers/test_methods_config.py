@@ -1,23 +1,26 @@
-"""The methods-study config validates against its schema and every listed setting builds a solver."""
+"""The methods-study config validates against its typed model and every listed setting builds a solver."""
 
 from pathlib import Path
 
-import jsonschema
 import pytest
-import yaml
+from pydantic import ValidationError
 
+from stickslip.config import load_config
+from stickslip.config_models import MethodsStudy
 from stickslip.solvers import make_solver
 from stickslip.studies import methods as methods_study
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.mark.parametrize("path", ["config/methods.yaml", "config/test/methods.yaml"])
-def test_config_validates_and_builds(path):
-    cfg = yaml.safe_load((ROOT / path).read_text())
-    schema = yaml.safe_load((ROOT / "workflow/schemas/methods.schema.yaml").read_text())
-    jsonschema.validate(cfg, schema)
-    study = cfg["methods_study"]
+def study_config(*overrides):
+    return load_config([ROOT / "config/methods.yaml", *(ROOT / p for p in overrides)])["methods_study"]
+
+
+@pytest.mark.parametrize("overrides", [(), ("config/test/methods.yaml",)], ids=["default", "small"])
+def test_config_validates_and_builds(overrides):
+    study = study_config(*overrides)
+    MethodsStudy.model_validate(study)
     for entries in (study["methods"], study["failure_map"]["methods"]):
         for name, settings, label in methods_study.expand_methods(entries):
             make_solver(name, **settings)
@@ -33,9 +36,9 @@ def test_atol_follows_rtol():
     assert [s["atol"] for _, s, _ in runs] == pytest.approx([1e-5, 1e-7])
 
 
-def test_schema_rejects_unknown_solver():
-    schema = yaml.safe_load((ROOT / "workflow/schemas/methods.schema.yaml").read_text())
-    cfg = yaml.safe_load((ROOT / "config/test/methods.yaml").read_text())
-    cfg["methods_study"]["methods"].append({"solver": "euler"})
-    with pytest.raises(jsonschema.ValidationError):
-        jsonschema.validate(cfg, schema)
+def test_model_rejects_unknown_solver_naming_the_entry():
+    study = study_config("config/test/methods.yaml")
+    study["methods"].append({"solver": "euler"})
+    with pytest.raises(ValidationError) as info:
+        MethodsStudy.model_validate(study)
+    assert ("methods", len(study["methods"]) - 1, "solver") in [e["loc"] for e in info.value.errors()]

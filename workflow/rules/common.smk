@@ -17,7 +17,7 @@ from stickslip.io.dense_map import dense_map  # noqa: E402
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 
 # Every config value is checked here, before any job starts; an error names its key (stickslip.config).
-validate_config(config, Path(workflow.basedir) / "workflow" / "schemas", producible=PRODUCIBLE)
+validate_config(config, producible=PRODUCIBLE)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")

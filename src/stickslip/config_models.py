@@ -1,0 +1,509 @@
+"""The pipeline's configuration as typed models (pydantic v2): one model per config section.
+
+Every mapping forbids unknown keys, every number must be finite (no NaN or inf), bounds are physical
+(masses, stiffnesses, durations > 0), and an error names the full key (``onedof.scenes.fig02.params.mass``).
+``stickslip.config.validate_config`` validates the merged Snakemake config against ``PipelineConfig`` and
+then resolves what a model alone cannot (names that refer to other sections, solver settings, files).
+The JSON schema in ``workflow/schemas/config.schema.json`` is generated from these models
+(``python -m stickslip.config_models --write``; a test checks it is current), never written by hand.
+
+The ``inverse`` and ``validation`` sections are typed by their own setup classes
+(``stickslip.inverse.problem``, ``stickslip.validation.setup``) and pass through here as mappings.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+
+#: Where the generated JSON schema lives (for editors, `snakemake --lint` readers and documentation).
+SCHEMA_PATH = Path("workflow/schemas/config.schema.json")
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
+Names = Annotated[list[str], Field(min_length=1)]
+
+
+def check_refs(refs, known: dict, section: str) -> None:
+    """Every (key, name) in ``refs`` names an entry of ``known`` (the mapping at ``section``)."""
+    for key, name in refs:
+        if name not in known:
+            raise ValueError(f"{key}: {name!r} is not an entry of {section} ({sorted(known)})")
+
+
+class Section(BaseModel):
+    """A config mapping: unknown keys are errors (a misspelt key must not be silently ignored)."""
+
+    model_config = ConfigDict(extra="forbid", strict=True)  # no "5" for 5: YAML types are meant
+
+
+class Open(BaseModel):
+    """A mapping whose extra keys are settings checked elsewhere (solver settings: ``check_settings``)."""
+
+    model_config = ConfigDict(extra="allow", strict=True)
+
+
+# -- 1-DOF mass on belt --------------------------------------------------------------------------------------
+
+
+class BeltParameters(Section):
+    mass: Positive | None = Field(None, description="M [kg]")
+    stiffness: Positive | None = Field(None, description="K [N/mm]")
+    damping: NonNegative | None = Field(None, description="C [N s/mm]")
+    mu_s: Positive | None = Field(None, description="static friction coefficient")
+    sigma: NonNegative | None = Field(None, description="friction slope [s/mm]")
+    normal_force: Positive | None = Field(None, description="N [N]")
+    x0: Finite | None = Field(None, description="initial displacement [mm]")
+    v0: Finite | None = Field(None, description="initial velocity [mm/s]")
+    belt_velocity: NonNegative | None = Field(None, description="V_b [mm/s]")
+    belt_deceleration: NonNegative | None = Field(None, description="[mm/s^2]")
+    units: Literal["as_given", "si"] | None = None
+    plateau_speed: Positive | None = Field(None, description="friction plateau speed v_p [mm/s]")
+
+
+class RunLengths(Section):
+    t_end: Positive | None = Field(None, description="simulated time [s]")
+    output_dt: Positive | None = Field(None, description="output interval [s]")
+    transient: NonNegative | None = Field(None, description="discarded start [s]")
+    count_window: Positive | None = Field(None, description="peak-count window [s] (paper: 18 s)")
+
+
+class OnedofDefaults(RunLengths):
+    params: BeltParameters
+    t_end: Positive
+    output_dt: Positive
+
+
+class Reading(Section):
+    variant: Literal["eq3_printed", "eq4_printed", "consistent"]
+    sigma: NonNegative | None = None
+    units: Literal["as_given", "si"] | None = None
+    plateau_speed: Positive | None = None
+    output_dt: Positive | None = None
+    description: str | None = None
+
+
+class Method(Open):
+    solver: str
+    rtol: Positive | None = None
+    atol: Positive | None = None
+
+    @field_validator("solver")
+    @classmethod
+    def registered(cls, name: str) -> str:
+        from .solvers import METHODS  # the registry is the one list of solver names
+
+        if name not in METHODS:
+            raise ValueError(f"{name!r} is not one of {sorted(METHODS)}")
+        return name
+
+
+class Scene(RunLengths):
+    figure: str | None = None
+    description: str | None = None
+    params: BeltParameters | None = None
+
+
+class Eq6(Section):
+    f_max: Positive
+    points: Annotated[int, Field(ge=10)]
+    force: str | None = None
+
+
+class Law(Open):
+    """Any friction law of ``model/laws.py``: ``kind`` and its parameters (checked by ``law_from_config``)."""
+
+    kind: Literal["affine", "coulomb", "stribeck", "rational", "tabulated"]
+
+
+class DenseRange(Section):
+    start: Finite
+    stop: Finite
+    num: Annotated[int, Field(ge=2)]
+    scale: Literal["linear", "log"] | None = None
+
+
+class Sweep(Section):
+    figure: str | None = None
+    scene: str | None = None
+    method: str | None = None
+    parameter: str
+    units: str | None = None
+    long_name: str | None = None
+    values: Annotated[list[Finite], Field(min_length=1)]
+    linked: dict[str, Finite] | None = None
+    law: Law | None = None
+    dense: DenseRange
+
+
+class SweepFigure(Open):
+    title: str | None = None
+    sweep: str
+    readings: Names
+
+
+class CriticalSpeed(Section):
+    readings: Names
+    start: Positive
+    stop: Positive
+    num: Annotated[int, Field(ge=3)]
+    t_end: Positive
+    transient: NonNegative
+
+
+class FrictionTable(Section):
+    scene: str
+    reading: str
+    method: str
+    bins: Annotated[int, Field(ge=2)]
+
+
+class Figure(Open):
+    title: str | None = None
+    scene: str
+    plot: Literal["timeseries", "phase", "velocity"] | None = None
+    readings: Names
+    methods: Names
+
+
+class Onedof(Section):
+    defaults: OnedofDefaults
+    readings: Annotated[dict[str, Reading], Field(min_length=1)]
+    methods: Annotated[dict[str, Method], Field(min_length=1)]
+    scenes: Annotated[dict[str, Scene], Field(min_length=1)]
+    eq6: Eq6 | None = None
+    sweeps: dict[str, Sweep] = {}
+    sweep_figures: dict[str, SweepFigure] = {}
+    critical_speed: CriticalSpeed | None = None
+    friction_table: FrictionTable
+    figures: dict[str, Figure]
+
+    @model_validator(mode="after")
+    def names_refer_to_entries(self):
+        """Figures, sweeps, sweep figures, the friction table and the critical speed name existing
+        scenes, readings, methods and sweeps."""
+        scenes, readings, methods = [], [], []
+        for name, fig in self.figures.items():
+            scenes.append((f"onedof.figures.{name}.scene", fig.scene))
+            readings += [(f"onedof.figures.{name}.readings", r) for r in fig.readings]
+            methods += [(f"onedof.figures.{name}.methods", m) for m in fig.methods]
+        for name, sweep in self.sweeps.items():
+            scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or "fig02"))
+            methods.append((f"onedof.sweeps.{name}.method", sweep.method or "exact"))
+        table = self.friction_table
+        scenes.append(("onedof.friction_table.scene", table.scene))
+        readings.append(("onedof.friction_table.reading", table.reading))
+        methods.append(("onedof.friction_table.method", table.method))
+        if self.critical_speed is not None:
+            readings += [("onedof.critical_speed.readings", r) for r in self.critical_speed.readings]
+        for name, fig in self.sweep_figures.items():
+            check_refs([(f"onedof.sweep_figures.{name}.sweep", fig.sweep)], self.sweeps, "onedof.sweeps")
+            readings += [(f"onedof.sweep_figures.{name}.readings", r) for r in fig.readings]
+        check_refs(scenes, self.scenes, "onedof.scenes")
+        check_refs(readings, self.readings, "onedof.readings")
+        check_refs(methods, self.methods, "onedof.methods")
+        return self
+
+
+class Claims(Open):
+    readings: Names
+    check: bool | None = None
+
+
+class Ensemble(Section):
+    relative: Annotated[float, Field(gt=0, le=1e-3, allow_inf_nan=False)] | None = None
+    seeds: Annotated[list[int], Field(min_length=1)] | None = None
+    step_factor: Annotated[float, Field(gt=0, lt=1, allow_inf_nan=False)] | None = None
+    step_keys: list[str] | None = None
+    blas_threads: Annotated[int, Field(ge=1)] | None = None
+
+
+class Notebook(Open):
+    figures: list[str] | None = None
+    sweep_figures: list[str] | None = None
+    inputs: list[str] | None = Field(
+        None, description="{reading}: each claims reading; {critical_reading}: each critical-speed reading"
+    )
+
+
+# -- dense maps ----------------------------------------------------------------------------------------------
+
+
+class MapAxis(Section):
+    name: str
+    values: Annotated[list[Finite], Field(min_length=1)] | None = None
+    start: Finite | None = None
+    stop: Finite | None = None
+    num: Annotated[int, Field(ge=1)] | None = None
+    spacing: Literal["linear", "log"] | None = None
+    units: str | None = None
+    long_name: str | None = None
+    linked: dict[str, Finite] | None = None
+
+
+class DenseMapEntry(RunLengths):
+    title: str | None = None
+    scene: str
+    reading: str
+    method: str
+    law: Law | None = None
+    chunk_size: Annotated[int, Field(ge=1)] | None = None
+    plot: Names | None = None
+    axes: Annotated[list[MapAxis], Field(min_length=1)]
+
+
+class Resources(Open):
+    mem_mb: Annotated[int, Field(ge=1)] | None = None
+    runtime: Annotated[int, Field(ge=1)] | None = None
+    cpus_per_task: Annotated[int, Field(ge=1)] | None = None
+
+
+class DenseMapResources(Section):
+    dense_map_chunk: Resources | None = None
+    dense_map_merge: Resources | None = None
+    dense_map_figure: Resources | None = None
+
+
+class DenseMaps(Section):
+    chunk_size: Annotated[int, Field(ge=1)]
+    max_chunks: Annotated[int, Field(ge=1)] | None = None
+    maps: Annotated[dict[str, DenseMapEntry], Field(min_length=1)]
+    resources: DenseMapResources
+
+
+# -- methods study -------------------------------------------------------------------------------------------
+
+
+class StudyMethod(Section):
+    solver: Literal["exact", "sign_rk", "smooth", "karnopp", "moreau"]
+    settings: dict[str, Any] | None = None
+    sweep: dict[str, Annotated[list[Any], Field(min_length=1)]] | None = None
+    atol_per_rtol: Positive | None = None
+
+
+class Budget(Section):
+    max_rhs: Annotated[int, Field(ge=1)]
+    max_cpu: Positive
+
+
+class Timing(Section):
+    min_repeats: Annotated[int, Field(ge=1)]
+    max_repeats: Annotated[int, Field(ge=1)]
+    min_total_cpu: NonNegative
+
+
+class StudyScene(Section):
+    variant: Literal["consistent", "eq3_printed", "eq4_printed"]
+    params: BeltParameters | None = None
+
+
+class FailureMap(Section):
+    scene: str
+    parameter: str
+    values: Annotated[list[Finite], Field(min_length=1)]
+    t_end: Positive
+    methods: Annotated[list[StudyMethod], Field(min_length=1)]
+
+
+class MethodsStudy(Section):
+    base_params: BeltParameters
+    t_end: Positive
+    samples_per_second: Positive
+    budget: Budget
+    timing: Timing
+    paper_method: StudyMethod
+    scenes: Annotated[dict[str, StudyScene], Field(min_length=1)]
+    methods: Annotated[list[StudyMethod], Field(min_length=1)]
+    failure_map: FailureMap
+
+
+# -- beam on disc (FE) ---------------------------------------------------------------------------------------
+
+
+class Beam(Section):
+    length: Positive | None = Field(None, description="mm")
+    thickness: Positive | None = Field(None, description="mm")
+    width: Positive | None = Field(None, description="mm")
+    youngs_modulus_gpa: Positive | None = None
+    density_kg_m3: Positive | None = None
+    poisson_ratio: Annotated[float, Field(ge=0, lt=0.5, allow_inf_nan=False)] | None = None
+    gravity_m_s2: NonNegative | None = None
+    n_elements: Annotated[int, Field(ge=1)] | None = None
+    mass: Literal["lumped", "consistent"] | None = None
+    rotary_inertia: bool | None = None
+
+
+class Disc(Section):
+    diameter: Positive | None = Field(None, description="mm")
+    speed_rev_per_min: NonNegative | None = None
+    surface_speed_mm_s: NonNegative | None = None
+    direction: Literal["clockwise", "counterclockwise"] | None = None
+
+
+Angle = Annotated[float, Field(ge=-80, le=80, allow_inf_nan=False)]
+
+
+class Contact(Section):
+    method: Literal["kinematic", "penalty", "fixed_normal"] | None = None
+    angle_deg: Angle | None = None
+    penalty_stiffness: Positive | None = Field(None, description="N mm-1")
+    surface_offset: bool | None = None
+    output_node: Literal["free_end_lower", "free_end_axis", "free_end_upper"] | None = None
+
+
+class FeSolver(Section):
+    duration: Positive | None = Field(None, description="s")
+    safety_factor: Fraction | None = None
+    output_interval: Positive | None = Field(None, description="s")
+    initial_state: Literal["static", "drop", "undeformed"] | None = None
+    mass_damping: NonNegative | None = Field(None, description="s-1")
+    stiffness_damping: NonNegative | None = Field(None, description="s")
+
+
+class FeOutput(Section):
+    bin_width: Positive | None = Field(None, description="s")
+    windows: list[Annotated[list[NonNegative], Field(min_length=2, max_length=2)]] | None = None
+
+
+class FeScene(Section):
+    description: str | None = None
+    beam: Beam | None = None
+    disc: Disc | None = None
+    contact: Contact | None = None
+    solver: FeSolver | None = None
+    output: FeOutput | None = None
+
+
+class FeSweep(Section):
+    base: str
+    parameter: Annotated[str, Field(pattern=r"^(beam|disc|contact|solver)\.[a-z_]+$")]
+    coord: str
+    units: str | None = None
+    long_name: str | None = None
+    values: Annotated[list[Finite], Field(min_length=2)]
+    duration: Positive | None = None
+
+
+class Convergence(Section):
+    base: str
+    n_elements: Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2)]
+    safety_factors: Annotated[list[Fraction], Field(min_length=1)] | None = None
+    duration: Positive
+
+
+class Stability(Section):
+    base: str
+    angles: Annotated[list[Angle], Field(min_length=1)]
+    slopes: Annotated[list[Finite], Field(min_length=1)]
+    crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
+    crosscheck_e_folds: Positive | None = None
+    crosscheck_max_duration: Positive | None = None
+
+
+class Reduced(Section):
+    n_bending_modes: Annotated[int, Field(ge=0)] | None = None
+    n_axial_modes: Annotated[int, Field(ge=0)] | None = None
+    safety_factor: Fraction | None = None
+
+
+Mesh = Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2, max_length=2)]
+
+
+class Comparison(Section):
+    mesh: Mesh
+    duration: Positive
+    notes: dict[str, str] | None = None
+
+
+class Increments(Section):
+    base: str
+    meshes: Annotated[list[Mesh], Field(min_length=1)]
+    safety_factors: Annotated[list[Fraction], Field(min_length=1)]
+    betas: Annotated[list[NonNegative], Field(min_length=1)]
+
+
+class LongRuns(Section):
+    scene_duration: Positive
+    comparison_duration: Positive
+
+
+class Fe(Section):
+    friction_table: str = Field(description="CSV relative_velocity_mm_per_s,mu from rule friction_table")
+    long_runs: LongRuns
+    defaults: FeScene
+    readings: Annotated[dict[str, FeScene], Field(min_length=1)]
+    scenes: Annotated[dict[str, FeScene], Field(min_length=1)]
+    sweeps: dict[str, FeSweep]
+    convergence: Convergence
+    stability: Stability
+    cross_scene: dict[str, Annotated[list[str], Field(min_length=3, max_length=3)]]
+    reduced: Reduced
+    comparison: Comparison
+    increments: Increments
+
+    @model_validator(mode="after")
+    def bases_are_scenes(self):
+        refs = [(f"fe.sweeps.{n}.base", sw.base) for n, sw in self.sweeps.items()]
+        refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
+        refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
+        check_refs(refs, self.scenes, "fe.scenes")
+        return self
+
+
+# -- the whole config ----------------------------------------------------------------------------------------
+
+
+class PipelineConfig(Section):
+    """The merged config Snakemake builds from config/*.yaml (and any --configfile)."""
+
+    onedof: Onedof
+    claims: Claims
+    notebooks: dict[str, Notebook]
+    ensemble: Ensemble | None = None
+    dense_map: DenseMaps
+    methods_study: MethodsStudy
+    fe: Fe
+    fe_long_runs: bool = Field(False, description="run the paper's windows (fe.long_runs), not short ones")
+    inverse: dict[str, Any] = Field(description="typed by stickslip.inverse.problem")
+    validation: dict[str, Any] = Field(description="typed by stickslip.validation.setup")
+
+    @model_validator(mode="after")
+    def sections_refer_to_each_other(self):
+        """Claims readings, dense maps and notebooks name existing 1-DOF entries."""
+        onedof = self.onedof
+        check_refs([("claims.readings", r) for r in self.claims.readings], onedof.readings, "onedof.readings")
+        for name, m in self.dense_map.maps.items():
+            key = f"dense_map.maps.{name}"
+            check_refs([(f"{key}.scene", m.scene)], onedof.scenes, "onedof.scenes")
+            check_refs([(f"{key}.reading", m.reading)], onedof.readings, "onedof.readings")
+            check_refs([(f"{key}.method", m.method)], onedof.methods, "onedof.methods")
+        for name, nb in self.notebooks.items():
+            key = f"notebooks.{name}"
+            check_refs([(f"{key}.figures", f) for f in nb.figures or []], onedof.figures, "onedof.figures")
+            figs = [(f"{key}.sweep_figures", f) for f in nb.sweep_figures or []]
+            check_refs(figs, onedof.sweep_figures, "onedof.sweep_figures")
+        return self
+
+
+def json_schema() -> dict:
+    """The JSON schema of ``PipelineConfig`` (what ``workflow/schemas/config.schema.json`` holds)."""
+    schema = PipelineConfig.model_json_schema()
+    schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
+    return schema
+
+
+def schema_text() -> str:
+    return json.dumps(json_schema(), indent=1, sort_keys=True) + "\n"
+
+
+if __name__ == "__main__":  # python -m stickslip.config_models --write  (from the repository root)
+    if sys.argv[1:] == ["--write"]:
+        SCHEMA_PATH.write_text(schema_text())
+    else:
+        sys.stdout.write(schema_text())
