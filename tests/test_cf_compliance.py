@@ -44,10 +44,6 @@ def one_per_kind(run, paths):
 
 
 @pytest.mark.pipeline
-@pytest.mark.xfail(
-    reason="known: fe/model_comparison.nc and inverse/*.nc have string dimension coordinates (open issue)",
-    strict=False,
-)
 def test_one_dataset_of_every_kind_passes_cf(run):
     paths = one_per_kind(run, datasets(run))
     assert len(paths) >= 10, paths

@@ -68,3 +68,25 @@ def test_written_datasets_are_readable_like_any_new_file(baseline_dataset, tmp_p
     mask = os.umask(0)
     os.umask(mask)
     assert (path.stat().st_mode & 0o777) == (0o666 & ~mask)
+
+
+def test_text_dimensions_are_written_as_index_plus_labels_and_read_back_labelled(tmp_path):
+    """CF wants numeric dimension coordinates: a text dimension is written as an integer index with the
+    labels in an auxiliary coordinate, and read_dataset gives the labelled dimension back."""
+    import numpy as np
+    import xarray as xr
+
+    from stickslip.io.netcdf import read_dataset, write_dataset
+
+    ds = xr.Dataset(
+        {"value": (("scene", "quantity"), np.arange(6.0).reshape(2, 3), {"units": "1"})},
+        coords={"scene": ["s1", "s2"], "quantity": ("quantity", ["a", "b", "c"], {"long_name": "quantity"})},
+    )
+    path = write_dataset(ds, tmp_path / "labelled.nc", scene={}, interpretation="test", method={})
+    with xr.open_dataset(path) as raw:
+        assert raw.scene.dtype.kind == "i" and list(raw.scene_label.values) == ["s1", "s2"]
+        assert raw.quantity.attrs["units"] == "1" and raw.quantity_label.attrs["long_name"] == "quantity"
+    back = read_dataset(path)
+    assert list(back.scene.values) == ["s1", "s2"] and "scene_label" not in back.coords
+    assert float(back.value.sel(scene="s2", quantity="c")) == 5.0
+    assert back.quantity.attrs == {"long_name": "quantity"}

@@ -201,6 +201,38 @@ def cf_encoding(ds: xr.Dataset) -> dict:
     return encoding
 
 
+#: Attribute of the auxiliary coordinate that carries a dimension's text labels in a written file.
+LABELS_OF = "labels_of_dimension"
+
+
+def index_text_dimensions(ds: xr.Dataset) -> xr.Dataset:
+    """Text dimension coordinates (scene names, claim ids, ...) as CF wants them: the dimension gets an
+    integer index coordinate and the labels move to an auxiliary coordinate ``<dim>_label`` (CF 5: dimension
+    coordinates are numeric and monotonic). ``read_dataset`` restores the labelled dimension."""
+    for dim in [d for d in ds.dims if d in ds.coords and ds[d].dtype.kind in "OUS"]:
+        labels = ds[dim]
+        label_attrs = {**labels.attrs, LABELS_OF: str(dim)}
+        label_attrs.setdefault("long_name", f"{str(dim).replace('_', ' ')} name")
+        index_attrs = {"long_name": f"{str(dim).replace('_', ' ')} index", "units": "1"}
+        ds = ds.assign_coords(
+            {
+                dim: (dim, np.arange(labels.size, dtype=np.int32), index_attrs),
+                f"{dim}_label": (dim, np.asarray(labels.values, dtype=object), label_attrs),
+            }
+        )
+    return ds
+
+
+def label_text_dimensions(ds: xr.Dataset) -> xr.Dataset:
+    """Inverse of ``index_text_dimensions``: the labels become the dimension coordinate again."""
+    for name in [n for n in ds.coords if LABELS_OF in ds[n].attrs]:
+        dim = ds[name].attrs[LABELS_OF]
+        attrs = {k: v for k, v in ds[name].attrs.items() if k != LABELS_OF}
+        labels = [str(v) for v in ds[name].values]
+        ds = ds.drop_vars(name).assign_coords({dim: (dim, np.array(labels, dtype=object), attrs)})
+    return ds
+
+
 def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
     """Attributes CF asks for that a dataset may leave out, filled in without overwriting any.
 
@@ -264,7 +296,7 @@ def write_dataset(
         method=method,
     )
     ds.attrs = _merged_attrs(ds.attrs, prov)
-    ds = cf_fill_in(ds)
+    ds = cf_fill_in(index_text_dimensions(ds))
     encoding = cf_encoding(ds)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
@@ -278,9 +310,10 @@ def write_dataset(
 
 
 def read_dataset(path: str | os.PathLike) -> xr.Dataset:
-    """Open a dataset fully into memory (closes the file), with a clear error if it is missing."""
+    """Open a dataset fully into memory (closes the file), with a clear error if it is missing; text
+    dimensions written as index + labels (``index_text_dimensions``) come back labelled."""
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"dataset {path} does not exist (has its rule run?)")
     with xr.open_dataset(path) as ds:
-        return ds.load()
+        return label_text_dimensions(ds.load())
