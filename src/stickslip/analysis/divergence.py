@@ -64,18 +64,8 @@ class BoundedSolver:
             from ..solvers.base import SolverStats, Trajectory
 
             t = np.asarray(t_eval if t_eval is not None else np.linspace(0, t_end, 2001), dtype=float)
-            nan = np.full(t.shape, np.nan)
             stats = SolverStats(status="failed", message=f"diverged: {exc}", failures=1)
-            return Trajectory(
-                t=t,
-                x=nan,
-                v=nan.copy(),
-                phase=np.zeros(t.shape, dtype=np.int8),
-                belt_velocity=model.belt_velocity(t),
-                stats=stats,
-                method=self.name,
-                settings=self.settings,
-            )
+            return Trajectory.failed(t, model.belt_velocity(t), stats, self.name, self.settings)
         if traj.ok:
             p = model.params
             with np.errstate(all="ignore"):

@@ -50,6 +50,23 @@ class Trajectory:
     settings: dict = field(default_factory=dict)
     segments: np.ndarray | None = None
 
+    @classmethod
+    def failed(cls, t, belt_velocity, stats: SolverStats, method: str, settings: dict | None = None):
+        """The one way to record a failed solve: NaN samples on ``t`` (never plotted as a result), phase 0,
+        the belt velocity for reference and the counters in ``stats`` (status 'failed' with its message)."""
+        t = np.asarray(t, dtype=float)
+        nan = np.full(t.shape, np.nan)
+        return cls(
+            t=t,
+            x=nan,
+            v=nan.copy(),
+            phase=np.zeros(t.shape, dtype=np.int8),
+            belt_velocity=np.asarray(belt_velocity, dtype=float),
+            stats=stats,
+            method=method,
+            settings=dict(settings or {}),
+        )
+
     @property
     def ok(self) -> bool:
         return self.stats.status == "ok"

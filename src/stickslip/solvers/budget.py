@@ -61,16 +61,12 @@ def run_with_budget(solver, model, t_end, t_eval, max_rhs: int = 2_000_000, max_
             failures=1,
             cpu_time=time.process_time() - start,
         )
-        nan = np.full(t_eval.shape, np.nan)
-        return Trajectory(
-            t=t_eval,
-            x=nan,
-            v=nan.copy(),
-            phase=np.zeros(t_eval.shape, dtype=np.int8),
-            belt_velocity=model.belt_velocity(t_eval),
-            stats=stats,
-            method=getattr(solver, "name", type(solver).__name__),
-            settings=dict(getattr(solver, "settings", {})),
+        return Trajectory.failed(
+            t_eval,
+            model.belt_velocity(t_eval),
+            stats,
+            getattr(solver, "name", type(solver).__name__),
+            getattr(solver, "settings", {}),
         )
 
 

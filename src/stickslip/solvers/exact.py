@@ -97,31 +97,7 @@ class ExactSwitchSolver:
 
     # -- public ---------------------------------------------------------------------------------------
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        stats = SolverStats()
-        t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
-        with Timer() as timer:
-            try:
-                segments = self.segments(model, t_end, stats)
-            except SolverError as exc:
-                stats.status, stats.message, stats.failures = "failed", str(exc), 1
-                segments = []
-        stats.cpu_time = timer.elapsed
-        if t_eval is None:
-            t_eval = np.linspace(0.0, t_end, 2001)
-        t_eval = np.asarray(t_eval, dtype=float)
-        x, v, phase = sample_segments(segments, t_eval)
-        table = np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3)
-        return Trajectory(
-            t=t_eval,
-            x=x,
-            v=v,
-            phase=phase,
-            belt_velocity=model.belt_velocity(t_eval),
-            stats=stats,
-            method=self.name,
-            settings=self.settings,
-            segments=table,
-        )
+        return trajectory_from_segments(self.segments, model, t_end, t_eval, self.name, self.settings)
 
     def segments(self, model: BeltModel, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
         stats = stats if stats is not None else SolverStats()
@@ -355,6 +331,34 @@ class ExactSwitchSolver:
                 return hi
             return brentq(gap, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
         return None
+
+
+def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, settings: dict) -> Trajectory:
+    """The solve of an event-driven solver (exact, switch): ``segments_of(model, t_end, stats)`` gives the
+    phases of the motion, sampled on ``t_eval`` (default 2001 points); a ``SolverError`` while building them
+    is a failed run whose samples past the last good segment are NaN."""
+    stats = SolverStats()
+    t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
+    with Timer() as timer:
+        try:
+            segments = segments_of(model, t_end, stats)
+        except SolverError as exc:
+            stats.status, stats.message, stats.failures = "failed", str(exc), 1
+            segments = []
+    stats.cpu_time = timer.elapsed
+    t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
+    x, v, phase = sample_segments(segments, t_eval)
+    return Trajectory(
+        t=t_eval,
+        x=x,
+        v=v,
+        phase=phase,
+        belt_velocity=model.belt_velocity(t_eval),
+        stats=stats,
+        method=method,
+        settings=settings,
+        segments=np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3),
+    )
 
 
 def sample_segments(segments: list[Segment], t_eval: np.ndarray):

@@ -33,8 +33,14 @@ from scipy.integrate import solve_ivp
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import ParameterError
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
-from .exact import Segment, StickMotion, _check_t_end, first_exit_root, sample_segments
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
+from .exact import (
+    Segment,
+    StickMotion,
+    _check_t_end,
+    first_exit_root,
+    trajectory_from_segments,
+)
 
 
 @dataclass(frozen=True)
@@ -95,29 +101,8 @@ class SwitchSolver:
     # -- public ---------------------------------------------------------------------------------------
     def solve(self, model, t_end: float, t_eval=None) -> Trajectory:
         law_model = as_law_model(model)
-        stats = SolverStats()
-        t_end = _check_t_end(t_end)
-        with Timer() as timer:
-            try:
-                segments = self.segments(law_model, t_end, stats)
-            except SolverError as exc:
-                stats.status, stats.message, stats.failures = "failed", str(exc), 1
-                segments = []
-        stats.cpu_time = timer.elapsed
-        t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
-        x, v, phase = sample_segments(segments, t_eval)
-        table = np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3)
-        return Trajectory(
-            t=t_eval,
-            x=x,
-            v=v,
-            phase=phase,
-            belt_velocity=law_model.belt_velocity(t_eval),
-            stats=stats,
-            method=self.name,
-            settings={**self.settings, "law": law_model.law.describe()},
-            segments=table,
-        )
+        settings = {**self.settings, "law": law_model.law.describe()}
+        return trajectory_from_segments(self.segments, law_model, t_end, t_eval, self.name, settings)
 
     def segments(self, model, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
         """The phases of the motion up to ``t_end`` (each with its own exact or dense solution)."""
