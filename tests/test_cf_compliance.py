@@ -10,6 +10,7 @@ those two findings (CF 3.1 / 4.4 on ``time`` with units ``s``) are accepted and 
 """
 
 import multiprocessing
+import re
 from concurrent.futures import ProcessPoolExecutor
 
 import pytest
@@ -32,14 +33,23 @@ def run(tmp_path_factory):
     return shared_small_run(tmp_path_factory)
 
 
+def kind_of(names, swept: str = "") -> tuple:
+    """A dataset's kind: its variable names with the swept parameter's name, the swept value of
+    ``<metric>_at_<value>`` scalars and the ``_ensemble`` suffix folded (the same writer code, other
+    numbers), plus whether it has an ensemble."""
+    folded = {re.sub(r"_at_[0-9a-z.+-]+$", "_at_VALUE", n.removesuffix("_ensemble")) for n in names}
+    folded = {"SWEPT" if n == swept else n for n in folded}
+    return tuple(sorted(folded)), any(n.endswith("_ensemble") for n in names)
+
+
 def one_per_kind(run, paths):
-    """The first dataset of each distinct set of variable names."""
+    """The first dataset of each kind (``kind_of``)."""
     import xarray as xr
 
     kinds = {}
     for p in paths:
         with xr.open_dataset(run / "results" / p, decode_times=False) as ds:
-            kinds.setdefault(tuple(sorted(map(str, ds.variables))), p)
+            kinds.setdefault(kind_of(map(str, ds.variables), ds.attrs.get("sweep_parameter", "")), p)
     return sorted(kinds.values())
 
 
