@@ -264,3 +264,26 @@ def test_property_energy_balance_over_slip(changes):
         work, _ = quad(power, s.t0, s.t1, epsabs=1e-12, epsrel=1e-11, limit=200)
         scale = max(abs(energy(s.t0)), abs(energy(s.t1)), 1e-3)
         assert energy(s.t1) - energy(s.t0) == pytest.approx(work, abs=1e-8 * scale)
+
+
+@pytest.mark.parametrize(
+    "changes",
+    [
+        dict(units="si"),  # hundreds of short slips
+        dict(units="si", damping=0.5),  # one slip lasting 38 s (thousands of oscillations, growing)
+        dict(units="si", belt_deceleration=0.02),
+        dict(belt_deceleration=0.025),
+    ],
+)
+def test_growing_scan_windows_find_the_same_events(changes, monkeypatch):
+    """Scanning a long slip in doubling windows (same sample spacing) finds exactly the events that
+    fixed 256-sample windows find: every segment's start and end agree bit for bit."""
+    import stickslip.solvers.exact as exact
+
+    model = scene(**changes)
+    with np.errstate(all="ignore"):
+        growing = ExactSwitchSolver().segments(model, 40.0)
+        monkeypatch.setattr(exact, "WINDOW_SAMPLES", (256, 256))
+        fixed = ExactSwitchSolver().segments(model, 40.0)
+    assert len(growing) == len(fixed) > 1
+    assert [(s.t0, s.t1, s.phase) for s in growing] == [(s.t0, s.t1, s.phase) for s in fixed]

@@ -21,6 +21,10 @@ from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, 
 from .linear import LinearSegment
 
 
+#: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
+WINDOW_SAMPLES = (256, 1 << 16)
+
+
 @dataclass(frozen=True)
 class StickMotion:
     """The mass carried by the belt: x = x0 + vb0 tau + slope tau^2 / 2."""
@@ -262,10 +266,11 @@ class ExactSwitchSolver:
             return finish(0.0)
         lo_tau, lo_gap = 0.0, 0.0
         tau_k = start
+        window = WINDOW_SAMPLES[0]
         while True:
-            grid = tau_k + h * np.arange(256)
+            grid = tau_k + h * np.arange(window)
             grid = grid[grid < tau_max]
-            grid = np.append(grid, tau_max) if grid.size < 256 else grid
+            grid = np.append(grid, tau_max) if grid.size < window else grid
             values = gap(grid)
             taus = np.concatenate(([lo_tau], grid))
             gaps = np.concatenate(([lo_gap], values))
@@ -278,6 +283,9 @@ class ExactSwitchSolver:
             # window boundary is still seen with both neighbours (a graze is never skipped)
             lo_tau, lo_gap = grid[-2], values[-2]
             tau_k = grid[-1]
+            # a slip with no event yet is scanned in ever longer windows (same spacing h): a slip that lasts
+            # thousands of oscillations costs a few array evaluations, not thousands of Python iterations
+            window = min(2 * window, WINDOW_SAMPLES[1])
 
     @staticmethod
     def _clear_to_the_end(seg, s, vb0, slope, vp, outside, tau_from, tol) -> bool:
