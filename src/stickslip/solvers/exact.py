@@ -20,7 +20,6 @@ from ..model.equations import BeltModel
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
 from .linear import LinearSegment
 
-
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
 WINDOW_SAMPLES = (256, 1 << 16)
 
