@@ -24,15 +24,15 @@ from pathlib import Path
 
 import yaml
 
+from stickslip.studies.specs import dense_map
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests"))
-from project_run import copy_project  # noqa: E402
 
 
-def load_common():
-    from stickslip.io import dense_map
-
-    return dense_map
+def clone_project(dest: Path) -> Path:
+    """The committed project (no results) in ``dest``: what a user who clones the repository runs."""
+    subprocess.run(["git", "clone", "--quiet", str(ROOT), str(dest)], check=True)
+    return dest
 
 
 def pipeline_config(extra: list[Path]) -> dict:
@@ -78,7 +78,7 @@ def main():
     args = ap.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="bench_dense_map_") as tmp:
-        work = copy_project(Path(tmp))
+        work = clone_project(Path(tmp) / "clone")
         extra = []
         if args.quick:
             quick = work / "bench_quick.yaml"
@@ -88,7 +88,7 @@ def main():
                 yaml.safe_dump({"dense_map": {"chunk_size": 32, "maps": {args.map: {"axes": axes}}}})
             )
             extra = [quick]
-        dm = load_common().dense_map(pipeline_config(extra), args.map)
+        dm = dense_map(pipeline_config(extra), args.map)
         print(
             f"map {args.map}: {' x '.join(str(len(a.values)) for a in dm.axes)} = {dm.points} points, "
             f"{dm.chunks} chunks of {dm.chunk_size}, t_end {dm.spec.t_end:g} s, solver {dm.spec.method}; "

@@ -3,8 +3,8 @@
 import pytest
 import yaml
 
-from stickslip.io.scenes import run_spec
 from stickslip.model import ParameterError
+from stickslip.studies.specs import run_spec
 
 from project_run import copy_project, run_snakemake
 
@@ -29,18 +29,22 @@ def test_every_figure_run_resolves(config):
         (lambda c: c["onedof"]["readings"]["consistent_caption"].update(variant="eq5"), "variant"),
         (lambda c: c["onedof"]["methods"]["ode45"].update(rtoll=1e-3), "rtoll"),
         (lambda c: c["onedof"]["methods"]["ode45"].update(solver="euler"), "solver"),
+        (lambda c: c["onedof"]["sweeps"]["fig12"].update(parameter="dampening"), "fig12.parameter"),
+        (lambda c: c["onedof"]["sweeps"]["fig12"]["dense"].update(start=9.0), "fig12.dense"),
+        (lambda c: c["onedof"]["sweeps"]["fig14"].update(linked={"normal_farce": 10.0}), "fig14.linked"),
+        (lambda c: c["onedof"]["sweeps"]["fig12"].update(values=[-1.0, 1.0]), "fig12.values"),
     ],
 )
-def test_run_spec_errors_name_the_key(config, mutate, key):
-    import copy
+def test_config_errors_name_the_key(repo_root, mutate, key):
+    """One entry point validates: the typed models, then every run resolved (physics at construction)."""
+    from glob import glob
 
-    bad = copy.deepcopy(config)
+    from stickslip.config import ConfigError, load_config, validate_config
+
+    bad = load_config(sorted(glob(str(repo_root / "config" / "*.yaml"))))
     mutate(bad)
-    with pytest.raises(ParameterError, match=key):
-        for fig in bad["onedof"]["figures"].values():
-            for reading in fig["readings"]:
-                for method in fig["methods"]:
-                    run_spec(bad, fig["scene"], reading, method)
+    with pytest.raises(ConfigError, match=key):
+        validate_config(bad, producible=["results/onedof/friction_mu_vr.csv"])
 
 
 @pytest.mark.pipeline

@@ -8,8 +8,8 @@ import xarray as xr
 import yaml
 
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
-from stickslip.io import dense_map as dmc  # noqa: E402
-from stickslip.model import ParameterError
+from stickslip.config import ConfigError, validate_config
+from stickslip.studies import specs as dmc
 
 from project_run import ROOT, copy_project, run_snakemake
 
@@ -99,15 +99,18 @@ def test_a_chunk_of_failed_runs_merges_as_nan():
     assert (merged.solver_ok.values.ravel()[6:] == 0).all()
 
 
+TABLE = ["results/onedof/friction_mu_vr.csv"]  # written by a rule: need not exist before a run
+
+
 @pytest.mark.parametrize("value", [0, -3, 2.5, "ten", True])
 def test_bad_chunk_size_names_the_key(value):
-    with pytest.raises(ParameterError, match=r"dense_map\.chunk_size"):
-        dmc.dense_map(small_config(chunk_size=value), "speed_damping")
+    with pytest.raises(ConfigError, match=r"dense_map\.chunk_size"):
+        validate_config(small_config(chunk_size=value), producible=TABLE)
 
 
 def test_chunk_size_making_too_many_jobs_names_the_key():
-    with pytest.raises(ParameterError, match=r"dense_map\.chunk_size: 1 points per chunk make 12 jobs"):
-        dmc.dense_map(small_config(chunk_size=1, max_chunks=10), "speed_damping")
+    with pytest.raises(ConfigError, match=r"dense_map\.chunk_size: 1 points per chunk make 12 jobs"):
+        validate_config(small_config(chunk_size=1, max_chunks=10), producible=TABLE)
 
 
 @pytest.mark.parametrize(
@@ -115,18 +118,27 @@ def test_chunk_size_making_too_many_jobs_names_the_key():
     [
         ({"name": "dampening", "values": [1.0]}, r"axes\[0\]\.name: 'dampening' is not a parameter"),
         ({"name": "damping", "start": -1.0, "stop": 1.0, "num": 3}, r"axes\[0\] \(damping = -1\): damping"),
-        ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]\.num: missing"),
+        ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]: num: missing"),
         (
             {"name": "damping", "start": 0.0, "stop": 1.0, "num": 3, "spacing": "log"},
             r"axes\[0\]: log spacing",
         ),
+        ({"name": "damping", "values": [1.0], "linked": {"normal_farce": 1.0}}, r"axes\[0\]\.linked: 'normal_farce'"),
     ],
 )
 def test_bad_axis_names_the_key(axis, match):
     config = small_config()
     config["dense_map"]["maps"]["speed_damping"]["axes"] = [axis]
-    with pytest.raises(ParameterError, match=match):
-        dmc.dense_map(config, "speed_damping")
+    with pytest.raises(ConfigError, match=r"dense_map\.maps\.speed_damping\." + match):
+        validate_config(config, producible=TABLE)
+
+
+def test_an_axis_swept_twice_names_the_key():
+    config = small_config()
+    axes = config["dense_map"]["maps"]["speed_damping"]["axes"]
+    axes.append(dict(axes[0]))
+    with pytest.raises(ConfigError, match=r"speed_damping: axes\[2\]\.name: 'belt_velocity' is swept twice"):
+        validate_config(config, producible=TABLE)
 
 
 # --- through Snakemake -------------------------------------------------------------------------------------
@@ -235,7 +247,7 @@ def test_a_nonlinear_law_changes_the_map():
     ],
 )
 def test_a_bad_law_or_method_is_rejected_naming_its_key(law, method, words):
-    with pytest.raises(ParameterError) as info:
-        dmc.dense_map(with_law(small_config(), law, method), "with_law")
+    with pytest.raises(ConfigError) as info:
+        validate_config(with_law(small_config(), law, method), producible=TABLE)
     for word in words:
         assert word in str(info.value), str(info.value)

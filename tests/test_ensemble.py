@@ -40,9 +40,13 @@ def test_step_member_only_where_a_step_setting_exists():
     "bad,key",
     [({"relative": -1}, "relative"), ({"step_factor": 1.5}, "step_factor"), ({"seedz": [1]}, "seedz")],
 )
-def test_bad_ensemble_settings_name_their_key(bad, key):
-    with pytest.raises(ValueError, match=f"ensemble.{key}"):
-        EnsembleSpec.from_mapping(bad)
+def test_bad_ensemble_settings_name_their_key(bad, key, repo_root):
+    from stickslip.config import ConfigError, load_config, validate_config
+
+    config = load_config(sorted((repo_root / "config").glob("*.yaml")))
+    config["ensemble"].update(bad)
+    with pytest.raises(ConfigError, match=f"ensemble.{key}"):
+        validate_config(config, producible=["results/onedof/friction_mu_vr.csv"])
 
 
 def test_ensemble_dataset_stacks_every_metric_per_member_base_first():

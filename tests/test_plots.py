@@ -1,6 +1,7 @@
 """Figures draw from datasets (presentation code is still code): what is plotted is the data, failed runs are
 written out, never drawn."""
 
+
 def test_moved_notebook_helpers_still_import_from_plots():
     """Notebooks written for the old layout (``from stickslip.plots import claims_frame``) keep working."""
     import pytest

@@ -42,7 +42,7 @@ def typed_errors(exc) -> str:
     """A pydantic ValidationError as one line per problem: ``dotted.key: message (got value)``."""
     lines = []
     for err in exc.errors():
-        key = ".".join(str(part) for part in err["loc"])
+        key = "".join(f"[{part}]" if isinstance(part, int) else f".{part}" for part in err["loc"]).lstrip(".")
         if err["type"] == "value_error":  # a validator's own message (cross-references name their key)
             text = str(err["ctx"]["error"])
             lines.append(text if key and text.startswith(key) else f"{key}: {text}")
@@ -65,7 +65,6 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
     except ValidationError as exc:
         raise ConfigError(typed_errors(exc)) from None
     try:
-        _check_ensemble(config)
         _check_onedof(config)
         check_methods_config(config["methods_study"])
         _check_dense_maps(config)
@@ -74,18 +73,9 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
         raise ConfigError(str(exc)) from None
 
 
-def _check_ensemble(config: dict) -> None:
-    from .ensemble import EnsembleSpec
-
-    try:
-        EnsembleSpec.from_mapping(config.get("ensemble"))
-    except (ValueError, TypeError) as exc:
-        raise ConfigError(str(exc) if str(exc).startswith("ensemble.") else f"ensemble: {exc}") from None
-
-
 def _check_onedof(config: dict) -> None:
     """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
-    from .io.scenes import figure_runs, run_spec, sweep_spec
+    from .studies.specs import figure_runs, run_spec, sweep_spec
 
     onedof = config["onedof"]
     for figure in onedof["figures"]:
@@ -99,7 +89,7 @@ def _check_onedof(config: dict) -> None:
 
 
 def _check_dense_maps(config: dict) -> None:
-    from .io.dense_map import dense_map
+    from .studies.specs import dense_map
 
     for name in config["dense_map"]["maps"]:
         dense_map(config, name)

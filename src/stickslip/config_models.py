@@ -20,6 +20,9 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+#: Jobs a dense map may be split into unless ``dense_map.max_chunks`` says otherwise.
+DEFAULT_MAX_CHUNKS = 2000
+
 #: Where the generated JSON schema lives (for editors, `snakemake --lint` readers and documentation).
 SCHEMA_PATH = Path("workflow/schemas/config.schema.json")
 
@@ -28,6 +31,33 @@ Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
 Names = Annotated[list[str], Field(min_length=1)]
+
+
+def belt_parameter(name: str) -> str:
+    """``name`` is a parameter of the 1-DOF model (what a sweep or a map axis may set)."""
+    import dataclasses
+
+    from .model.params import BeltParams
+
+    known = {f.name for f in dataclasses.fields(BeltParams)} - {"units"}
+    if name not in known:
+        raise ValueError(f"{name!r} is not a parameter (known: {sorted(known)})")
+    return name
+
+
+def linked_parameters(linked: dict | None) -> dict | None:
+    for name in linked or {}:
+        belt_parameter(name)
+    return linked
+
+
+def needs_switch(key: str, law, method: str, methods: dict) -> None:
+    """A friction law other than the readings' is solved by the switch solver only."""
+    if law is not None and methods[method].solver != "switch":
+        raise ValueError(
+            f"{key}.method: a friction law needs a method whose solver is 'switch' (the exact solver handles "
+            f"the readings' affine laws only), got {method!r}"
+        )
 
 
 def check_refs(refs, known: dict, section: str) -> None:
@@ -128,6 +158,14 @@ class DenseRange(Section):
     num: Annotated[int, Field(ge=2)]
     scale: Literal["linear", "log"] | None = None
 
+    @model_validator(mode="after")
+    def ordered(self):
+        if self.start >= self.stop:
+            raise ValueError(f"start < stop needed, got {self.start!r} >= {self.stop!r}")
+        if self.scale == "log" and self.start <= 0:
+            raise ValueError(f"log scale needs start > 0, got {self.start!r}")
+        return self
+
 
 class Sweep(Section):
     figure: str | None = None
@@ -140,6 +178,9 @@ class Sweep(Section):
     linked: dict[str, Finite] | None = None
     law: Law | None = None
     dense: DenseRange
+
+    _parameter = field_validator("parameter")(belt_parameter)
+    _linked = field_validator("linked")(linked_parameters)
 
 
 class SweepFigure(Open):
@@ -208,6 +249,8 @@ class Onedof(Section):
         check_refs(scenes, self.scenes, "onedof.scenes")
         check_refs(readings, self.readings, "onedof.readings")
         check_refs(methods, self.methods, "onedof.methods")
+        for name, sweep in self.sweeps.items():
+            needs_switch(f"onedof.sweeps.{name}", sweep.law, sweep.method or "exact", self.methods)
         return self
 
 
@@ -236,6 +279,8 @@ class Notebook(Open):
 
 
 class MapAxis(Section):
+    """Values listed, or ``num`` points from ``start`` to ``stop`` (linear or log ``spacing``)."""
+
     name: str
     values: Annotated[list[Finite], Field(min_length=1)] | None = None
     start: Finite | None = None
@@ -245,6 +290,25 @@ class MapAxis(Section):
     units: str | None = None
     long_name: str | None = None
     linked: dict[str, Finite] | None = None
+
+    _name = field_validator("name")(belt_parameter)
+    _linked = field_validator("linked")(linked_parameters)
+
+    @model_validator(mode="after")
+    def values_or_range(self):
+        if self.values is None:
+            missing = [k for k in ("start", "stop", "num") if getattr(self, k) is None]
+            if missing:
+                raise ValueError(f"{missing[0]}: missing (give either values or start, stop, num)")
+            if self.spacing == "log" and not (self.start > 0 and self.stop > 0):
+                raise ValueError(
+                    f"log spacing needs start > 0 and stop > 0, got {self.start!r}, {self.stop!r}"
+                )
+        return self
+
+    @property
+    def size(self) -> int:
+        return len(self.values) if self.values is not None else self.num
 
 
 class DenseMapEntry(RunLengths):
@@ -256,6 +320,14 @@ class DenseMapEntry(RunLengths):
     chunk_size: Annotated[int, Field(ge=1)] | None = None
     plot: Names | None = None
     axes: Annotated[list[MapAxis], Field(min_length=1)]
+
+    @model_validator(mode="after")
+    def each_parameter_once(self):
+        names = [a.name for a in self.axes]
+        for i, name in enumerate(names):
+            if name in names[:i]:
+                raise ValueError(f"axes[{i}].name: {name!r} is swept twice")
+        return self
 
 
 class Resources(Open):
@@ -275,6 +347,24 @@ class DenseMaps(Section):
     max_chunks: Annotated[int, Field(ge=1)] | None = None
     maps: Annotated[dict[str, DenseMapEntry], Field(min_length=1)]
     resources: DenseMapResources
+
+    @model_validator(mode="after")
+    def chunks_within_limit(self):
+        """A chunk size that would make more jobs than ``max_chunks`` (default 2000) is an error."""
+        import math
+
+        limit = self.max_chunks or DEFAULT_MAX_CHUNKS
+        for name, m in self.maps.items():
+            points = math.prod(a.size for a in m.axes)
+            size = m.chunk_size or self.chunk_size
+            key = f"dense_map.maps.{name}.chunk_size" if m.chunk_size else "dense_map.chunk_size"
+            jobs = math.ceil(points / size)
+            if jobs > limit:
+                raise ValueError(
+                    f"{key}: {size} points per chunk make {jobs} jobs for {points} points, more than "
+                    f"max_chunks = {limit}; use at least {math.ceil(points / limit)} points per chunk"
+                )
+        return self
 
 
 # -- methods study -------------------------------------------------------------------------------------------
@@ -483,6 +573,7 @@ class PipelineConfig(Section):
             check_refs([(f"{key}.scene", m.scene)], onedof.scenes, "onedof.scenes")
             check_refs([(f"{key}.reading", m.reading)], onedof.readings, "onedof.readings")
             check_refs([(f"{key}.method", m.method)], onedof.methods, "onedof.methods")
+            needs_switch(key, m.law, m.method, onedof.methods)
         for name, nb in self.notebooks.items():
             key = f"notebooks.{name}"
             check_refs([(f"{key}.figures", f) for f in nb.figures or []], onedof.figures, "onedof.figures")

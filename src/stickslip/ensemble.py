@@ -58,10 +58,8 @@ class EnsembleSpec:
 
     @classmethod
     def from_mapping(cls, data: Mapping | None) -> EnsembleSpec:
-        data = dict(data or {})
-        unknown = set(data) - {"relative", "seeds", "step_factor", "step_keys", "blas_threads"}
-        if unknown:
-            raise ValueError(f"ensemble.{sorted(unknown)[0]}: unknown key")
+        """From the ``ensemble`` config section (its keys and types checked by the typed config layer)."""
+        data = {k: v for k, v in (data or {}).items() if v is not None}
         for key in ("seeds", "step_keys"):
             if key in data:
                 data[key] = tuple(data[key])

@@ -11,7 +11,7 @@ from glob import glob  # noqa: E402
 
 from stickslip.config import validate_config  # noqa: E402
 from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
-from stickslip.io.dense_map import dense_map  # noqa: E402
+from stickslip.studies.specs import dense_map  # noqa: E402
 
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]

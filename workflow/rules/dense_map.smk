@@ -1,6 +1,6 @@
 # Dense parameter maps (issue 7): a grid of exact-solver runs split into chunks, one job per chunk, merged
 # into one netCDF per map with the swept parameters as dimensions. Sizes live in config/dense_map.yaml.
-from stickslip.io.dense_map import dense_map
+from stickslip.studies.specs import dense_map
 
 DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["maps"]}
 DENSE_RESOURCES = config["dense_map"]["resources"]

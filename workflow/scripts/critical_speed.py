@@ -5,8 +5,8 @@ from functools import partial
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.scenes import run_spec
 from stickslip.studies.onedof import critical_speed_from_config
+from stickslip.studies.specs import run_spec
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
 config = snakemake.params.config

@@ -3,13 +3,12 @@
 import logging
 import time
 
-from dense_map_common import dense_map, log_to
-
 from stickslip.analysis.sweep import chunk_dataset, chunk_points
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.progress import step_callback
+from stickslip.io.progress import log_to_file, step_callback
+from stickslip.studies.specs import dense_map
 
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0])  # noqa: F821
 name, chunk = snakemake.wildcards.map, int(snakemake.wildcards.chunk)  # noqa: F821
 dm = dense_map(snakemake.params.config, name)  # noqa: F821
 points = chunk_points(dm.axes, dm.chunk_size, chunk)

@@ -2,12 +2,12 @@
 
 import logging
 
-from dense_map_common import dense_map, log_to
-
 from stickslip.analysis.sweep import align_chunks, merge_chunks
 from stickslip.io.netcdf import read_dataset, write_dataset
+from stickslip.io.progress import log_to_file
+from stickslip.studies.specs import dense_map
 
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0])  # noqa: F821
 dm = dense_map(snakemake.params.config, snakemake.wildcards.map)  # noqa: F821
 chunks = align_chunks([read_dataset(path) for path in snakemake.input])  # noqa: F821
 ds = merge_chunks(dm.axes, chunks)

@@ -6,9 +6,9 @@ matplotlib.use("Agg")
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
-from stickslip.io.scenes import run_spec  # noqa: E402
 from stickslip.plots import eq6_figure  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
+from stickslip.studies.specs import run_spec  # noqa: E402
 
 config = snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # closed form: no BLAS

@@ -5,8 +5,8 @@ from functools import partial
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.scenes import run_spec
 from stickslip.studies.onedof import friction_table_from_config
+from stickslip.studies.specs import run_spec
 
 table, config = snakemake.params.table, snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS

@@ -9,8 +9,8 @@ from functools import partial
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import step_callback
-from stickslip.io.scenes import sweep_spec
 from stickslip.studies.onedof import sweep_from_config
+from stickslip.studies.specs import sweep_spec
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
 reading, config = snakemake.wildcards.reading, snakemake.params.config

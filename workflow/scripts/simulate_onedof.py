@@ -7,8 +7,8 @@ import logging
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.scenes import run_spec
 from stickslip.studies.onedof import scene_run_dataset
+from stickslip.studies.specs import run_spec
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
 config, scene = snakemake.params.config, snakemake.params.scene

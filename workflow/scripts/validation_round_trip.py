@@ -3,9 +3,9 @@
 import numpy as np
 
 from stickslip.io.netcdf import read_dataset, write_dataset
-from stickslip.io.scenes import run_spec
 from stickslip.model.laws import LawModel, TabulatedLaw, law_from_config
 from stickslip.solvers.switch import SwitchSolver
+from stickslip.studies.specs import run_spec
 from stickslip.validation.compare import round_trip_cases
 from stickslip.validation.datasets import round_trip_dataset, round_trip_rows, write_csv
 from stickslip.validation.setup import ValidationSetup

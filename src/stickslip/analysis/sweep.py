@@ -7,7 +7,6 @@ An axis can carry linked parameters set proportionally (the paper's mass sweep r
 
 from __future__ import annotations
 
-import dataclasses
 import itertools
 import math
 from collections.abc import Callable
@@ -150,94 +149,6 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
                 {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"},
             )
     return out
-
-
-# --- Building sweeps from configuration (dense maps) -------------------------------------------------------
-
-
-def axis_from_config(spec: dict, key: str) -> SweepAxis:
-    """A sweep axis from a config mapping; every error names ``key`` (the config path of the axis).
-
-    The values are either listed (``values: [...]``) or spaced: ``start``, ``stop``, ``num`` and
-    ``spacing`` (``linear``, the default, or ``log``), so a denser map is a change of ``num`` only.
-    """
-    if not isinstance(spec, dict):
-        raise ParameterError(f"{key}: expected a mapping, got {spec!r}")
-    name = spec.get("name")
-    known = {f.name for f in dataclasses.fields(BeltParams)} - {"units"}
-    if name not in known:
-        raise ParameterError(f"{key}.name: {name!r} is not a parameter (known: {sorted(known)})")
-    if "values" in spec:
-        values = spec["values"]
-        if not isinstance(values, (list, tuple)):
-            raise ParameterError(f"{key}.values: expected a list, got {values!r}")
-        values = tuple(values)
-    else:
-        missing = [k for k in ("start", "stop", "num") if k not in spec]
-        if missing:
-            raise ParameterError(f"{key}.{missing[0]}: missing (give either values or start, stop, num)")
-        start, stop, num = spec["start"], spec["stop"], spec["num"]
-        if not isinstance(num, int) or isinstance(num, bool) or num < 1:
-            raise ParameterError(f"{key}.num: must be an integer >= 1, got {num!r}")
-        spacing = spec.get("spacing", "linear")
-        if spacing == "linear":
-            values = tuple(float(v) for v in np.linspace(start, stop, num))
-        elif spacing == "log":
-            if not (start > 0 and stop > 0):
-                raise ParameterError(
-                    f"{key}: log spacing needs start > 0 and stop > 0, got {start!r}, {stop!r}"
-                )
-            values = tuple(float(v) for v in np.geomspace(start, stop, num))
-        else:
-            raise ParameterError(f"{key}.spacing: {spacing!r} is not one of ['linear', 'log']")
-    try:
-        return SweepAxis(
-            name,
-            values,
-            str(spec.get("units", "")),
-            str(spec.get("long_name", "")),
-            dict(spec.get("linked", {})),
-        )
-    except ParameterError as exc:
-        raise ParameterError(f"{key}: {exc}") from None
-
-
-def axes_from_config(specs: list, key: str) -> list[SweepAxis]:
-    """All axes of a sweep; an axis name may appear once."""
-    if not isinstance(specs, (list, tuple)) or not specs:
-        raise ParameterError(f"{key}: expected a non-empty list of axes")
-    axes = [axis_from_config(spec, f"{key}[{i}]") for i, spec in enumerate(specs)]
-    names = [a.name for a in axes]
-    for i, name in enumerate(names):
-        if name in names[:i]:
-            raise ParameterError(f"{key}[{i}].name: {name!r} is swept twice")
-    return axes
-
-
-def check_axes(base: BeltParams, axes: list[SweepAxis], key: str) -> None:
-    """Fail before any run if an axis end (with its linked parameters) makes invalid parameters."""
-    for i, axis in enumerate(axes):
-        for value in (min(axis.values), max(axis.values)):
-            point = {axis.name: float(value), **{o: float(f) * float(value) for o, f in axis.linked.items()}}
-            try:
-                base.with_(**point)
-            except ParameterError as exc:
-                raise ParameterError(f"{key}[{i}] ({axis.name} = {value:g}): {exc}") from None
-
-
-def check_chunking(axes: list[SweepAxis], chunk_size, key: str, max_chunks: int | None = None) -> int:
-    """Number of chunks; a chunk size that is not a positive integer, or that makes more than
-    ``max_chunks`` jobs, is an error naming ``key``."""
-    if not isinstance(chunk_size, int) or isinstance(chunk_size, bool) or chunk_size < 1:
-        raise ParameterError(f"{key}: must be an integer >= 1, got {chunk_size!r}")
-    count = chunk_count(axes, chunk_size)
-    if max_chunks is not None and count > max_chunks:
-        raise ParameterError(
-            f"{key}: {chunk_size} points per chunk make {count} jobs for {grid_size(axes)} points, more than "
-            f"max_chunks = {max_chunks}; use at least "
-            f"{math.ceil(grid_size(axes) / max_chunks)} points per chunk"
-        )
-    return count
 
 
 def align_chunks(chunks: list[xr.Dataset]) -> list[xr.Dataset]:

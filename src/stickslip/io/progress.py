@@ -122,3 +122,10 @@ def step_callback(label: str, every: float = 10.0, sink: Callable[[str], None] |
         state["progress"].update(done)
 
     return report
+
+
+def log_to_file(path) -> None:
+    """Send this process's log records (INFO and up, time-stamped) to ``path``: a job's log file."""
+    import logging
+
+    logging.basicConfig(filename=str(path), level=logging.INFO, format="%(asctime)s %(message)s", force=True)

@@ -13,9 +13,9 @@ from ..analysis.friction_curve import friction_along_solution, friction_table
 from ..analysis.metrics import limit_cycle_metrics
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
 from ..io.netcdf import trajectory_dataset
-from ..io.scenes import RunSpec, SweepSpec, run_spec, sweep_spec
 from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
 from ..model.params import effective_mass
+from .specs import RunSpec, SweepSpec, run_spec, sweep_spec
 
 
 def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
