@@ -123,7 +123,10 @@ def test_chunk_size_making_too_many_jobs_names_the_key():
             {"name": "damping", "start": 0.0, "stop": 1.0, "num": 3, "spacing": "log"},
             r"axes\[0\]: log spacing",
         ),
-        ({"name": "damping", "values": [1.0], "linked": {"normal_farce": 1.0}}, r"axes\[0\]\.linked: 'normal_farce'"),
+        (
+            {"name": "damping", "values": [1.0], "linked": {"normal_farce": 1.0}},
+            r"axes\[0\]\.linked: 'normal_farce'",
+        ),
     ],
 )
 def test_bad_axis_names_the_key(axis, match):
