@@ -74,36 +74,9 @@ def shared_small_run(tmp_path_factory) -> Path:
 
 def datasets(workdir: Path) -> list[Path]:
     """Every netCDF dataset a run wrote, relative to its results folder."""
-    root = workdir / "results"
-    return sorted(p.relative_to(root) for p in root.rglob("*.nc") if not p.name.startswith("."))
+    from stickslip.io.compare import datasets as under
 
-
-def data_differences(path_a: Path, path_b: Path) -> list[str]:
-    """Variables (data and coordinates) whose values or dtypes differ bit for bit; attributes are ignored,
-    and so are CPU-time measurements (``stickslip.io.netcdf.is_machine_measurement``): they time the
-    machine, not the model."""
-    import numpy as np
-    import xarray as xr
-
-    from stickslip.io.netcdf import is_machine_measurement
-
-    out = []
-    with xr.open_dataset(path_a, decode_times=False) as a, xr.open_dataset(path_b, decode_times=False) as b:
-        if set(a.variables) != set(b.variables):
-            return [f"variables differ: {sorted(set(a.variables) ^ set(b.variables))}"]
-        for name in a.variables:
-            if is_machine_measurement(str(name)):
-                continue
-            va, vb = a[name].values, b[name].values
-            if va.dtype != vb.dtype or va.shape != vb.shape:
-                out.append(f"{name}: {va.dtype}{va.shape} vs {vb.dtype}{vb.shape}")
-            elif va.dtype.kind in "fc":
-                if va.tobytes() != vb.tobytes():
-                    n = int(np.sum(~((va == vb) | (np.isnan(va) & np.isnan(vb)))))
-                    out.append(f"{name}: {n} values differ")
-            elif not np.array_equal(va, vb):
-                out.append(f"{name}: values differ")
-    return out
+    return under(workdir / "results")
 
 
 def decisions_flipped_within_spread(workdir: Path) -> list[str]:
@@ -159,11 +132,11 @@ def data_differences_in_subprocess(root_a: Path, root_b: Path, paths) -> dict[st
     import json
 
     code = (
-        "import json, sys; sys.path.insert(0, sys.argv[1]); from pathlib import Path; "
-        "from project_run import data_differences; a, b = Path(sys.argv[2]), Path(sys.argv[3]); "
-        "print(json.dumps({p: data_differences(a / p, b / p) for p in json.loads(sys.argv[4])}))"
+        "import json, sys; from pathlib import Path; "
+        "from stickslip.io.compare import data_differences; a, b = Path(sys.argv[1]), Path(sys.argv[2]); "
+        "print(json.dumps({p: data_differences(a / p, b / p) for p in json.loads(sys.argv[3])}))"
     )
-    args = [sys.executable, "-c", code, str(ROOT / "tests"), str(root_a), str(root_b)]
+    args = [sys.executable, "-c", code, str(root_a), str(root_b)]
     proc = subprocess.run([*args, json.dumps([str(p) for p in paths])], capture_output=True, text=True)
     if proc.returncode != 0:
         raise AssertionError(f"comparison failed ({proc.returncode}):\n{proc.stderr[-3000:]}")

@@ -14,7 +14,9 @@ import time
 import pytest
 import yaml
 
-from project_run import copy_project, data_differences, run_snakemake, small_config_args, start_snakemake
+from stickslip.io.compare import data_differences
+
+from project_run import copy_project, run_snakemake, small_config_args, start_snakemake
 
 SCENE = "section9_kinematic_0p5mm_s"
 TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"

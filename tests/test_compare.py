@@ -1,0 +1,36 @@
+"""The results comparison (python -m stickslip.io.compare A B) finds every kind of difference."""
+
+import numpy as np
+import xarray as xr
+
+from stickslip.io.compare import compare_results, main
+
+
+def write(root, name, values, cpu=0.0):
+    path = root / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    xr.Dataset({"x": ("t", np.asarray(values, float)), "cpu_time": ((), cpu)}).to_netcdf(path)
+
+
+def test_identical_folders_compare_clean_and_cpu_times_are_ignored(tmp_path, capsys):
+    for root, cpu in ((tmp_path / "a", 1.0), (tmp_path / "b", 2.0)):
+        write(root, "onedof/s.nc", [1.0, np.nan, 3.0], cpu=cpu)
+    assert compare_results(tmp_path / "a", tmp_path / "b") == []
+    assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 0
+    assert "1 datasets compared: identical" in capsys.readouterr().out
+
+
+def test_a_last_bit_change_a_missing_file_and_a_changed_claims_table_are_reported(tmp_path):
+    write(tmp_path / "a", "onedof/s.nc", [1.0, 2.0])
+    write(tmp_path / "b", "onedof/s.nc", [1.0, np.nextafter(2.0, 3.0)])
+    write(tmp_path / "a", "fe/only_a.nc", [0.0])
+    for root, status in ((tmp_path / "a", "reproduced"), (tmp_path / "b", "deviates")):
+        (root / "claims").mkdir()
+        (root / "claims" / "deviations.csv").write_text(f"claim,status\nc1,{status}\n")
+    lines = compare_results(tmp_path / "a", tmp_path / "b")
+    assert lines == [
+        f"only in {tmp_path / 'a'}: fe/only_a.nc",
+        "onedof/s.nc: x: 1 values differ",
+        "claims/deviations.csv: differs",
+    ]
+    assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 1
