@@ -85,6 +85,7 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
     Each dataset variable with a perturbation ensemble (``<name>_ensemble``) is replaced by the members'
     minimum, then maximum, and every claim is re-evaluated: a claim decided on the base values
     (reproduced / deviates) must keep that decision or become indistinguishable, never the opposite."""
+    import warnings
     from glob import glob
 
     import numpy as np
@@ -96,15 +97,24 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
     table = read_table(workdir / "results" / "claims" / "deviations.csv")
     readings = sorted({r["reading"] for r in table} - {""})
 
+    read = {}  # each file read once for all three passes
+
     def moved(reduce):
-        opened = {}  # every claim of a dataset reads the same moved copy: open each file once
+        opened = {}  # every claim of a dataset reads the same moved copy
 
         def open_dataset(path):
             if path not in opened:
-                ds = read_dataset(workdir / path)
-                for name in [v for v in ds.data_vars if f"{v}_ensemble" in ds]:
-                    ds[name] = (ds[name].dims, reduce(ds[f"{name}_ensemble"].values, axis=0))
-                opened[path] = ds
+                if path not in read:
+                    read[path] = read_dataset(workdir / path)
+                ds = read[path]
+                names = [v for v in ds.data_vars if f"{v}_ensemble" in ds]
+                with warnings.catch_warnings():  # a metric NaN in every member stays NaN
+                    warnings.simplefilter("ignore", RuntimeWarning)
+                    moved_values = {
+                        n: (ds[n].dims, reduce(ds[f"{n}_ensemble"].values, axis=0), ds[n].attrs)
+                        for n in names
+                    }
+                opened[path] = ds.assign(moved_values)  # one assignment: each one re-aligns the dataset
             return opened[path]
 
         return open_dataset
