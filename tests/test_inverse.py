@@ -3,6 +3,7 @@ runs, the mu_k extension, and recovery of known parameters from numbers the proj
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -19,7 +20,6 @@ from stickslip.inverse.forward import Forward, build_model, observe
 from stickslip.inverse.hypotheses import single_changes, stated_score
 from stickslip.inverse.problem import METRICS, build_problem, load_claim_rows, with_observations
 from stickslip.model import BeltParams
-from stickslip.model.params import ParameterError
 from stickslip.solvers.exact import ExactSwitchSolver
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -118,16 +118,25 @@ def test_mu_k_keeps_the_stick_limit_and_changes_the_slip():
     assert abs(a["slip_time"] - b["slip_time"]) > 0.05
 
 
-def test_bad_bounds_name_the_key(config, claims):
-    bad = {
-        **config,
-        "inverse": {
-            **config["inverse"],
-            "bounds": {**config["inverse"]["bounds"], "mass": {"min": 2.0, "max": 1.0, "reason": "x"}},
-        },
-    }
-    with pytest.raises(ParameterError, match="inverse.bounds.mass"):
-        build_problem(bad, claims, "fig02", "consistent")
+@pytest.mark.parametrize(
+    "change, key",
+    [
+        ({"bounds": {"mass": {"min": 2.0, "max": 1.0}}}, "inverse.bounds.mass: need min < max"),
+        ({"bounds": {"mass": {"reason": ""}}}, "inverse.bounds.mass.reason"),
+        ({"families": {"consistent": {"variant": "consistent", "free": ["masss"]}}}, "free[0]"),
+        ({"joint": ["fig02", "fig99"]}, "inverse.joint: 'fig99'"),
+        ({"figures": {"fig02": {"claims": ["no_such_claim"]}}}, "'no_such_claim' is not a claim"),
+        ({"settings": {"default": {"loo": "sometimes"}}}, "inverse.settings.default.loo"),
+    ],
+)
+def test_bad_inverse_config_names_the_key(change, key):
+    """The inverse section is checked by the typed config layer with the rest, before any job."""
+    from stickslip.config import ConfigError, load_config, merge, validate_config
+
+    config = load_config(sorted((ROOT / "config").glob("*.yaml")))
+    config["inverse"] = merge(config["inverse"], change)
+    with pytest.raises(ConfigError, match=re.escape(key)):
+        validate_config(config, producible=["results/onedof/friction_mu_vr.csv"])
 
 
 def test_recovers_known_parameters_from_rounded_numbers(config, claims):

@@ -69,8 +69,29 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
         check_methods_config(config["methods_study"])
         _check_dense_maps(config)
         check_fe_config(config["fe"], list(producible))
+        _check_validation(config, list(producible))
+        _check_inverse_claims(config)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
+
+
+def _check_validation(config: dict, producible: list[str]) -> None:
+    from .validation.setup import ValidationSetup
+
+    ValidationSetup(config["validation"]).check(producible)
+
+
+def _check_inverse_claims(config: dict) -> None:
+    """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names."""
+    from glob import glob
+
+    from .inverse.problem import load_claim_rows
+
+    claims = load_claim_rows(sorted(glob(config["inverse"]["claims_glob"])))
+    for name, figure in config["inverse"]["figures"].items():
+        for claim in figure["claims"]:
+            if claim not in claims:
+                raise ConfigError(f"inverse.figures.{name}.claims: {claim!r} is not a claim id")
 
 
 def _check_onedof(config: dict) -> None:

@@ -7,8 +7,7 @@ then resolves what a model alone cannot (names that refer to other sections, sol
 The JSON schema in ``workflow/schemas/config.schema.json`` is generated from these models
 (``python -m stickslip.config_models --write``; a test checks it is current), never written by hand.
 
-The ``inverse`` and ``validation`` sections are typed by their own setup classes
-(``stickslip.inverse.problem``, ``stickslip.validation.setup``) and pass through here as mappings.
+Every section is typed here, the inverse study's and the friction-law validation's included.
 """
 
 from __future__ import annotations
@@ -371,7 +370,7 @@ class DenseMaps(Section):
 
 
 class StudyMethod(Section):
-    solver: Literal["exact", "sign_rk", "smooth", "karnopp", "moreau"]
+    solver: Literal["exact", "sign_rk", "smooth", "karnopp", "moreau", "switch"]
     settings: dict[str, Any] | None = None
     sweep: dict[str, Annotated[list[Any], Field(min_length=1)]] | None = None
     atol_per_rtol: Positive | None = None
@@ -546,6 +545,170 @@ class Fe(Section):
         return self
 
 
+# -- inverse study -------------------------------------------------------------------------------------------
+
+#: Parameters the inverse study may free (the 1-DOF model's, plus the friction plateau speed).
+InverseParameter = Literal["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
+
+
+class Bound(Section):
+    min: Positive
+    max: Positive
+    reason: Annotated[str, Field(min_length=1)]
+
+    @model_validator(mode="after")
+    def ordered(self):
+        if not self.min < self.max:
+            raise ValueError(f"need min < max, got {self.min!r}, {self.max!r}")
+        return self
+
+
+class Family(Section):
+    variant: Literal["eq3_printed", "eq4_printed", "consistent"]
+    free: Annotated[list[InverseParameter], Field(min_length=1)]
+
+
+class InverseFigure(Section):
+    title: str | None = None
+    scene: str | None = None
+    sweep: str | None = None
+    claims: Names
+
+    @model_validator(mode="after")
+    def scene_or_sweep(self):
+        if (self.scene is None) == (self.sweep is None):
+            raise ValueError("give exactly one of scene (an onedof scene) or sweep (an onedof sweep)")
+        return self
+
+
+class MuKRatio(Section):
+    min: Positive
+    max: Positive
+
+
+class Hypothesis(Section):
+    """Values applied to every run of the joint problem (every other parameter as stated)."""
+
+    description: Annotated[str, Field(min_length=1)]
+    sigma: NonNegative | None = None
+    units: Literal["as_given", "si"] | None = None
+    output_dt: Positive | None = None
+    eq4_term: bool | None = None
+    mu_k_ratio: MuKRatio | None = None
+
+
+class InverseSettings(Section):
+    starts: Annotated[int, Field(ge=1)]
+    max_nfev: Annotated[int, Field(ge=1)]
+    walkers: Annotated[int, Field(ge=2)]
+    steps: Annotated[int, Field(ge=1)]
+    joint_steps: Annotated[int, Field(ge=0)] = Field(description="0: the joint region is the Laplace one")
+    scan_points: Annotated[int, Field(ge=2)]
+    loo: Literal["linear", "refit"]
+    loo_nfev: Annotated[int, Field(ge=1)] | None = None
+    corner: list[str] = []
+    seed: int
+
+
+class Inverse(Section):
+    long: bool = False
+    claims_glob: str
+    families: Annotated[dict[str, Family], Field(min_length=1)]
+    stated: dict[str, Finite] | None = None
+    bounds: dict[InverseParameter, Bound]
+    constraints: dict[str, str] | None = None
+    figures: Annotated[dict[str, InverseFigure], Field(min_length=1)]
+    joint: Names
+    hypotheses: dict[str, Hypothesis] = {}
+    settings: dict[Literal["default", "long"], InverseSettings]
+
+    @model_validator(mode="after")
+    def complete_and_consistent(self):
+        missing = [p for p in InverseParameter.__args__ if p not in self.bounds]
+        if missing:
+            raise ValueError(f"bounds.{missing[0]}: missing (every parameter a family may free needs bounds)")
+        for mode in ("default", "long"):
+            if mode not in self.settings:
+                raise ValueError(f"settings.{mode}: missing")
+            corner = [(f"inverse.settings.{mode}.corner", f) for f in self.settings[mode].corner]
+            check_refs([c for c in corner if c[1] != "joint"], self.figures, "inverse.figures")
+        check_refs([("inverse.joint", f) for f in self.joint], self.figures, "inverse.figures")
+        return self
+
+
+# -- friction-law validation ---------------------------------------------------------------------------------
+
+
+class Tolerance(Section):
+    abs: Positive
+    reason: Annotated[str, Field(min_length=1)]
+
+
+class ValidationTolerances(Section):
+    time: Tolerance
+    position: Tolerance
+    closed_form: Tolerance
+
+
+class SwitchSettings(Open):
+    """Settings of the switch solver (others are checked by ``SwitchSolver`` at construction)."""
+
+    rtol: Positive | None = None
+    atol: Positive | None = None
+
+
+class Peer(Section):
+    program: str
+    method: Literal["Adams", "BDF"]
+    rtol: Positive
+    atol: Positive
+
+
+class ValidationLaw(Section):
+    description: str | None = None
+    law: Law
+    params: BeltParameters | None = None
+    closed_form: bool | None = None
+
+
+class RoundTrip(Section):
+    extension_factor: Annotated[float, Field(gt=1, allow_inf_nan=False)]
+    curved_law: Law
+    bins: Annotated[list[Annotated[int, Field(ge=2)]], Field(min_length=1)]
+    curved_solver: SwitchSettings | None = None
+
+
+class LawTiming(Timing):
+    max_rhs: Annotated[int, Field(ge=1)]
+    max_cpu: Positive
+
+
+class MethodsPerLaw(Section):
+    laws: list[str]
+    t_end: Positive
+    samples_per_second: Positive
+    timing: LawTiming
+    methods: Annotated[list[StudyMethod], Field(min_length=1)]
+    paper_method: str
+
+
+class Validation(Section):
+    base_params: BeltParameters
+    t_end: Positive
+    solver: SwitchSettings
+    peer: Peer
+    tolerances: ValidationTolerances
+    laws: Annotated[dict[str, ValidationLaw], Field(min_length=1)]
+    round_trip: RoundTrip
+    methods_per_law: MethodsPerLaw
+
+    @model_validator(mode="after")
+    def laws_exist(self):
+        refs = [("validation.methods_per_law.laws", name) for name in self.methods_per_law.laws]
+        check_refs(refs, self.laws, "validation.laws")
+        return self
+
+
 # -- the whole config ----------------------------------------------------------------------------------------
 
 
@@ -560,8 +723,8 @@ class PipelineConfig(Section):
     methods_study: MethodsStudy
     fe: Fe
     fe_long_runs: bool = Field(False, description="run the paper's windows (fe.long_runs), not short ones")
-    inverse: dict[str, Any] = Field(description="typed by stickslip.inverse.problem")
-    validation: dict[str, Any] = Field(description="typed by stickslip.validation.setup")
+    inverse: Inverse
+    validation: Validation
 
     @model_validator(mode="after")
     def sections_refer_to_each_other(self):
@@ -574,6 +737,10 @@ class PipelineConfig(Section):
             check_refs([(f"{key}.reading", m.reading)], onedof.readings, "onedof.readings")
             check_refs([(f"{key}.method", m.method)], onedof.methods, "onedof.methods")
             needs_switch(key, m.law, m.method, onedof.methods)
+        for name, fig in self.inverse.figures.items():
+            key = f"inverse.figures.{name}"
+            check_refs([(f"{key}.scene", fig.scene)] if fig.scene else [], onedof.scenes, "onedof.scenes")
+            check_refs([(f"{key}.sweep", fig.sweep)] if fig.sweep else [], onedof.sweeps, "onedof.sweeps")
         for name, nb in self.notebooks.items():
             key = f"notebooks.{name}"
             check_refs([(f"{key}.figures", f) for f in nb.figures or []], onedof.figures, "onedof.figures")

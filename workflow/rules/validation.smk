@@ -4,7 +4,6 @@ from stickslip.validation.setup import ValidationSetup
 
 VALIDATION = ValidationSetup(config["validation"])
 VALIDATION_LAWS = VALIDATION.law_names()
-VALIDATION.check(producible=["results/onedof/friction_mu_vr.csv"])
 
 ALL_TARGETS.extend(
     expand("results/validation/peer_{law}.csv", law=VALIDATION_LAWS)

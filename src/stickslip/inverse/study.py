@@ -27,19 +27,10 @@ INTERPRETATION = (
 
 
 def settings_of(config: dict) -> dict:
+    """The settings of the configured mode (``inverse.long``), checked by the typed config layer."""
     inv = config["inverse"]
     mode = "long" if inv.get("long", False) else "default"
-    s = dict(inv["settings"][mode])
-    s["mode"] = mode
-    for key in ("starts", "max_nfev", "walkers", "steps", "joint_steps", "scan_points"):
-        minimum = 0 if key == "joint_steps" else 1  # joint_steps 0: the joint region is the Laplace one only
-        if not isinstance(s.get(key), int) or s[key] < minimum:
-            raise ValueError(
-                f"inverse.settings.{mode}.{key}: must be an integer >= {minimum}, got {s.get(key)!r}"
-            )
-    if s.get("loo") not in ("linear", "refit"):
-        raise ValueError(f"inverse.settings.{mode}.loo: must be 'linear' or 'refit', got {s.get('loo')!r}")
-    return s
+    return {**inv["settings"][mode], "mode": mode}
 
 
 def fit_problem(problem: Problem, settings: dict, steps: int, loo: bool = False, candidates=()) -> dict:
