@@ -5,10 +5,11 @@ from functools import partial
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import log_to_file
 from stickslip.studies.onedof import critical_speed_from_config
 from stickslip.studies.specs import run_spec
 
-logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
+log_to_file(snakemake.log[0])  # noqa: F821
 config = snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
 for reading, path in zip(snakemake.params.readings, snakemake.output):

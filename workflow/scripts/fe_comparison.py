@@ -4,6 +4,8 @@ import csv
 from pathlib import Path
 
 from stickslip.fe.params import FrictionTable
+from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import INTERPRETATION, comparison_mapping, effective_fe_config
 from stickslip.studies.fe_comparison import (
     beam_metrics,
@@ -12,9 +14,7 @@ from stickslip.studies.fe_comparison import (
     continuum_dataset,
 )
 
-from fe_common import log_to, write_dataset
-
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821

@@ -15,10 +15,9 @@ from stickslip.fe_plots import (  # noqa: E402
     fe_scene_figure,
     fe_stability_figure,
 )
+from stickslip.io.progress import log_to_file  # noqa: E402
 
-from fe_common import log_to  # noqa: E402
-
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 inp, out, par = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 for beam_path, cont_path, png in zip(inp.beam, inp.continuum, out.scenes):
     beam, cont = xr.load_dataset(beam_path), xr.load_dataset(cont_path)
@@ -29,7 +28,6 @@ for beam_path, cont_path, png in zip(inp.beam, inp.continuum, out.scenes):
     fe_scene_figure(beam, cont, title=title).savefig(png, dpi=100)
     plt.close("all")
 dss = {(Path(p).parent.name, Path(p).stem): xr.load_dataset(p) for p in inp.readings}
-reported = {"max_horizontal_displacement": 0.00029, "mean_horizontal_displacement": -0.00015}
-fe_readings_figure(dss, par.scenes, par.readings, reported).savefig(out.readings, dpi=100)
+fe_readings_figure(dss, par.scenes, par.readings, par.reported).savefig(out.readings, dpi=100)
 fe_convergence_figure(xr.load_dataset(inp.convergence)).savefig(out.convergence, dpi=100)
 fe_stability_figure(xr.load_dataset(inp.stability)).savefig(out.stability, dpi=100)

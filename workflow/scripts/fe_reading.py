@@ -5,6 +5,8 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
     cross_scene_dataset,
@@ -13,9 +15,7 @@ from stickslip.studies.fe import (
     scene_mapping,
 )
 
-from fe_common import log_to, write_dataset
-
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821

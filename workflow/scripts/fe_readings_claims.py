@@ -8,10 +8,9 @@ from functools import lru_cache
 from stickslip.fe.readings import claims_per_reading
 from stickslip.io.claims import load_claims
 from stickslip.io.netcdf import read_dataset
+from stickslip.io.progress import log_to_file
 
-from fe_common import log_to
-
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 claims = load_claims([snakemake.input.claims])  # noqa: F821
 results = claims_per_reading(
     claims,

@@ -4,6 +4,8 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
     convergence_dataset,
@@ -13,9 +15,7 @@ from stickslip.studies.fe import (
 )
 from stickslip.studies.fe_comparison import increments_dataset
 
-from fe_common import log_to, write_dataset
-
-log_to(snakemake)  # noqa: F821
+log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config["fe"]  # noqa: F821
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821

@@ -8,11 +8,11 @@ from functools import partial
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.progress import step_callback
+from stickslip.io.progress import log_to_file, step_callback
 from stickslip.studies.onedof import sweep_from_config
 from stickslip.studies.specs import sweep_spec
 
-logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
+log_to_file(snakemake.log[0])  # noqa: F821
 reading, config = snakemake.wildcards.reading, snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
 for path in snakemake.output:

@@ -7,10 +7,11 @@ import logging
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
+from stickslip.io.progress import log_to_file
 from stickslip.studies.onedof import scene_run_dataset
 from stickslip.studies.specs import run_spec
 
-logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, format="%(asctime)s %(message)s")
+log_to_file(snakemake.log[0])  # noqa: F821
 config, scene = snakemake.params.config, snakemake.params.scene
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
 for (reading, method), path in zip(snakemake.params.runs, snakemake.output):

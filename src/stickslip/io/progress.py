@@ -124,8 +124,13 @@ def step_callback(label: str, every: float = 10.0, sink: Callable[[str], None] |
     return report
 
 
-def log_to_file(path) -> None:
-    """Send this process's log records (INFO and up, time-stamped) to ``path``: a job's log file."""
+def log_to_file(path, capture_output: bool = False) -> None:
+    """Send this process's log records (INFO and up, time-stamped) to ``path``: a job's log file. With
+    ``capture_output`` printed output and warnings go there too (line-buffered)."""
     import logging
+    import sys
 
-    logging.basicConfig(filename=str(path), level=logging.INFO, format="%(asctime)s %(message)s", force=True)
+    stream = open(path, "w", buffering=1)  # noqa: SIM115 - stays open for the life of the job
+    if capture_output:
+        sys.stdout = sys.stderr = stream
+    logging.basicConfig(stream=stream, level=logging.INFO, format="%(asctime)s %(message)s", force=True)
