@@ -30,6 +30,7 @@ class MoreauJean:
     theta: float = 0.5
     max_steps: int = 5_000_000
     name: str = "moreau"
+    fixed_step = True  # its work is t_end / h steps, known before the run: it cannot stall
 
     @property
     def settings(self) -> dict:
