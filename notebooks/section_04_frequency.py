@@ -92,7 +92,6 @@ fig = scalars_vs_reported(
             tol_rel=0.1,
             ref_label=f"Eq. 6 peak {float(eq6.peak_frequency_printed):.3f}",
             label="Fig. 2 frequency (peaks)",
-            unit="Hz",
         ),
         dict(
             var="frequency_spectrum",
@@ -100,7 +99,6 @@ fig = scalars_vs_reported(
             tol_rel=0.1,
             ref_label=f"Eq. 6 peak {float(eq6.peak_frequency_printed):.3f}",
             label="Fig. 2 frequency (spectrum)",
-            unit="Hz",
         ),
     ],
     title="baseline frequency per reading vs the Eq. 6 peak (as printed)",

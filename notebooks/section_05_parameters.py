@@ -40,6 +40,7 @@ from IPython.display import Markdown, display
 from stickslip.io.netcdf import read_dataset
 from stickslip.notebook import claims_frame, reported_value, scorecard, styled_claims
 from stickslip.plots import (
+    metric_units,
     readings_grid,
     run_failed,
     scalars_vs_reported,
@@ -86,8 +87,9 @@ def rep(claim):
     return reported_value(claims, claim)
 
 
-def quantity(var, claim, label, unit, **kw):
-    return dict(var=var, reported=rep(claim), label=label, unit=unit, **kw)
+def quantity(var, claim, label, **kw):
+    """A reported quantity: its claim's number (units: the metric registry's)."""
+    return dict(var=var, reported=rep(claim), label=label, **kw)
 
 
 def claims_of(prefixes):
@@ -123,17 +125,17 @@ fig = readings_grid(fig5, "timeseries", title="Fig. 5: belt velocity 1 mm/s")
 
 # %%
 q5 = [
-    quantity("frequency_peaks", "s5_fig5_frequency", "frequency", "Hz"),
-    quantity("amplitude_peak_to_peak", "s5_fig5_amplitude_1p8", "x peak-to-peak", "mm"),
-    quantity("slip_time", "s5_fig5_slip_time", "slip time", "s"),
-    dict(var="stick_time", reported=None, label="stick time", unit="s"),
+    quantity("frequency_peaks", "s5_fig5_frequency", "frequency"),
+    quantity("amplitude_peak_to_peak", "s5_fig5_amplitude_1p8", "x peak-to-peak"),
+    quantity("slip_time", "s5_fig5_slip_time", "slip time"),
+    dict(var="stick_time", reported=None, label="stick time"),
 ]
 fig = scalars_vs_reported(exact_of(fig5), q5, title="Fig. 5 (V_b = 1 mm/s)")
 q2 = [
-    dict(var="frequency_peaks", reported=0.25, label="frequency", unit="Hz"),
-    dict(var="amplitude_peak_to_peak", reported=1.5, label="x peak-to-peak", unit="mm"),
-    dict(var="slip_time", reported=1.4, label="slip time (Section 5: 1.4 s)", unit="s"),
-    dict(var="stick_time", reported=2.4, label="stick time", unit="s"),
+    dict(var="frequency_peaks", reported=0.25, label="frequency"),
+    dict(var="amplitude_peak_to_peak", reported=1.5, label="x peak-to-peak"),
+    dict(var="slip_time", reported=1.4, label="slip time (Section 5: 1.4 s)"),
+    dict(var="stick_time", reported=2.4, label="stick time"),
 ]
 fig = scalars_vs_reported(
     {r: baseline[r] for r in fig5 if r in baseline},
@@ -158,12 +160,12 @@ fig = readings_grid(
 
 # %%
 q6 = [
-    quantity("frequency_peaks", "s5_fig6_frequency", "frequency", "Hz"),
-    quantity("amplitude_peak_to_peak", "s5_fig6_peak_to_peak", "x peak-to-peak", "mm"),
-    quantity("amplitude_peak_to_zero", "s5_fig6_peak_to_zero", "x peak-to-zero", "mm"),
-    quantity("stick_time", "s5_fig6_stick_time", "stick time", "s"),
-    dict(var="first_stick_time", reported=None, label="first stick", unit="s"),
-    dict(var="slip_time", reported=None, label="slip time (paper: equal to Fig. 2)", unit="s"),
+    quantity("frequency_peaks", "s5_fig6_frequency", "frequency"),
+    quantity("amplitude_peak_to_peak", "s5_fig6_peak_to_peak", "x peak-to-peak"),
+    quantity("amplitude_peak_to_zero", "s5_fig6_peak_to_zero", "x peak-to-zero"),
+    quantity("stick_time", "s5_fig6_stick_time", "stick time"),
+    dict(var="first_stick_time", reported=None, label="first stick"),
+    dict(var="slip_time", reported=None, label="slip time (paper: equal to Fig. 2)"),
 ]
 fig = scalars_vs_reported(exact_of(fig6), q6, title="Fig. 6 (mu_s = 0.8)", ncols=3)
 
@@ -185,17 +187,16 @@ fig = readings_grid(fig7, "phase", title="Fig. 9: phase plot, damping C = 0.1")
 
 # %%
 q7 = [
-    quantity("frequency_peaks", "s5_fig7_frequency", "frequency", "Hz"),
-    quantity("amplitude_peak_to_peak", "s5_fig7_peak_to_peak", "x peak-to-peak", "mm"),
-    quantity("stick_time", "s5_fig7_stick_time", "stick time", "s"),
-    quantity("slip_time", "s5_fig7_slip_time", "slip time", "s"),
-    dict(var="amplitude_peak_to_zero", reported=None, label="x peak-to-zero", unit="mm"),
-    dict(var="max_speed", reported=None, label="max |v| (Fig. 8)", unit="mm/s"),
+    quantity("frequency_peaks", "s5_fig7_frequency", "frequency"),
+    quantity("amplitude_peak_to_peak", "s5_fig7_peak_to_peak", "x peak-to-peak"),
+    quantity("stick_time", "s5_fig7_stick_time", "stick time"),
+    quantity("slip_time", "s5_fig7_slip_time", "slip time"),
+    dict(var="amplitude_peak_to_zero", reported=None, label="x peak-to-zero"),
+    dict(var="max_speed", reported=None, label="max |v| (Fig. 8)"),
     dict(
         var="periodic",
         reported=rep("s5_fig9_periodic"),
         label="periodic (Fig. 9: 1 = closed cycle)",
-        unit="1",
     ),
 ]
 fig = scalars_vs_reported(exact_of(fig7), q7, title="Figs. 7-9 (C = 0.1)", ncols=4)
@@ -327,7 +328,8 @@ def val(ds, var):
     return float("nan") if run_failed(ds) else float(ds[var])
 
 
-def line(label, data, var, unit, fmt=".3g"):
+def line(label, data, var, fmt=".3g"):
+    unit = metric_units(var)
     parts = [
         f"{r} failed – not a result" if run_failed(ds) else f"{r} {val(ds, var):{fmt}} {unit}"
         for r, ds in data.items()
@@ -342,15 +344,15 @@ best = by_reading.get("reproduced", by_reading.iloc[:, 0] * 0).sort_values(ascen
 display(
     Markdown(
         f"""
-* **Frequencies.** {line("Fig. 2", base, "frequency_peaks", "Hz")};
-  {line("Fig. 5", e5, "frequency_peaks", "Hz")};
-  {line("Fig. 6", e6, "frequency_peaks", "Hz")}; {line("Fig. 7", e7, "frequency_peaks", "Hz")}.
+* **Frequencies.** {line("Fig. 2", base, "frequency_peaks")};
+  {line("Fig. 5", e5, "frequency_peaks")};
+  {line("Fig. 6", e6, "frequency_peaks")}; {line("Fig. 7", e7, "frequency_peaks")}.
   Paper: 0.25, 0.27, 0.21, 0.33 Hz.
-* **Peak-to-peak amplitude.** {line("Fig. 2", base, "amplitude_peak_to_peak", "mm")};
-  {line("Fig. 5", e5, "amplitude_peak_to_peak", "mm")}; {line("Fig. 6", e6, "amplitude_peak_to_peak", "mm")};
-  {line("Fig. 7", e7, "amplitude_peak_to_peak", "mm")}. Paper: 1.5, 1.8, 1.25, 0.5 mm.
-* **Stick times.** {line("Fig. 2", base, "stick_time", "s")}; {line("Fig. 6", e6, "stick_time", "s")};
-  {line("Fig. 7", e7, "stick_time", "s")}. Paper: 2.4, 4.6, 0.8 s. A nan means no complete stick interval in
+* **Peak-to-peak amplitude.** {line("Fig. 2", base, "amplitude_peak_to_peak")};
+  {line("Fig. 5", e5, "amplitude_peak_to_peak")}; {line("Fig. 6", e6, "amplitude_peak_to_peak")};
+  {line("Fig. 7", e7, "amplitude_peak_to_peak")}. Paper: 1.5, 1.8, 1.25, 0.5 mm.
+* **Stick times.** {line("Fig. 2", base, "stick_time")}; {line("Fig. 6", e6, "stick_time")};
+  {line("Fig. 7", e7, "stick_time")}. Paper: 2.4, 4.6, 0.8 s. A nan means no complete stick interval in
   the steady window (the mass slides steadily or only grazes the belt velocity).
 * **Section 5 claims reproduced per reading** (all kinds, incl. sweeps): """
         + ", ".join(f"{r} {int(n)}" for r, n in best.items())

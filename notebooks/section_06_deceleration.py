@@ -91,11 +91,11 @@ exact = {r: d["exact"] for r, d in data.items() if "exact" in d}
 fig = scalars_vs_reported(
     exact,
     [
-        dict(var="early_amplitude", reported=None, label="x p-p, first half", unit="mm"),
-        dict(var="late_amplitude", reported=None, label="x p-p, second half", unit="mm"),
-        dict(var="early_velocity_amplitude", reported=None, label="v p-p, first half", unit="mm/s"),
-        dict(var="late_velocity_amplitude", reported=None, label="v p-p, second half", unit="mm/s"),
-        dict(var="final_speed", reported=0.0, tol_abs=0.01, label="|v| at the end", unit="mm/s"),
+        dict(var="early_amplitude", reported=None, label="x p-p, first half"),
+        dict(var="late_amplitude", reported=None, label="x p-p, second half"),
+        dict(var="early_velocity_amplitude", reported=None, label="v p-p, first half"),
+        dict(var="late_velocity_amplitude", reported=None, label="v p-p, second half"),
+        dict(var="final_speed", reported=0.0, tol_abs=0.01, label="|v| at the end"),
     ],
     title="Fig. 15-16: decay and settling (exact solver)",
     ncols=5,

@@ -100,8 +100,8 @@ display(
 fig = scalars_vs_reported(
     fig02,
     [
-        dict(var="friction_min_slip", reported=MU_PLATEAU, label="smallest μ while slipping", unit="1"),
-        dict(var="relative_speed_max", reported=V_PLATEAU, label="largest |v_r|", unit="mm/s"),
+        dict(var="friction_min_slip", reported=MU_PLATEAU, label="smallest μ while slipping"),
+        dict(var="relative_speed_max", reported=V_PLATEAU, label="largest |v_r|"),
     ],
     title="Fig. 17 numbers per reading (baseline scene, exact solver)",
 )

@@ -111,4 +111,22 @@ def test_friction_along_a_solution_ignores_switching_samples():
     np.testing.assert_allclose(mu, [0.5 * (1 - 0.5 * 0.3), 0.5 * (1 - 0.5 * 0.8)])
     t = np.arange(5.0)
     m = extra_metrics(t, np.zeros(5), v, vb, phase, law, PAPER_BASELINE.normal_force)
-    assert m["friction_min_slip"][0] == pytest.approx(0.5 * (1 - 0.5 * 0.8))
+    assert m["friction_min_slip"] == pytest.approx(0.5 * (1 - 0.5 * 0.8))
+
+
+def test_every_measured_metric_is_registered_with_its_units():
+    """The registry is the one place a metric's units and long name are written: a baseline run's limit-cycle
+    table and extra metrics carry exactly the registry's attributes."""
+    from stickslip.analysis.extra_metrics import extra_metrics
+    from stickslip.analysis.metrics import METRICS, limit_cycle_metrics, metric_attrs
+    from stickslip.model import PAPER_BASELINE, BeltModel
+    from stickslip.solvers import make_solver
+
+    model = BeltModel.build(PAPER_BASELINE, "consistent")
+    traj = make_solver("exact").solve(model, 40.0, np.linspace(0, 40, 4001))
+    table = limit_cycle_metrics(traj, 10.0, count_window=18.0)
+    extra = extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, model.friction, 10.0)
+    assert set(table) | set(extra) | {"slip_fraction"} == set(METRICS)
+    for name, m in table.items():
+        assert (m.units, m.long_name) == tuple(metric_attrs(name, count_window=18.0).values()), name
+    assert table["peaks_in_count_window"].long_name == "displacement maxima in the first 18 s"

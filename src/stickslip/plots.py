@@ -284,6 +284,13 @@ def dense_map_figure(ds, names, title: str):
 # -- presentation helpers for the comparison notebooks -------------------------------------------------
 
 
+def metric_units(name: str) -> str:
+    """A registered metric's units as a reader writes them (mm/s for the UDUNITS mm s-1)."""
+    from .analysis.metrics import METRICS
+
+    return METRICS[name].units.replace(" s-1", "/s") if name in METRICS else ""
+
+
 def run_failed(ds) -> bool:
     """True when the dataset's solver failed (its curves must never be drawn as a result)."""
     if "solver_ok" in ds and ds["solver_ok"].ndim == 0:
@@ -317,8 +324,8 @@ def mark_reported_point(ax, x, y, label=None, color="k"):
 def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
     """One panel per reported quantity: the measured value of each reading (coloured dot) against the paper's
     number (dotted line, grey band = the claim's tolerance when given). `quantities` is a list of dicts with
-    keys var, reported, label, unit and optionally tol_rel / tol_abs and ref_label (the reference line's
-    text). A failed run is written out, not drawn; a NaN (nothing to measure, e.g. no stick in a reading
+    keys var, reported, label and optionally unit (default: the metric registry's), tol_rel / tol_abs and
+    ref_label (the reference line's text). A failed run is written out, not drawn; a NaN (nothing to measure, e.g. no stick in a reading
     that never sticks) is written as 'n/a'."""
     readings = list(datasets)
     colours = reading_colours(readings)
@@ -372,7 +379,7 @@ def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
         ax.set_yticks(ypos, readings, fontsize=7)
         ax.set_ylim(-0.7, len(readings) - 0.3)
         ax.invert_yaxis()
-        ax.set_xlabel(f"{q['label']} [{q['unit']}]", fontsize=8)
+        ax.set_xlabel(f"{q['label']} [{q.get('unit') or metric_units(q['var'])}]", fontsize=8)
         ax.tick_params(axis="x", labelsize=7)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)

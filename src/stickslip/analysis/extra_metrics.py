@@ -11,7 +11,9 @@ import numpy as np
 from .friction_curve import friction_along_solution
 
 
-def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str, tuple[float, str, str]]:
+def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str, float]:
+    """Values of the registered metrics early/late (velocity) amplitude, final speed, the smallest slip
+    friction coefficient and the largest relative speed (units and names: ``metrics.METRICS``)."""
     t, x, v, vb = (np.asarray(a, dtype=float) for a in (t, x, v, vb))
     # Halves of the run, or of the deceleration phase when the belt stops: comparing "before" with "after the
     # belt has stopped" would make any decay claim true by construction.
@@ -22,35 +24,11 @@ def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str
     _, mu_slip = friction_along_solution(v, vb, phase, friction, normal_force)
     with np.errstate(all="ignore"):
         return {
-            "early_amplitude": (
-                float(np.ptp(x[half])),
-                "mm",
-                "peak-to-peak displacement, first half of the run (of the deceleration if the belt stops)",
-            ),
-            "late_amplitude": (
-                float(np.ptp(x[late])),
-                "mm",
-                "peak-to-peak displacement, second half of the run (of the deceleration if the belt stops)",
-            ),
-            "early_velocity_amplitude": (
-                float(np.ptp(v[half])),
-                "mm s-1",
-                "peak-to-peak velocity, first half",
-            ),
-            "late_velocity_amplitude": (
-                float(np.ptp(v[late])),
-                "mm s-1",
-                "peak-to-peak velocity, second half",
-            ),
-            "final_speed": (float(abs(v[-1])), "mm s-1", "|velocity| at the end of the run"),
-            "friction_min_slip": (
-                float(np.min(mu_slip)) if mu_slip.size else np.nan,
-                "1",
-                "smallest |F|/N while slipping (Fig. 17 plateau level)",
-            ),
-            "relative_speed_max": (
-                float(np.max(np.abs(v - vb))),
-                "mm s-1",
-                "largest |v_r| along the solution",
-            ),
+            "early_amplitude": float(np.ptp(x[half])),
+            "late_amplitude": float(np.ptp(x[late])),
+            "early_velocity_amplitude": float(np.ptp(v[half])),
+            "late_velocity_amplitude": float(np.ptp(v[late])),
+            "final_speed": float(abs(v[-1])),
+            "friction_min_slip": float(np.min(mu_slip)) if mu_slip.size else np.nan,
+            "relative_speed_max": float(np.max(np.abs(v - vb))),
         }

@@ -25,6 +25,65 @@ class Metric:
     long_name: str
 
 
+@dataclass(frozen=True)
+class MetricInfo:
+    """What a metric is: its units (UDUNITS) and long name; ``{count_window}`` is filled in per run."""
+
+    units: str
+    long_name: str
+
+
+#: Every scalar measured from a 1-DOF run: the one place its units and long name are written. Datasets
+#: (studies), sweeps and maps (analysis.sweep), the notebooks' quantity labels and the claims table read
+#: them from here.
+METRICS: dict[str, MetricInfo] = {
+    "solver_ok": MetricInfo("1", "solver finished without failure (1) or failed (0)"),
+    "stick_time": MetricInfo("s", "mean duration of complete stick intervals (steady window)"),
+    "slip_time": MetricInfo("s", "mean duration of complete slip intervals (steady window)"),
+    "first_stick_time": MetricInfo("s", "duration of the first stick interval"),
+    "stick_count": MetricInfo("1", "number of complete stick intervals (steady window)"),
+    "stick_fraction": MetricInfo("1", "fraction of steady-window samples in stick"),
+    "slip_fraction": MetricInfo("1", "fraction of steady-window samples in slip"),
+    "period": MetricInfo("s", "mean stick plus mean slip duration"),
+    "amplitude_peak_to_peak": MetricInfo("mm", "peak-to-peak displacement (steady window)"),
+    "amplitude_peak_to_zero": MetricInfo("mm", "largest |displacement| from zero (steady window)"),
+    "max_displacement": MetricInfo("mm", "largest displacement (steady window)"),
+    "min_displacement": MetricInfo("mm", "smallest displacement (steady window)"),
+    "max_velocity": MetricInfo("mm s-1", "largest velocity (steady window)"),
+    "min_velocity": MetricInfo("mm s-1", "smallest velocity (steady window)"),
+    "max_speed": MetricInfo("mm s-1", "largest |velocity| (steady window)"),
+    "max_speed_position": MetricInfo("mm", "displacement where |velocity| is largest"),
+    "stick_velocity": MetricInfo("mm s-1", "mean velocity while sticking"),
+    "stick_end_position": MetricInfo("mm", "displacement at which stick ends (steady window)"),
+    "frequency_peaks": MetricInfo("Hz", "frequency from displacement peak spacing"),
+    "frequency_spectrum": MetricInfo("Hz", "frequency of the spectral peak"),
+    "peaks_in_count_window": MetricInfo("1", "displacement maxima in the first {count_window:g} s"),
+    "periodic": MetricInfo("1", "last two cycles repeat to 1e-3 (1) or not (0)"),
+    # beyond the limit cycle (analysis.extra_metrics): the decelerating belt and the friction curve
+    "early_amplitude": MetricInfo(
+        "mm", "peak-to-peak displacement, first half of the run (of the deceleration if the belt stops)"
+    ),
+    "late_amplitude": MetricInfo(
+        "mm", "peak-to-peak displacement, second half of the run (of the deceleration if the belt stops)"
+    ),
+    "early_velocity_amplitude": MetricInfo("mm s-1", "peak-to-peak velocity, first half"),
+    "late_velocity_amplitude": MetricInfo("mm s-1", "peak-to-peak velocity, second half"),
+    "final_speed": MetricInfo("mm s-1", "|velocity| at the end of the run"),
+    "friction_min_slip": MetricInfo("1", "smallest |F|/N while slipping (Fig. 17 plateau level)"),
+    "relative_speed_max": MetricInfo("mm s-1", "largest |v_r| along the solution"),
+}
+
+
+def metric_attrs(name: str, **context) -> dict:
+    """The CF attributes of a registered metric (``units``, ``long_name``)."""
+    info = METRICS[name]
+    return {"units": info.units, "long_name": info.long_name.format(**context)}
+
+
+def metric(name: str, value: float, **context) -> Metric:
+    return Metric(float(value), **metric_attrs(name, **context))
+
+
 def phase_runs(t: np.ndarray, phase: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(start, end) times of stick runs and of slip runs from per-sample phases.
 
@@ -126,7 +185,7 @@ def limit_cycle_metrics(
     t, x, v = traj.t, traj.x, traj.v
     nan = float("nan")
     if not traj.ok or not np.all(np.isfinite(x)):
-        return {"solver_ok": Metric(0.0, "1", "solver finished without failure (1) or failed (0)")}
+        return {"solver_ok": metric("solver_ok", 0.0)}
     window = t >= transient
     tw, xw, vw = t[window], x[window], v[window]
     stick, slip = intervals(traj)
@@ -156,48 +215,27 @@ def limit_cycle_metrics(
     freq_peaks = nan if at_rest else frequency_from_peaks(tw, xw)
     freq_spectrum = nan if at_rest else frequency_from_spectrum(tw, xw)
 
-    return {
-        "solver_ok": Metric(1.0, "1", "solver finished without failure (1) or failed (0)"),
-        "stick_time": Metric(
-            mean(stick_len), "s", "mean duration of complete stick intervals (steady window)"
-        ),
-        "slip_time": Metric(mean(slip_len), "s", "mean duration of complete slip intervals (steady window)"),
-        "first_stick_time": Metric(
-            float(stick[0, 1] - stick[0, 0]) if len(stick) else nan,
-            "s",
-            "duration of the first stick interval",
-        ),
-        "stick_count": Metric(float(len(stick_c)), "1", "number of complete stick intervals (steady window)"),
-        "stick_fraction": Metric(
-            float(np.mean(traj.phase[window] == STICK)) if window.any() else nan,
-            "1",
-            "fraction of steady-window samples in stick",
-        ),
-        "period": Metric(mean(stick_len) + mean(slip_len), "s", "mean stick plus mean slip duration"),
-        "amplitude_peak_to_peak": Metric(
-            float(np.ptp(xw)), "mm", "peak-to-peak displacement (steady window)"
-        ),
-        "amplitude_peak_to_zero": Metric(
-            float(np.max(np.abs(xw))), "mm", "largest |displacement| from zero (steady window)"
-        ),
-        "max_displacement": Metric(float(np.max(xw)), "mm", "largest displacement (steady window)"),
-        "min_displacement": Metric(float(np.min(xw)), "mm", "smallest displacement (steady window)"),
-        "max_velocity": Metric(float(np.max(vw)), "mm s-1", "largest velocity (steady window)"),
-        "min_velocity": Metric(float(np.min(vw)), "mm s-1", "smallest velocity (steady window)"),
-        "max_speed": Metric(float(np.abs(vw[speed_at])), "mm s-1", "largest |velocity| (steady window)"),
-        "max_speed_position": Metric(float(xw[speed_at]), "mm", "displacement where |velocity| is largest"),
-        "stick_velocity": Metric(
-            float(np.mean(v[traj.phase == STICK])) if np.any(traj.phase == STICK) else nan,
-            "mm s-1",
-            "mean velocity while sticking",
-        ),
-        "stick_end_position": Metric(mean(release), "mm", "displacement at which stick ends (steady window)"),
-        "frequency_peaks": Metric(freq_peaks, "Hz", "frequency from displacement peak spacing"),
-        "frequency_spectrum": Metric(freq_spectrum, "Hz", "frequency of the spectral peak"),
-        "peaks_in_count_window": Metric(
-            float(count_peaks(t, x, 0.0, count_window)),
-            "1",
-            f"displacement maxima in the first {count_window:g} s",
-        ),
-        "periodic": Metric(periodic, "1", "last two cycles repeat to 1e-3 (1) or not (0)"),
+    values = {
+        "solver_ok": 1.0,
+        "stick_time": mean(stick_len),
+        "slip_time": mean(slip_len),
+        "first_stick_time": float(stick[0, 1] - stick[0, 0]) if len(stick) else nan,
+        "stick_count": float(len(stick_c)),
+        "stick_fraction": float(np.mean(traj.phase[window] == STICK)) if window.any() else nan,
+        "period": mean(stick_len) + mean(slip_len),
+        "amplitude_peak_to_peak": float(np.ptp(xw)),
+        "amplitude_peak_to_zero": float(np.max(np.abs(xw))),
+        "max_displacement": float(np.max(xw)),
+        "min_displacement": float(np.min(xw)),
+        "max_velocity": float(np.max(vw)),
+        "min_velocity": float(np.min(vw)),
+        "max_speed": float(np.abs(vw[speed_at])),
+        "max_speed_position": float(xw[speed_at]),
+        "stick_velocity": float(np.mean(v[traj.phase == STICK])) if np.any(traj.phase == STICK) else nan,
+        "stick_end_position": mean(release),
+        "frequency_peaks": freq_peaks,
+        "frequency_spectrum": freq_spectrum,
+        "peaks_in_count_window": float(count_peaks(t, x, 0.0, count_window)),
+        "periodic": periodic,
     }
+    return {name: metric(name, value, count_window=count_window) for name, value in values.items()}

@@ -10,7 +10,7 @@ from ..analysis.critical import continuation, critical_speed
 from ..analysis.divergence import BoundedSolver
 from ..analysis.extra_metrics import extra_metrics
 from ..analysis.friction_curve import friction_along_solution, friction_table
-from ..analysis.metrics import limit_cycle_metrics
+from ..analysis.metrics import limit_cycle_metrics, metric_attrs
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
 from ..io.netcdf import trajectory_dataset
 from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
@@ -25,16 +25,12 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     metrics = limit_cycle_metrics(traj, spec.transient, spec.count_window)
     ds = trajectory_dataset(traj, metrics)
     if "stick_fraction" in ds:
-        ds["slip_fraction"] = (
-            (),
-            1.0 - float(ds.stick_fraction),
-            {"units": "1", "long_name": "fraction of steady-window samples in slip"},
-        )
+        ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
     if traj.ok:
         friction, normal = spec.model.friction, spec.params.normal_force
         extra = extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, friction, normal)
-        for name, (value, units, long_name) in extra.items():
-            ds[name] = ((), value, {"units": units, "long_name": long_name})
+        for name, value in extra.items():
+            ds[name] = ((), value, metric_attrs(name))
     ds.attrs["solver_run_settings"] = dict(traj.settings)
     stats = traj.stats
     ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
@@ -91,16 +87,8 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
     ds = merge_chunks([axis], [chunk_dataset([axis], n, 0, results)])
     for m in SWEEP_METRICS:  # every run failed: keep the variables, all NaN
         if m not in ds:
-            ds[m] = (
-                spec.parameter,
-                np.full(n, np.nan),
-                {"units": "1", "long_name": f"{m} (no successful run)"},
-            )
-    ds["slip_fraction"] = (
-        spec.parameter,
-        1.0 - ds.stick_fraction.values,
-        {"units": "1", "long_name": "fraction of steady-window samples in slip"},
-    )
+            ds[m] = (spec.parameter, np.full(n, np.nan), metric_attrs(m))
+    ds["slip_fraction"] = (spec.parameter, 1.0 - ds.stick_fraction.values, metric_attrs("slip_fraction"))
     if not dense:  # the paper's curves: keep each run's time series
         ds = ds.assign_coords(time=("time", base.t_eval, {"units": "s", "long_name": "time"}))
         dims = (spec.parameter, "time")
