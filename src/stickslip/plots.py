@@ -325,8 +325,8 @@ def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
     """One panel per reported quantity: the measured value of each reading (coloured dot) against the paper's
     number (dotted line, grey band = the claim's tolerance when given). `quantities` is a list of dicts with
     keys var, reported, label and optionally unit (default: the metric registry's), tol_rel / tol_abs and
-    ref_label (the reference line's text). A failed run is written out, not drawn; a NaN (nothing to measure, e.g. no stick in a reading
-    that never sticks) is written as 'n/a'."""
+    ref_label (the reference line's text). A failed run is written out, not drawn; a NaN (nothing to
+    measure, e.g. no stick in a reading that never sticks) is written as 'n/a'."""
     readings = list(datasets)
     colours = reading_colours(readings)
     n = len(quantities)
