@@ -53,7 +53,7 @@ hdr += f" {'stick':>6s}"
 print(hdr)
 print("-" * len(hdr))
 for scene in ("section9_kinematic_0p5mm_s", "section11_penalty_15p2rpm", "section12_angle30_15p2rpm"):
-    mp = deep_merge(scene_mapping(cfg, scene), {"solver": {"duration": WINDOW}})
+    mp = deep_merge(scene_mapping(cfg, scene), {"solver": {"t_end": WINDOW}})
     ps = SceneParams.from_mapping({k: mp[k] for k in ("beam", "disc", "contact", "solver")})
     cs = continuum_scene_from_mapping(mp, fr, 100, 1)
     integrate_continuum(cs, 1e-5)  # compile outside the timing

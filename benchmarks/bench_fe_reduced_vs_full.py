@@ -13,7 +13,7 @@ BASE = {
     "beam": {"n_elements": 20},
     "disc": {"diameter": 25.0},
     "contact": {},
-    "solver": {"output_interval": 1e-5},
+    "solver": {"output_dt": 1e-5},
 }
 CASES = {
     "s9 0.5 mm/s (stick-slip)": {"disc": {"diameter": 25.0, "surface_speed_mm_s": 0.5}},

@@ -51,7 +51,7 @@ CASES = {
         {"fe": {"defaults": {"beam": {"youngs_modulus_gpa": -210.0}}}},
         ["youngs_modulus_gpa"],
     ),
-    "fe_nan_duration": ({"fe": {"defaults": {"solver": {"duration": float("nan")}}}}, ["duration"]),
+    "fe_nan_t_end": ({"fe": {"defaults": {"solver": {"t_end": float("nan")}}}}, ["t_end"]),
     "fe_unknown_sweep_base": (
         {"fe": {"sweeps": {"angle_sweep": {"base": "no_scene"}}}},
         ["fe.sweeps.angle_sweep.base"],

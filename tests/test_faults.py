@@ -20,7 +20,7 @@ from project_run import copy_project, run_snakemake, small_config_args, start_sn
 
 SCENE = "section9_kinematic_0p5mm_s"
 TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"
-SLOW = {"fe": {"defaults": {"solver": {"duration": 2.0, "output_interval": 1.0e-3}}}}  # ~10 s of integration
+SLOW = {"fe": {"defaults": {"solver": {"t_end": 2.0, "output_dt": 1.0e-3}}}}  # ~10 s of integration
 
 
 @pytest.mark.pipeline

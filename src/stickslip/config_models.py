@@ -155,14 +155,14 @@ class DenseRange(Section):
     start: Finite
     stop: Finite
     num: Annotated[int, Field(ge=2)]
-    scale: Literal["linear", "log"] | None = None
+    spacing: Literal["linear", "log"] | None = None  # the same key as a dense map's axis
 
     @model_validator(mode="after")
     def ordered(self):
         if self.start >= self.stop:
             raise ValueError(f"start < stop needed, got {self.start!r} >= {self.stop!r}")
-        if self.scale == "log" and self.start <= 0:
-            raise ValueError(f"log scale needs start > 0, got {self.start!r}")
+        if self.spacing == "log" and self.start <= 0:
+            raise ValueError(f"log spacing needs start > 0, got {self.start!r}")
         return self
 
 
@@ -403,7 +403,7 @@ class FailureMap(Section):
 class MethodsStudy(Section):
     base_params: BeltParameters
     t_end: Positive
-    samples_per_second: Positive
+    output_dt: Positive
     budget: Budget
     timing: Timing
     paper_method: StudyMethod
@@ -447,9 +447,9 @@ class Contact(Section):
 
 
 class FeSolver(Section):
-    duration: Positive | None = Field(None, description="s")
+    t_end: Positive | None = Field(None, description="simulated time [s]")
     safety_factor: Fraction | None = None
-    output_interval: Positive | None = Field(None, description="s")
+    output_dt: Positive | None = Field(None, description="output interval [s]")
     initial_state: Literal["static", "drop", "undeformed"] | None = None
     mass_damping: NonNegative | None = Field(None, description="s-1")
     stiffness_damping: NonNegative | None = Field(None, description="s")
@@ -476,14 +476,14 @@ class FeSweep(Section):
     units: str | None = None
     long_name: str | None = None
     values: Annotated[list[Finite], Field(min_length=2)]
-    duration: Positive | None = None
+    t_end: Positive | None = None
 
 
 class Convergence(Section):
     base: str
     n_elements: Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2)]
     safety_factors: Annotated[list[Fraction], Field(min_length=1)] | None = None
-    duration: Positive
+    t_end: Positive
 
 
 class Stability(Section):
@@ -492,7 +492,7 @@ class Stability(Section):
     slopes: Annotated[list[Finite], Field(min_length=1)]
     crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
     crosscheck_e_folds: Positive | None = None
-    crosscheck_max_duration: Positive | None = None
+    crosscheck_max_t_end: Positive | None = None
 
 
 class Reduced(Section):
@@ -506,7 +506,7 @@ Mesh = Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2, max_leng
 
 class Comparison(Section):
     mesh: Mesh
-    duration: Positive
+    t_end: Positive
     notes: dict[str, str] | None = None
 
 
@@ -518,8 +518,8 @@ class Increments(Section):
 
 
 class LongRuns(Section):
-    scene_duration: Positive
-    comparison_duration: Positive
+    scene_t_end: Positive
+    comparison_t_end: Positive
 
 
 class Fe(Section):
@@ -686,7 +686,7 @@ class LawTiming(Timing):
 class MethodsPerLaw(Section):
     laws: list[str]
     t_end: Positive
-    samples_per_second: Positive
+    output_dt: Positive
     timing: LawTiming
     methods: Annotated[list[StudyMethod], Field(min_length=1)]
     paper_method: str

@@ -61,10 +61,10 @@ def test_drop_start_rings_at_the_propped_cantilever_frequency():
         "beam": {"n_elements": 20},
         "disc": {"surface_speed_mm_s": 19.9},
         "solver": {
-            "duration": 0.03,
+            "t_end": 0.03,
             "initial_state": "drop",
             "stiffness_damping": 5e-9,
-            "output_interval": 5e-6,
+            "output_dt": 5e-6,
         },
     }
     _, m, _ = run_scene(mp, FIG17)
@@ -76,7 +76,7 @@ def test_static_start_on_the_axis_has_no_bending_at_angle_zero():
     mp = {
         "disc": {"surface_speed_mm_s": 19.9},
         "contact": {"surface_offset": False},
-        "solver": {"duration": 0.01, "initial_state": "static"},
+        "solver": {"t_end": 0.01, "initial_state": "static"},
     }
     r, _, _ = run_scene(mp, FIG17)
     assert np.abs(r.y - r.y[0]).max() < 1e-15
@@ -89,8 +89,8 @@ def test_response_converges_in_element_count_and_step(n_el):
         mp = {
             "beam": {"n_elements": n},
             "disc": {"surface_speed_mm_s": 0.5},
-            "solver": {"duration": 0.03, "initial_state": "drop", "stiffness_damping": 5e-9,
-                       "output_interval": 2.5e-6, "safety_factor": sf},
+            "solver": {"t_end": 0.03, "initial_state": "drop", "stiffness_damping": 5e-9,
+                       "output_dt": 2.5e-6, "safety_factor": sf},
         }  # fmt: skip
         return run_scene(mp, FIG17)[1]
 

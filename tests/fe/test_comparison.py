@@ -28,10 +28,10 @@ def test_beam_matches_continuum_on_a_drop(disc, contact):
         "disc": disc,
         "contact": contact,
         "solver": {
-            "duration": 0.02,
+            "t_end": 0.02,
             "initial_state": "drop",
             "stiffness_damping": 5e-9,
-            "output_interval": 5e-6,
+            "output_dt": 5e-6,
         },
     }
     cont = continuum_dataset(mapping, FIG17, nx=100, ny=1, name="s")

@@ -13,7 +13,7 @@ from stickslip.studies.fe import result_dataset, scene_dataset  # noqa: E402
 MAPPING = {
     "beam": {"n_elements": 6},
     "disc": {"surface_speed_mm_s": 0.5},
-    "solver": {"duration": 0.004, "initial_state": "drop", "output_interval": 2.5e-6},
+    "solver": {"t_end": 0.004, "initial_state": "drop", "output_dt": 2.5e-6},
     "output": {"bin_width": 2e-4, "windows": [[0.0, 0.001], [0.003, 0.004]]},
 }
 

@@ -149,7 +149,7 @@ def test_stall_budget_counts_rhs_evaluations_of_adaptive_methods_only():
     from stickslip.studies.methods import run_scene
 
     cfg = {
-        "samples_per_second": 20,
+        "output_dt": 0.05,
         "budget": {"max_rhs": 3000, "max_cpu": 60.0},
         "timing": {"min_repeats": 1, "max_repeats": 1, "min_total_cpu": 0.0},
     }

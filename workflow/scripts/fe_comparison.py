@@ -37,5 +37,5 @@ write_dataset(
     snakemake.output.dataset,  # noqa: F821
     scene=dict(cmp),
     interpretation=INTERPRETATION,
-    method={"kind": "model comparison", "duration": cmp["duration"]},
+    method={"kind": "model comparison", "t_end": cmp["t_end"]},
 )

@@ -10,7 +10,7 @@ from stickslip.validation.setup import ValidationSetup
 setup = ValidationSetup(snakemake.params.validation)
 cfg = setup.cfg["methods_per_law"]
 t_end = float(cfg["t_end"])
-t_eval = np.linspace(0.0, t_end, int(round(t_end * cfg["samples_per_second"])) + 1)
+t_eval = np.linspace(0.0, t_end, int(round(t_end / cfg["output_dt"])) + 1)
 for law, path in zip(cfg["laws"], snakemake.output, strict=True):
     records, ref_cycle = methods_study(
         setup.model(law), cfg["methods"], t_end, t_eval, setup.solver(), cfg["timing"]

@@ -174,16 +174,16 @@ class ContactParams:
 class SolverParams:
     """Explicit central-difference settings."""
 
-    duration: float = 1.0  #: simulated time [s]
+    t_end: float = 1.0  #: simulated time [s] (the 1-DOF runs' name)
     safety_factor: float = 0.9  #: dt = safety_factor * 2 / omega_max [-]
-    output_interval: float = 1.0e-5  #: sampling interval of the stored trajectory [s]
+    output_dt: float = 1.0e-5  #: sampling interval of the stored trajectory [s]
     initial_state: str = "static"  #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
     mass_damping: float = 0.0  #: mass-proportional Rayleigh damping alpha [s-1]
     stiffness_damping: float = 0.0  #: stiffness-proportional Rayleigh damping beta [s]
 
     def __post_init__(self) -> None:
-        _positive("duration", self.duration)
-        _positive("output_interval", self.output_interval)
+        _positive("t_end", self.t_end)
+        _positive("output_dt", self.output_dt)
         if not (0 < self.safety_factor <= 1.0):
             raise ValueError(f"safety_factor: must lie in (0, 1], got {self.safety_factor!r}")
         if self.initial_state not in INITIAL_STATES:

@@ -103,19 +103,19 @@ def scene_mapping(fe_cfg: Mapping, name: str, reading: str | None = None) -> dic
 
 def effective_fe_config(config: Mapping) -> dict:
     """The ``fe`` config with the long-run switch applied: top-level ``fe_long_runs: true`` runs the scenes
-    for ``fe.long_runs.scene_duration`` (the paper's 1 s) and the model comparison for
-    ``fe.long_runs.comparison_duration`` (the paper's 0.65 s); the default build runs short windows."""
+    for ``fe.long_runs.scene_t_end`` (the paper's 1 s) and the model comparison for
+    ``fe.long_runs.comparison_t_end`` (the paper's 0.65 s); the default build runs short windows."""
     fe = copy.deepcopy(dict(config["fe"]))
     if config.get("fe_long_runs", False):
         lr = fe.get("long_runs", {})
-        fe.setdefault("defaults", {}).setdefault("solver", {})["duration"] = float(lr["scene_duration"])
-        fe.setdefault("comparison", {})["duration"] = float(lr["comparison_duration"])
+        fe.setdefault("defaults", {}).setdefault("solver", {})["t_end"] = float(lr["scene_t_end"])
+        fe.setdefault("comparison", {})["t_end"] = float(lr["comparison_t_end"])
     return fe
 
 
 def comparison_mapping(fe_cfg: Mapping, name: str) -> dict:
     """Scene mapping (default reading) with the model comparison's duration."""
-    return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"duration": fe_cfg["comparison"]["duration"]}})
+    return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"t_end": fe_cfg["comparison"]["t_end"]}})
 
 
 def _natural_frequencies(scene) -> np.ndarray:
@@ -161,9 +161,9 @@ def run_scene(
     r = integrate(
         system,
         scene.law,
-        duration or sp.duration,
+        duration or sp.t_end,
         safety_factor=float((reduced or {}).get("safety_factor", sp.safety_factor)),
-        output_interval=sp.output_interval,
+        output_interval=sp.output_dt,
         initial_state=sp.initial_state,
         mass_damping=sp.mass_damping,
         stiffness_damping=sp.stiffness_damping,
@@ -348,8 +348,8 @@ def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> 
     for val in sw["values"]:
         mp = copy.deepcopy(base)
         mp.setdefault(path[0], {})[path[1]] = val
-        if "duration" in sw:
-            mp.setdefault("solver", {})["duration"] = sw["duration"]
+        if "t_end" in sw:
+            mp.setdefault("solver", {})["t_end"] = sw["t_end"]
         _, m, _ = run_scene(mp, friction)
         rows.append(m)
     coord = sw["coord"]
@@ -408,7 +408,7 @@ def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
     for i, n in enumerate(n_el):
         for j, sf in enumerate(sfs):
             mp = deep_merge(
-                base, {"beam": {"n_elements": n}, "solver": {"duration": cv["duration"], "safety_factor": sf}}
+                base, {"beam": {"n_elements": n}, "solver": {"t_end": cv["t_end"], "safety_factor": sf}}
             )
             r, m, scene = run_scene(mp, friction)
             for q in CONVERGENCE_QUANTITIES:
@@ -495,7 +495,7 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
     Linearised about steady sliding with the sliding normal force (friction preload included) and the
     base scene's Rayleigh damping. Each cross-check runs the explicit integrator from the sliding state
     for ``crosscheck_e_folds`` e-foldings of the eigenvalue growth rate (at most
-    ``crosscheck_max_duration``) with a linear friction law of the cross-check slope."""
+    ``crosscheck_max_t_end``) with a linear friction law of the cross-check slope."""
     st = fe_cfg["stability"]
     base = scene_mapping(fe_cfg, st["base"])
     angles, slopes = list(st["angles"]), list(st["slopes"])
@@ -526,7 +526,7 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
         )
         rows["N_static"].append(static_state(sc.system, sc.law)[1])
         rows["N_slide"].append(sliding_state(sc.system, sc.law)[1])
-        dur = min(float(st.get("crosscheck_max_duration", 0.05)), float(st.get("crosscheck_e_folds", 8)) / ge)
+        dur = min(float(st.get("crosscheck_max_t_end", 0.05)), float(st.get("crosscheck_e_folds", 8)) / ge)
         gt, ft = transient_growth(sc.system, sc.law, dur, **damp) if ge > 0 else (np.nan, np.nan)
         rows["tr"].append(gt)
         rows["tr_f"].append(ft)

@@ -73,9 +73,9 @@ def continuum_dataset(
     scene = continuum_scene_from_mapping(mapping, friction, nx, ny)
     r = integrate_continuum(
         scene,
-        p.solver.duration,
+        p.solver.t_end,
         safety_factor=p.solver.safety_factor,
-        output_interval=p.solver.output_interval,
+        output_interval=p.solver.output_dt,
         initial_state=p.solver.initial_state,
     )
     m = trajectory_metrics(r)

@@ -46,7 +46,7 @@ def scene_model(cfg, scene: str, **overrides) -> BeltModel:
 
 def run_scene(cfg, model, t_end, methods, paper=True):
     """Reference + every method; returns (records, reference, ref_cycle, paper_record)."""
-    n = int(round(t_end * cfg["samples_per_second"])) + 1
+    n = int(round(t_end / cfg["output_dt"])) + 1
     t_eval = np.linspace(0.0, t_end, n)
     exact = make_solver("exact")
     ref = exact.solve(model, t_end, t_eval)

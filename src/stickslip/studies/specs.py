@@ -176,7 +176,7 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
     key = f"onedof.sweeps.{sweep}"
     base = run_spec(config, cfg.get("scene") or "fig02", reading, cfg.get("method") or "exact")
     dense_cfg = cfg["dense"]
-    scale = dense_cfg.get("scale") or "linear"
+    scale = dense_cfg.get("spacing") or "linear"
     spaced = np.geomspace if scale == "log" else np.linspace
     dense = spaced(float(dense_cfg["start"]), float(dense_cfg["stop"]), int(dense_cfg["num"]))
     linked = dict(cfg.get("linked") or {})
