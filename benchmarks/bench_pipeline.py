@@ -50,7 +50,9 @@ def timed(label: str, cmd: list[str], cwd: Path, log: Path) -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--no-test", action="store_true", help="skip step 3 (make test)")
-    ap.add_argument("--keep", action="store_true", help="keep the clone (its path is printed)")
+    ap.add_argument(
+        "--keep", action="store_true", help="keep the clone and the clean build's results (paths printed)"
+    )
     args = ap.parse_args(argv)
 
     work = Path(tempfile.mkdtemp(prefix="bench_pipeline_"))
@@ -66,6 +68,8 @@ def main(argv=None) -> int:
     rule_rows = summarize_benchmarks(clone / "results" / "benchmarks")
     rows.append(timed("no-op make figures", ["make", "figures"], clone, work / "noop.log"))
     if not args.no_test:
+        if args.keep:  # the clean build's results, for `python -m stickslip.io.compare` with another build
+            (clone / "results").rename(work / "results_clean_build")
         for name in (".venv", "results", ".snakemake"):
             shutil.rmtree(clone / name, ignore_errors=True)
         rows.append(timed("clean make test", ["make", "test"], clone, work / "test.log"))
@@ -90,7 +94,7 @@ def main(argv=None) -> int:
     cpu = sum(r["cpu_s_total"] for r in rule_rows)
     print(f"| **total** | {sum(r['jobs'] for r in rule_rows)} | {wall:.1f} | {cpu:.1f} | | |")
     if args.keep:
-        print(f"\nclone kept: {clone}")
+        print(f"\nclone kept: {clone}; the clean build's results: {work / 'results_clean_build'}")
     else:
         shutil.rmtree(work, ignore_errors=True)
     return 0 if all(r["exit"] == 0 for r in rows) else 1
