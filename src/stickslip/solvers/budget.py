@@ -47,7 +47,12 @@ class _BudgetedModel:
 
 
 def run_with_budget(solver, model, t_end, t_eval, max_rhs: int = 2_000_000, max_cpu: float = 20.0):
-    """solver.solve under a work budget; a stall becomes a failed trajectory with its counters."""
+    """solver.solve under a work budget; a stall becomes a failed trajectory with its counters.
+
+    A fixed-step solver (``fixed_step = True``, e.g. Moreau-Jean) does t_end / h steps, known before it runs,
+    and cannot stall: the RHS count does not apply to it, only the CPU limit (a safety net)."""
+    if getattr(solver, "fixed_step", False):
+        max_rhs = float("inf")
     proxy = _BudgetedModel(model, max_rhs, max_cpu)
     start = time.process_time()
     try:

@@ -62,10 +62,7 @@ def run_scene(cfg, model, t_end, methods, paper=True):
         )
     records = []
     for name, settings, label in methods:
-        solver = make_solver(name, **settings)
-        # the stall budget is for adaptive methods; a fixed-step one's work is known before it runs
-        budget = {"max_rhs": 2**62} if getattr(solver, "fixed_step", False) else {}
-        traj, rec = measure_run(solver, model, t_end, t_eval, ref, ref_cycle, **{**kw, **budget})
+        traj, rec = measure_run(make_solver(name, **settings), model, t_end, t_eval, ref, ref_cycle, **kw)
         rec.update(classify(traj, ref, model.params))
         rec.update(solver=name, settings=json.dumps(settings, sort_keys=True), label=label)
         records.append(rec)
