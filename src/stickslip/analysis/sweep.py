@@ -37,6 +37,10 @@ class SweepAxis:
         if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in self.values):
             raise ParameterError(f"sweep axis {self.name}: values must be finite numbers")
 
+    def point(self, value: float) -> dict:
+        """The parameter overrides of one value of this axis: the swept parameter and those linked to it."""
+        return {self.name: float(value), **{k: float(f) * float(value) for k, f in self.linked.items()}}
+
 
 def grid_size(axes: list[SweepAxis]) -> int:
     return int(np.prod([len(a.values) for a in axes]))
@@ -59,9 +63,7 @@ def chunk_points(axes: list[SweepAxis], chunk_size: int, chunk: int) -> list[dic
     for combo in combos:
         point = {}
         for axis, value in zip(axes, combo):
-            point[axis.name] = float(value)
-            for other, factor in axis.linked.items():
-                point[other] = float(factor) * float(value)
+            point.update(axis.point(value))
         points.append(point)
     return points
 

@@ -132,10 +132,6 @@ def figure_runs(config: dict, figure: str) -> list[tuple[str, str, str]]:
     return [(fig["scene"], r, m) for r in fig["readings"] for m in fig["methods"]]
 
 
-def _linked_point(name: str, value: float, linked: dict) -> dict:
-    return {name: float(value), **{k: float(f) * float(value) for k, f in linked.items()}}
-
-
 def _law(cfg: dict, key: str) -> FrictionLaw | None:
     return law_from_config(cfg["law"], key=f"{key}.law") if cfg.get("law") else None
 
@@ -180,9 +176,10 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
     spaced = np.geomspace if scale == "log" else np.linspace
     dense = spaced(float(dense_cfg["start"]), float(dense_cfg["stop"]), int(dense_cfg["num"]))
     linked = dict(cfg.get("linked") or {})
+    axis = SweepAxis(cfg["parameter"], tuple(dense), linked=linked)
     for value in [*cfg["values"], dense[0], dense[-1]]:
         try:
-            base.params.with_(**_linked_point(cfg["parameter"], value, linked))
+            base.params.with_(**axis.point(value))
         except ParameterError as exc:
             raise ParameterError(f"{key}.values ({cfg['parameter']} = {value:g}): {exc}") from None
     return SweepSpec(
@@ -299,7 +296,7 @@ def dense_map(config: dict, name: str) -> DenseMap:
     for i, axis in enumerate(axes):
         for value in (min(axis.values), max(axis.values)):
             try:
-                spec.params.with_(**_linked_point(axis.name, value, axis.linked))
+                spec.params.with_(**axis.point(value))
             except ParameterError as exc:
                 raise ParameterError(f"{key}.axes[{i}] ({axis.name} = {value:g}): {exc}") from None
     chunk_size = cfg.get("chunk_size") or section["chunk_size"]
