@@ -51,3 +51,18 @@ def test_bad_values_are_rejected_naming_the_full_key(path, value):
         PipelineConfig.model_validate(config)
     locations = [".".join(map(str, e["loc"])) for e in info.value.errors()]
     assert any(loc.startswith(".".join(map(str, path))) for loc in locations), locations
+
+
+def test_typed_names_are_the_models_own():
+    """The typed layer's readings, unit readings and freeable inverse parameters are the ones the code
+    implements (written twice only because a Literal type needs the values spelled out)."""
+    from typing import get_args
+
+    from stickslip.config_models import InverseParameter, Units, Variant
+    from stickslip.inverse.problem import PARAMS
+    from stickslip.model.friction import VARIANTS
+    from stickslip.model.params import UNIT_READINGS
+
+    assert get_args(Variant) == VARIANTS
+    assert get_args(Units) == UNIT_READINGS
+    assert get_args(InverseParameter) == PARAMS

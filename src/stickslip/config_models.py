@@ -30,6 +30,10 @@ Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
 Names = Annotated[list[str], Field(min_length=1)]
+#: A reading of the paper's friction law (``stickslip.model.friction.VARIANTS``; a test keeps them equal).
+Variant = Literal["eq3_printed", "eq4_printed", "consistent"]
+#: How the parameters' units are read (``stickslip.model.params.UNIT_READINGS``; a test keeps them equal).
+Units = Literal["as_given", "si"]
 
 
 def belt_parameter(name: str) -> str:
@@ -92,7 +96,7 @@ class BeltParameters(Section):
     v0: Finite | None = Field(None, description="initial velocity [mm/s]")
     belt_velocity: NonNegative | None = Field(None, description="V_b [mm/s]")
     belt_deceleration: NonNegative | None = Field(None, description="[mm/s^2]")
-    units: Literal["as_given", "si"] | None = None
+    units: Units | None = None
     plateau_speed: Positive | None = Field(None, description="friction plateau speed v_p [mm/s]")
 
 
@@ -110,9 +114,9 @@ class OnedofDefaults(RunLengths):
 
 
 class Reading(Section):
-    variant: Literal["eq3_printed", "eq4_printed", "consistent"]
+    variant: Variant
     sigma: NonNegative | None = None
-    units: Literal["as_given", "si"] | None = None
+    units: Units | None = None
     plateau_speed: Positive | None = None
     output_dt: Positive | None = None
     description: str | None = None
@@ -388,7 +392,7 @@ class Timing(Section):
 
 
 class StudyScene(Section):
-    variant: Literal["consistent", "eq3_printed", "eq4_printed"]
+    variant: Variant
     params: BeltParameters | None = None
 
 
@@ -547,7 +551,7 @@ class Fe(Section):
 
 # -- inverse study -------------------------------------------------------------------------------------------
 
-#: Parameters the inverse study may free (the 1-DOF model's, plus the friction plateau speed).
+#: Parameters the inverse study may free (``stickslip.inverse.problem.PARAMS``; a test keeps them equal).
 InverseParameter = Literal["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
 
 
@@ -564,7 +568,7 @@ class Bound(Section):
 
 
 class Family(Section):
-    variant: Literal["eq3_printed", "eq4_printed", "consistent"]
+    variant: Variant
     free: Annotated[list[InverseParameter], Field(min_length=1)]
 
 
@@ -591,7 +595,7 @@ class Hypothesis(Section):
 
     description: Annotated[str, Field(min_length=1)]
     sigma: NonNegative | None = None
-    units: Literal["as_given", "si"] | None = None
+    units: Units | None = None
     output_dt: Positive | None = None
     eq4_term: bool | None = None
     mu_k_ratio: MuKRatio | None = None
