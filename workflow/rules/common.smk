@@ -24,7 +24,9 @@ ENSEMBLE = config.get("ensemble")
 
 CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
-CLAIMED_DATASETS = set(required_datasets(load_claims(CLAIM_FILES), config["claims"]["readings"]))
+#: The claims rows, read once at parse time for every rule that needs them.
+CLAIMS = load_claims(CLAIM_FILES)
+CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
 
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"

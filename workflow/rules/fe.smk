@@ -131,7 +131,7 @@ rule fe_figures:
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
             c["variable"]: c["value"]
-            for c in load_claims(CLAIM_FILES)
+            for c in CLAIMS
             if c["id"] in ("s9_max_horizontal_displacement", "s9_oscillation_centre")
         },
     script:

@@ -21,10 +21,8 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
-import yaml
 
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..model.params import BeltParams, ParameterError
@@ -194,11 +192,10 @@ class Problem:
 
 
 def load_claim_rows(paths) -> dict:
-    rows = {}
-    for path in sorted(Path(p) for p in paths):
-        for row in yaml.safe_load(Path(path).read_text()) or []:
-            rows[row["id"]] = row
-    return rows
+    """Claim id -> row, read (and checked) by the claims table's own loader."""
+    from ..io.claims import load_claims
+
+    return {row["id"]: row for row in load_claims(paths)}
 
 
 def _tolerance_sd(row: dict) -> tuple[float, str]:
