@@ -15,7 +15,7 @@ def write(root, name, values, cpu=0.0):
 def test_identical_folders_compare_clean_and_cpu_times_are_ignored(tmp_path, capsys):
     for root, cpu in ((tmp_path / "a", 1.0), (tmp_path / "b", 2.0)):
         write(root, "onedof/s.nc", [1.0, np.nan, 3.0], cpu=cpu)
-    assert compare_results(tmp_path / "a", tmp_path / "b") == []
+    assert compare_results(tmp_path / "a", tmp_path / "b") == ([], 1)
     assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 0
     assert "1 datasets compared: identical" in capsys.readouterr().out
 
@@ -27,7 +27,8 @@ def test_a_last_bit_change_a_missing_file_and_a_changed_claims_table_are_reporte
     for root, status in ((tmp_path / "a", "reproduced"), (tmp_path / "b", "deviates")):
         (root / "claims").mkdir()
         (root / "claims" / "deviations.csv").write_text(f"claim,status\nc1,{status}\n")
-    lines = compare_results(tmp_path / "a", tmp_path / "b")
+    lines, compared = compare_results(tmp_path / "a", tmp_path / "b")
+    assert compared == 2
     assert lines == [
         f"only in {tmp_path / 'a'}: fe/only_a.nc",
         "onedof/s.nc: x: 1 values differ",

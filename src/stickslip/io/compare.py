@@ -45,8 +45,9 @@ def data_differences(path_a: Path, path_b: Path) -> list[str]:
     return out
 
 
-def compare_results(root_a: Path, root_b: Path) -> list[str]:
-    """One line per difference between two results folders; empty when every result is identical."""
+def compare_results(root_a: Path, root_b: Path) -> tuple[list[str], int]:
+    """One line per difference between two results folders (none when every result is identical), and the
+    number of datasets compared."""
     root_a, root_b = Path(root_a), Path(root_b)
     a, b = set(datasets(root_a)), set(datasets(root_b))
     lines = [f"only in {root_a}: {p}" for p in sorted(a - b)]
@@ -58,15 +59,14 @@ def compare_results(root_a: Path, root_b: Path) -> list[str]:
         texts = [(r / table).read_text() if (r / table).is_file() else None for r in (root_a, root_b)]
         if texts[0] != texts[1]:
             lines.append(f"{table}: differs")
-    return lines
+    return lines, len(a | b)
 
 
 def main(argv: list[str]) -> int:
     if len(argv) != 2:
         print(__doc__, file=sys.stderr)
         return 2
-    lines = compare_results(Path(argv[0]), Path(argv[1]))
-    n = len(set(datasets(Path(argv[0]))) | set(datasets(Path(argv[1]))))
+    lines, n = compare_results(Path(argv[0]), Path(argv[1]))
     for line in lines:
         print(line)
     print(f"{n} datasets compared: {'identical' if not lines else f'{len(lines)} differences'}")
