@@ -216,6 +216,10 @@ def test_bad_chunk_size_fails_at_parse_time(project, tmp_path, override, match):
     assert "dense_map_chunk" not in proc.stdout  # no job was planned
 
 
+#: A stick shorter than this is a graze (round-off length), far below the output interval (0.01 s).
+GRAZE = 1e-9
+
+
 def with_law(config, law, method="switch"):
     maps = config["dense_map"]["maps"]
     maps["with_law"] = {**maps["speed_damping"], "method": method, "law": law}
@@ -230,8 +234,19 @@ def test_a_map_with_the_readings_own_affine_law_matches_the_exact_map():
     assert switch.law is not None and switch.spec.solver_settings["solver"] == "switch"
     a, b = build(exact, exact.points), build(switch, switch.points)
     assert int(a.solver_ok.sum()) == a.solver_ok.size and int(b.solver_ok.sum()) == b.solver_ok.size
-    for name in ("amplitude_peak_to_peak", "stick_fraction", "stick_time", "slip_time", "frequency_peaks"):
+    for name in ("amplitude_peak_to_peak", "stick_fraction", "frequency_peaks"):
         np.testing.assert_allclose(b[name].values, a[name].values, rtol=1e-6, atol=1e-9, err_msg=name)
+    # At C = sigma mu_s N (the grid's damping 2.5) the slip phase is undamped: the orbit only grazes v_r = 0,
+    # once a period. Each graze is a stick of zero length (~1e-16 s), and whether a solver registers a given
+    # graze is decided by round-off (machine-dependent), which splits or merges slip intervals. There the
+    # interval means are not comparable; both solvers must still see a grazing orbit, not a finite stick.
+    grazing = a.stick_time.values < GRAZE
+    assert grazing.any(), "the grid no longer has a grazing point: this branch of the test is dead"
+    assert np.all(b.stick_time.values[grazing] < GRAZE)
+    for name in ("stick_time", "slip_time"):
+        np.testing.assert_allclose(
+            b[name].values[~grazing], a[name].values[~grazing], rtol=1e-6, atol=1e-9, err_msg=name
+        )
 
 
 def test_a_nonlinear_law_changes_the_map():
