@@ -96,3 +96,30 @@ def test_si_units_reading_scales_the_mass():
     model = BeltModel.build(si, "consistent")
     omega = np.sqrt(si.stiffness / model.mass)
     assert omega / (2 * np.pi) == pytest.approx(11.25, rel=1e-3)  # far from the reported 0.25 Hz
+
+
+_floats = st.one_of(
+    st.floats(-1e3, 1e3, allow_nan=False), st.sampled_from([0.0, -0.0, 0.5, 0.6, -0.6, float("nan")])
+)
+
+
+@given(
+    variant=st.sampled_from(["consistent", "eq3_printed", "eq4_printed"]),
+    plateau=st.sampled_from([float("inf"), 0.6]),
+    deceleration=st.sampled_from([0.0, 0.025]),
+    t=st.floats(0.0, 40.0),
+    x=_floats,
+    v=_floats,
+)
+def test_scalar_right_hand_side_is_bit_identical_to_the_array_form(variant, plateau, deceleration, t, x, v):
+    """BeltModel.rhs evaluates one state in Python floats; it must give the very bits of the numpy form
+    (acceleration with np.sign, np.maximum, np.clip), signed zeros and NaN included."""
+    params = BeltParams.from_mapping(
+        {**PAPER_BASELINE.as_dict(), "plateau_speed": plateau, "belt_deceleration": deceleration}
+    )
+    model = BeltModel.build(params, variant)
+    fast = model.rhs(t, np.array([x, v]))
+    slow = model.acceleration(t, np.float64(x), np.float64(v))
+    assert fast[0] == v or (np.isnan(fast[0]) and np.isnan(v))
+    assert np.array_equal(fast[1:], np.atleast_1d(slow), equal_nan=True)
+    assert np.signbit(fast[1]) == np.signbit(slow)

@@ -23,6 +23,7 @@ printed variants cannot stick at all (see ``can_stick``).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -45,7 +46,7 @@ class AffineFriction:
     plateau_speed: float = float("inf")
     """|v_r| [mm/s] beyond which the affine part stops changing (inf: no plateau)."""
 
-    @property
+    @cached_property
     def has_plateau(self) -> bool:
         return bool(np.isfinite(self.plateau_speed))
 
@@ -69,9 +70,25 @@ class AffineFriction:
             return self.a * sign(v - vb) + self.b * vr + (self.b + self.kappa) * vb
         return self.a * sign(v - vb) + self.b * v + self.kappa * vb
 
+    def scalar_force(self, v: float, vb: float, sign=np.sign) -> float:
+        """``force`` for one state (Python floats), the same operations in the same order: an ODE solver
+        calls it once per right-hand side, where numpy's per-call overhead on 0-d values dominated."""
+        d = v - vb
+        s = _sign(d) if sign is np.sign else sign(d)
+        if self.has_plateau:
+            vp = self.plateau_speed
+            vr = -vp if d < -vp else (vp if d > vp else d)  # np.clip, -0.0 and NaN kept
+            return self.a * s + self.b * vr + (self.b + self.kappa) * vb
+        return self.a * s + self.b * v + self.kappa * vb
+
     def coefficient(self, v, vb, normal_force: float):
         """Signed friction coefficient F/N along a trajectory (Fig. 17)."""
         return self.force(v, vb) / normal_force
+
+
+def _sign(d: float) -> float:
+    """np.sign of one float: -1, 0 (also for -0.0) or 1; NaN stays NaN."""
+    return 1.0 if d > 0.0 else (-1.0 if d < 0.0 else (0.0 if d == 0.0 else d))
 
 
 def friction_law(params: BeltParams, variant: str) -> AffineFriction:
