@@ -389,6 +389,8 @@ class Timing(Section):
     min_repeats: Annotated[int, Field(ge=1)]
     max_repeats: Annotated[int, Field(ge=1)]
     min_total_cpu: NonNegative
+    slow_run: Positive = 1.0
+    """A run taking longer than this [s of CPU] is timed once."""
 
 
 class StudyScene(Section):
