@@ -78,3 +78,16 @@ def test_a_budgeted_method_records_a_stall_as_a_failed_run(config):
     cfg["onedof"]["methods"]["ode45"]["budget"] = {"max_rhs": 0}
     with pytest.raises(ParameterError, match="onedof.methods.ode45.budget"):
         run_spec(cfg, "fig02", "consistent_caption", "ode45")
+
+
+def test_a_null_in_an_override_file_removes_the_entry(tmp_path, repo_root):
+    """Merging can only add or replace: a null value is how the small config drops a figure of the main one
+    (and with it the figure's rule); every other entry of the section stays."""
+    from stickslip.config import load_config
+
+    override = tmp_path / "drop.yaml"
+    override.write_text("onedof:\n  figures:\n    fig05: null\n")
+    files = sorted((repo_root / "config").glob("*.yaml"))
+    main, dropped = load_config(files), load_config([*files, override])
+    assert "fig05" in main["onedof"]["figures"] and "fig05" not in dropped["onedof"]["figures"]
+    assert set(main["onedof"]["figures"]) - set(dropped["onedof"]["figures"]) == {"fig05"}

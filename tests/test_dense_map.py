@@ -5,10 +5,10 @@ import json
 import numpy as np
 import pytest
 import xarray as xr
-import yaml
 
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
 from stickslip.config import ConfigError, validate_config
+from stickslip.config import load_config as load_files
 from stickslip.studies import specs as dmc
 
 from project_run import ROOT, copy_project, run_snakemake
@@ -16,16 +16,9 @@ from project_run import ROOT, copy_project, run_snakemake
 
 def load_config(*names):
     """The pipeline config as Snakemake merges it: config/*.yaml, then the given overrides."""
-
-    def merge(a, b):
-        for k, v in b.items():
-            a[k] = merge(a.get(k, {}), v) if isinstance(v, dict) and isinstance(a.get(k), dict) else v
-        return a
-
-    config = {}
-    for path in sorted((ROOT / "config").glob("*.yaml")) + [ROOT / "config" / "test" / n for n in names]:
-        merge(config, yaml.safe_load(path.read_text()))
-    return config
+    return load_files(
+        sorted((ROOT / "config").glob("*.yaml")) + [ROOT / "config" / "test" / n for n in names]
+    )
 
 
 def small_config(**changes):

@@ -30,12 +30,26 @@ def merge(base: dict, override: dict) -> dict:
     return out
 
 
+def drop_removed(config: dict) -> dict:
+    """Delete, in place and at any depth, every mapping entry whose value is null.
+
+    Merging can only add or replace, so this is how an override file (``--configfile``) removes an entry
+    of the main config: ``figures: {fig05: null}`` drops figure fig05, its rule and its outputs."""
+    for key in [k for k, v in config.items() if v is None]:
+        del config[key]
+    for value in config.values():
+        if isinstance(value, dict):
+            drop_removed(value)
+    return config
+
+
 def load_config(paths: Iterable[str | Path]) -> dict:
-    """The config Snakemake builds from these files, in order (later files override earlier ones)."""
+    """The config Snakemake builds from these files, in order (later files override earlier ones; a null
+    value removes an entry, see ``drop_removed``)."""
     config: dict = {}
     for path in paths:
         config = merge(config, yaml.safe_load(Path(path).read_text()) or {})
-    return config
+    return drop_removed(config)
 
 
 def typed_errors(exc) -> str:

@@ -9,14 +9,16 @@ sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also whe
 import re  # noqa: E402
 from glob import glob  # noqa: E402
 
-from stickslip.config import validate_config  # noqa: E402
+from stickslip.config import drop_removed, validate_config  # noqa: E402
 from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
 from stickslip.studies.specs import dense_map  # noqa: E402
 
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 
-# Every config value is checked here, before any job starts; an error names its key (stickslip.config).
+# An override file removes an entry by setting it to null; then every config value is checked, before any
+# job starts, an error naming its key (stickslip.config).
+drop_removed(config)
 validate_config(config, producible=PRODUCIBLE)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
