@@ -20,7 +20,7 @@ from project_run import copy_project, run_snakemake, small_config_args, start_sn
 
 SCENE = "section9_kinematic_0p5mm_s"
 TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"
-SLOW = {"fe": {"defaults": {"solver": {"t_end": 2.0, "output_dt": 1.0e-3}}}}  # ~10 s of integration
+SLOW = {"fe": {"defaults": {"solver": {"t_end": 1.2, "output_dt": 1.0e-3}}}}  # ~6 s of integration
 
 
 @pytest.mark.pipeline
@@ -37,7 +37,7 @@ def test_killed_job_leaves_no_dataset_and_rerun_matches(tmp_path):
     deadline = time.monotonic() + 120
     while not job_log.exists() and time.monotonic() < deadline and proc.poll() is None:
         time.sleep(0.2)
-    time.sleep(3.0)  # the job is now integrating
+    time.sleep(2.0)  # the job is now integrating
     assert proc.poll() is None, "the job finished before it could be killed: make SLOW longer"
     os.killpg(proc.pid, signal.SIGKILL)
     proc.wait(timeout=30)
