@@ -37,8 +37,9 @@ setup: $(STAMP)
 figures: $(STAMP)
 	$(BIN)/snakemake -j$(JOBS)
 
+# Both cores: pytest-xdist workers; the tests that share one pipeline build run in one worker (xdist_group).
 test: $(STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup
 
 # Python style (ruff, configured in pyproject.toml), rules formatting (snakefmt) and Snakemake's linter.
 lint: $(STAMP)

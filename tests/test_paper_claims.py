@@ -9,6 +9,9 @@ from stickslip.io.claims import read_table, unexpected
 
 from project_run import decisions_flipped_within_spread, run_snakemake
 
+# Both tests run Snakemake in the repository's own results/: never at once (`make test` runs -n 2).
+pytestmark = pytest.mark.xdist_group("repo_results")
+
 
 @pytest.mark.pipeline
 def test_claim_statuses_match_their_pins(repo_root):
