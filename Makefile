@@ -37,9 +37,9 @@ setup: $(STAMP)
 figures: $(STAMP)
 	$(BIN)/snakemake -j$(JOBS)
 
-# Both cores: pytest-xdist workers; the tests that share one pipeline build run in one worker (xdist_group).
+# Both cores: pytest-xdist workers (they share one small pipeline build, tests/project_run.py).
 test: $(STAMP)
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup
+	$(BIN)/python -m pytest -n $(JOBS)
 
 # Python style (ruff, configured in pyproject.toml), rules formatting (snakefmt) and Snakemake's linter.
 lint: $(STAMP)

@@ -1,9 +1,13 @@
 """Helpers for tests that run the Snakemake pipeline on a copy of the project."""
 
+import os
 import shutil
 import subprocess
 import sys
+from contextlib import contextmanager
 from pathlib import Path
+
+from filelock import FileLock
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -63,13 +67,42 @@ def start_snakemake(workdir: Path, *args, log: Path):
 _SMALL_RUNS: dict[str, Path] = {}
 
 
+def session_root(tmp_path_factory) -> Path:
+    """A folder every pytest-xdist worker of this session sees (the workers' own temp folders' parent)."""
+    base = tmp_path_factory.getbasetemp()
+    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+
+@contextmanager
+def session_lock(tmp_path_factory, name: str):
+    """Held by one test at a time across every xdist worker of the session."""
+    with FileLock(str(session_root(tmp_path_factory) / f"{name}.lock")):
+        yield
+
+
 def shared_small_run(tmp_path_factory) -> Path:
-    """One complete run of the small configuration per test session, shared by the modules that read it."""
+    """One complete run of the small configuration per test session, shared by every module and every
+    xdist worker that reads it: the first to ask builds it, the others wait for it under a file lock and
+    then only read it (dry runs, --summary, datasets)."""
     if "run" not in _SMALL_RUNS:
-        work = copy_project(tmp_path_factory.mktemp("small_run"))
-        run_snakemake(work, *small_config_args(work))
+        work = session_root(tmp_path_factory) / "small_run"
+        done = work.with_name("small_run.done")
+        with session_lock(tmp_path_factory, "small_run"):
+            if not done.exists():
+                shutil.rmtree(work, ignore_errors=True)
+                work.mkdir()
+                run_snakemake(copy_project(work), *small_config_args(work))
+                done.touch()
         _SMALL_RUNS["run"] = work
     return _SMALL_RUNS["run"]
+
+
+def build_claims_table(root: Path, tmp_path_factory) -> Path:
+    """The repository's own results/ up to the claims table (a no-op when up to date). One Snakemake at a
+    time in a folder: the tests that need it may run in different xdist workers."""
+    with session_lock(tmp_path_factory, "repository_results"):
+        run_snakemake(root, "results/claims/deviations.csv", timeout=3000)
+    return root / "results" / "claims" / "deviations.csv"
 
 
 def datasets(workdir: Path) -> list[Path]:

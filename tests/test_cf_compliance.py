@@ -18,9 +18,6 @@ import pytest
 from cf_check import cf_findings
 from project_run import datasets, shared_small_run
 
-# The modules that read the one shared small build run in one xdist worker (`make test` runs -n 2).
-pytestmark = pytest.mark.xdist_group("small_run")
-
 TIME_WAIVER = (
     "§3.1 Units: time must be in a valid units format <unit> since <epoch> not s",
     "§4.4 Time Coordinate: time does not have correct time units",

@@ -18,9 +18,6 @@ from project_run import (
     small_config_args,
 )
 
-# The modules that read the one shared small build run in one xdist worker (`make test` runs -n 2).
-pytestmark = pytest.mark.xdist_group("small_run")
-
 
 def one_dataset_per_rule(workdir) -> dict[str, str]:
     """rule -> the first (sorted) dataset it wrote, from Snakemake's own record of the run (--summary)."""

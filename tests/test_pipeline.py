@@ -11,9 +11,6 @@ from stickslip.io.claims import load_claims, read_table, readings_of
 
 from project_run import decisions_flipped_within_spread, run_snakemake, shared_small_run, small_config_args
 
-# The modules that read the one shared small build run in one xdist worker (`make test` runs -n 2).
-pytestmark = pytest.mark.xdist_group("small_run")
-
 
 @pytest.fixture(scope="module")
 def small_run(tmp_path_factory):

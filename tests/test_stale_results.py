@@ -8,9 +8,6 @@ import yaml
 
 from project_run import run_snakemake, shared_small_run, small_config_args
 
-# The modules that read the one shared small build run in one xdist worker (`make test` runs -n 2).
-pytestmark = pytest.mark.xdist_group("small_run")
-
 
 def jobs_to_run(work, *args) -> dict[str, int]:
     """Rule -> job count of a dry run (the 'Job stats' table)."""
