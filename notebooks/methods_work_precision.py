@@ -22,16 +22,13 @@
 
 # %%
 import glob
-import io
 import os
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import xarray as xr
 from IPython.display import HTML, Image, Markdown, display
 
-from stickslip.methods_plots import failure_map_figure, work_precision_figure
 from stickslip.notebook import SUMMARY_STYLE
 from stickslip.plots import STATUS_COLOUR
 
@@ -39,12 +36,9 @@ HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() els
 ROOT = os.getcwd() if os.path.isdir("results") else os.path.abspath(os.path.join(HERE, ".."))
 
 
-def show(fig):
-    """Show a figure here, at a fixed size and resolution."""
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
-    plt.close(fig)
-    display(Image(buf.getvalue()))
+def show(figure):
+    """The pipeline's own chart (rule methods_figures): drawn once, shown here."""
+    display(Image(filename=os.path.join(ROOT, "results", "figures", "methods", f"{figure}.png")))
 
 
 files = sorted(glob.glob(os.path.join(ROOT, "results", "methods", "*_work_precision.nc")))
@@ -99,7 +93,7 @@ for f in files:
             f"{speedup}; reference period {ds.attrs['reference_period']:.10g} s."
         )
     )
-    show(work_precision_figure(ds, name))
+    show(f"{name}_work_precision")
     display(
         HTML(
             f"<details><summary style='{SUMMARY_STYLE}'>the {ds.sizes['run']} runs of {name} "
@@ -141,7 +135,7 @@ display(pd.DataFrame(best).style.set_properties(**{"text-align": "left"}))
 fm = os.path.join(ROOT, "results", "methods", "failure_map.nc")
 with xr.open_dataset(fm) as ds:
     ds = ds.load()
-show(failure_map_figure(ds))
+show("failure_map")
 kinds = ds["failure_kind"]
 if hasattr(kinds, "to_pandas"):
     display(kinds.to_pandas().T)

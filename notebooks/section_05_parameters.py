@@ -35,7 +35,7 @@
 # This notebook only presents: every number comes from `results/` and was computed by the pipeline.
 
 # %%
-from IPython.display import Markdown, display
+from IPython.display import Image, Markdown, display
 
 from stickslip.io.netcdf import read_dataset
 from stickslip.notebook import claims_frame, reported_value, scorecard, styled_claims
@@ -44,7 +44,6 @@ from stickslip.plots import (
     readings_grid,
     run_failed,
     scalars_vs_reported,
-    sweep_figure,
     sweep_metrics_vs_reported,
 )
 
@@ -255,8 +254,8 @@ for name, spec in SWEEP_FIGS.items():
 
 def show_sweep(name):
     spec = SWEEP_FIGS[name]
-    for r, (paper, dense) in sweeps[name].items():
-        sweep_figure(paper, dense, spec.get("title", name), r)
+    for r in sweeps[name]:  # the pipeline's figure of this sweep and reading (rule sweep_figure_<name>)
+        display(Image(filename=f"results/figures/{name}/{r}.png"))
     reported = [
         (var, x, rep(c), f"paper {rep(c):g}") for var, x, c in SWEEP_TEXT.get(name, []) if rep(c) is not None
     ]

@@ -15,6 +15,6 @@ for nc, png in zip(sm.input.work_precision, sm.output.work_precision):
     with xr.open_dataset(nc) as ds:
         fig = work_precision_figure(ds.load(), os.path.basename(nc).replace("_work_precision.nc", ""))
     os.makedirs(os.path.dirname(png), exist_ok=True)
-    fig.savefig(png, dpi=110)
+    fig.savefig(png, dpi=110, bbox_inches="tight")  # long method labels: nothing clipped
 with xr.open_dataset(sm.input.failure_map) as ds:
-    failure_map_figure(ds.load()).savefig(sm.output.failure_map, dpi=110)
+    failure_map_figure(ds.load()).savefig(sm.output.failure_map, dpi=110, bbox_inches="tight")
