@@ -30,18 +30,18 @@ class LinearSegment:
         alpha = -self.c / (2.0 * self.m)
         object.__setattr__(self, "_p", (p0, p1))
         object.__setattr__(self, "_alpha", alpha)
-        object.__setattr__(self, "_w2", self.k / self.m - alpha * alpha)
+        w2 = self.k / self.m - alpha * alpha
+        object.__setattr__(self, "_w2", w2)
+        object.__setattr__(self, "_w", np.sqrt(abs(w2)))  # the (hyperbolic) frequency, computed once
         object.__setattr__(self, "_h", (self.x0 - p0, self.v0 - p1))
 
     def _kernels(self, tau):
         """e^{alpha tau} C(tau) and e^{alpha tau} S(tau)."""
-        alpha, w2 = self._alpha, self._w2
+        alpha, w2, w = self._alpha, self._w2, self._w
         if w2 > 0.0:
-            w = np.sqrt(w2)
             e = np.exp(alpha * tau)
             return e * np.cos(w * tau), e * np.sin(w * tau) / w
         if w2 < 0.0:
-            w = np.sqrt(-w2)
             e_plus = np.exp((alpha + w) * tau)
             e_minus = np.exp((alpha - w) * tau)
             return 0.5 * (e_plus + e_minus), e_plus * (-np.expm1(-2.0 * w * tau)) / (2.0 * w)
@@ -49,8 +49,11 @@ class LinearSegment:
         return e, e * tau
 
     def state(self, tau):
-        """(x, v) at local times tau (scalar or array)."""
-        tau = np.asarray(tau, dtype=float)
+        """(x, v) at local times tau (scalar or array).
+
+        A scalar stays a Python float: numpy's functions give the same bits on it as on a 0-d array at a
+        quarter of the cost, and the root searches of the exact solver call this a million times a build."""
+        tau = float(tau) if np.ndim(tau) == 0 else np.asarray(tau, dtype=float)
         ec, es = self._kernels(tau)
         h0, h1 = self._h
         q = h1 - self._alpha * h0
