@@ -8,6 +8,17 @@ from scipy.integrate import solve_ivp
 
 from stickslip.solvers.linear import LinearSegment
 
+#: Segments of every damping kind (c from slightly negative to heavily overdamped), any forcing and start.
+SEGMENTS = dict(
+    m=st.floats(0.1, 5),
+    c=st.floats(-2, 20),
+    k=st.floats(0.5, 20),
+    g0=st.floats(-5, 5),
+    g1=st.floats(-1, 1),
+    x0=st.floats(-2, 2),
+    v0=st.floats(-2, 2),
+)
+
 
 def reference(seg, tau):
     def rhs(t, y):
@@ -39,13 +50,7 @@ def test_undamped_case_is_the_harmonic_closed_form():
 
 @settings(max_examples=60, deadline=None)
 @given(
-    m=st.floats(0.1, 5),
-    c=st.floats(-2, 20),
-    k=st.floats(0.5, 20),
-    g0=st.floats(-5, 5),
-    g1=st.floats(-1, 1),
-    x0=st.floats(-2, 2),
-    v0=st.floats(-2, 2),
+    **SEGMENTS,
 )
 def test_initial_state_and_residual(m, c, k, g0, g1, x0, v0):
     seg = LinearSegment(m=m, c=c, k=k, g0=g0, g1=g1, x0=x0, v0=v0)
@@ -64,13 +69,7 @@ def test_initial_state_and_residual(m, c, k, g0, g1, x0, v0):
 
 @settings(max_examples=80, deadline=None)
 @given(
-    m=st.floats(0.1, 5),
-    c=st.floats(-2, 20),
-    k=st.floats(0.5, 20),
-    g0=st.floats(-5, 5),
-    g1=st.floats(-1, 1),
-    x0=st.floats(-2, 2),
-    v0=st.floats(-2, 2),
+    **SEGMENTS,
     lo=st.floats(0.0, 3.0),
     width=st.floats(0.01, 2.0),
 )
@@ -105,3 +104,13 @@ def test_velocity_curvature_bound_is_zero_at_rest_and_tight_for_a_pure_oscillati
     assert float(at_rest.velocity_curvature_bound(0.0, 5.0)) == 0.0
     harmonic = LinearSegment(m=1.0, c=0.0, k=4.0, g0=0.0, g1=0.0, x0=0.0, v0=1.0)  # v = cos 2t, |v''| <= 4
     assert float(harmonic.velocity_curvature_bound(0.0, 10.0)) == pytest.approx(4.0, rel=1e-12)
+
+
+@settings(max_examples=200, deadline=None)
+@given(**SEGMENTS, tau=st.floats(0.0, 5.0))
+def test_a_scalar_time_gives_the_bits_of_the_array_form(m, c, k, g0, g1, x0, v0, tau):
+    """state() keeps a scalar time a Python float (the root searches' fast path): same bits as an array."""
+    seg = LinearSegment(m=m, c=c, k=k, g0=g0, g1=g1, x0=x0, v0=v0)
+    x, v = seg.state(tau)
+    xs, vs = seg.state(np.array([tau, 0.5 * tau]))
+    np.testing.assert_array_equal([x, v], [xs[0], vs[0]])

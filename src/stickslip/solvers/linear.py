@@ -32,8 +32,12 @@ class LinearSegment:
         object.__setattr__(self, "_alpha", alpha)
         w2 = self.k / self.m - alpha * alpha
         object.__setattr__(self, "_w2", w2)
-        object.__setattr__(self, "_w", np.sqrt(abs(w2)))  # the (hyperbolic) frequency, computed once
-        object.__setattr__(self, "_h", (self.x0 - p0, self.v0 - p1))
+        object.__setattr__(self, "_w", float(np.sqrt(abs(w2))))  # the (hyperbolic) frequency, computed once
+        h0, h1 = self.x0 - p0, self.v0 - p1
+        object.__setattr__(self, "_h", (h0, h1))
+        # coefficients of the kernels in x_h and v_h, computed once (state() is the exact solver's inner loop)
+        object.__setattr__(self, "_q", h1 - alpha * h0)
+        object.__setattr__(self, "_vs", -w2 * h0)
 
     def _kernels(self, tau):
         """e^{alpha tau} C(tau) and e^{alpha tau} S(tau)."""
@@ -53,12 +57,11 @@ class LinearSegment:
 
         A scalar stays a Python float: numpy's functions give the same bits on it as on a 0-d array at a
         quarter of the cost, and the root searches of the exact solver call this a million times a build."""
-        tau = float(tau) if np.ndim(tau) == 0 else np.asarray(tau, dtype=float)
+        tau = float(tau) if isinstance(tau, (float, int, np.floating)) else np.asarray(tau, dtype=float)
         ec, es = self._kernels(tau)
-        h0, h1 = self._h
-        q = h1 - self._alpha * h0
+        h0, q = self._h[0], self._q
         xh = h0 * ec + q * es
-        vh = self._alpha * xh + (-self._w2 * h0) * es + q * ec
+        vh = self._alpha * xh + self._vs * es + q * ec
         p0, p1 = self._p
         return p0 + p1 * tau + xh, p1 + vh
 
