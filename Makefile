@@ -20,8 +20,15 @@ COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --gene
 # machine) each one would otherwise recompile numpy, scipy, xarray, matplotlib and snakemake (~5 s a start).
 $(STAMP): pyproject.toml $(LOCK) $(UV_LOCK) Makefile
 	rm -rf $(VENV)
-	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r $(UV_LOCK)
+	$(PYTHON) -m venv --without-pip $(VENV)
+	@# The installer (uv) goes in with the interpreter's own pip when it can target another environment
+	@# (pip >= 22.3): a pip inside the venv (ensurepip, ~6 s) would install nothing else.
+	if $(PYTHON) -m pip --python $(BIN)/python --version >/dev/null 2>&1; then \
+	    $(PYTHON) -m pip --python $(BIN)/python install --quiet --require-hashes --no-deps -r $(UV_LOCK); \
+	else \
+	    $(BIN)/python -m ensurepip --default-pip >/dev/null && \
+	    $(BIN)/python -m pip install --quiet --require-hashes --no-deps -r $(UV_LOCK); \
+	fi
 	$(BIN)/uv pip install --quiet --compile-bytecode --python $(BIN)/python --require-hashes -r $(LOCK)
 	$(BIN)/uv pip install --quiet --python $(BIN)/python --no-deps --no-build-isolation -e .
 	$(BIN)/python -m compileall -q src
@@ -61,5 +68,5 @@ clean:
 # Opt-in (root, Debian/Ubuntu): a single-node SLURM on localhost runs a small chunked map through the
 # official executor plugin and the merged dataset is compared with the local run.
 slurm-test: $(STAMP)
-	$(BIN)/python -m pip install --quiet -e '.[pipeline,test,slurm]'
+	$(BIN)/uv pip install --quiet --python $(BIN)/python -e '.[pipeline,test,slurm]'
 	STICKSLIP_SLURM_TEST=1 $(BIN)/python -m pytest -q -rA tests/slurm
