@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.fft
 
 from ..solvers.base import STICK, Trajectory
 
@@ -150,6 +149,8 @@ def frequency_from_peaks(t: np.ndarray, x: np.ndarray) -> float:
 
 def frequency_from_spectrum(t: np.ndarray, x: np.ndarray, pad: int = 16) -> float:
     """Frequency of the largest spectral peak of x - mean [Hz] (Hann window, zero padding, parabolic fit)."""
+    import scipy.fft  # here: a plotting job that reads metrics need not import it
+
     dt = np.diff(t)
     if len(t) < 8 or not np.allclose(dt, dt[0], rtol=1e-6, atol=0):
         raise ValueError("frequency_from_spectrum needs uniformly sampled data")

@@ -1,29 +1,39 @@
 """Layer 2: integration methods behind one interface, ``solve(model, t_end, t_eval) -> Trajectory``."""
 
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory, check_settings
-from .exact import ExactSwitchSolver
-from .karnopp import Karnopp  # noqa: E402
-from .moreau import MoreauJean  # noqa: E402
-from .sign_rk import SignRungeKutta
-from .smooth import SmoothedSign  # noqa: E402
-from .switch import SwitchSolver  # noqa: E402
+from importlib import import_module
 
-#: Method registry: config ``solver`` name -> class. Later methods register here.
-METHODS = {"exact": ExactSwitchSolver, "sign_rk": SignRungeKutta}
-METHODS["smooth"] = SmoothedSign
-METHODS["karnopp"] = Karnopp
-METHODS["moreau"] = MoreauJean
-METHODS["switch"] = SwitchSolver  # any friction law (model/laws.py); affine laws: agrees with exact
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory, check_settings
+
+#: Method registry: config ``solver`` name -> (module, class). Later methods register here. The modules are
+#: imported on first use (module ``__getattr__``): a job that only reads trajectories and draws them need not
+#: import scipy's optimisers and integrators (~0.3 s of every such job's start).
+REGISTRY = {
+    "exact": ("exact", "ExactSwitchSolver"),
+    "sign_rk": ("sign_rk", "SignRungeKutta"),
+    "smooth": ("smooth", "SmoothedSign"),
+    "karnopp": ("karnopp", "Karnopp"),
+    "moreau": ("moreau", "MoreauJean"),
+    "switch": ("switch", "SwitchSolver"),  # any friction law (model/laws.py); affine laws: agrees with exact
+}
+_MODULE_OF = {cls: module for module, cls in REGISTRY.values()}
+
+
+def __getattr__(name: str):
+    if name in _MODULE_OF:
+        return getattr(import_module(f".{_MODULE_OF[name]}", __name__), name)
+    if name == "METHODS":  # config ``solver`` name -> class
+        return {key: __getattr__(cls) for key, (_, cls) in REGISTRY.items()}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def make_solver(name: str, **settings):
     """Instantiate a method by its config name; unknown names/settings name the key in the error."""
     from ..model.params import ParameterError
 
-    if name not in METHODS:
-        raise ParameterError(f"solver: {name!r} is not one of {sorted(METHODS)}")
+    if name not in REGISTRY:
+        raise ParameterError(f"solver: {name!r} is not one of {sorted(REGISTRY)}")
     try:
-        solver = METHODS[name](**settings)
+        solver = __getattr__(REGISTRY[name][1])(**settings)
         check_settings(solver)
     except (TypeError, ValueError) as exc:
         raise ParameterError(f"solver settings for {name!r}: {exc}") from None
@@ -41,5 +51,6 @@ __all__ = [
     "SignRungeKutta",
     "SwitchSolver",
     "METHODS",
+    "REGISTRY",
     "make_solver",
 ]
