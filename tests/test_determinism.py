@@ -37,9 +37,8 @@ def test_one_job_of_every_rule_rebuilt_from_nothing_is_bit_identical(tmp_path_fa
     targets = one_dataset_per_rule(first)
     assert {"simulate_onedof_fig02", "onedof_sweeps", "fe_reading", "methods_work_precision"} <= set(targets)
     second = copy_project(tmp_path_factory.mktemp("second_run"))
-    run_snakemake(
-        second, *targets.values(), *small_config_args(second)
-    )  # targets first: --configfile takes a list
+    # the targets first: --configfile takes every argument after it
+    run_snakemake(second, *targets.values(), *small_config_args(second))
     rebuilt = datasets(second)
     assert {PurePath(t).relative_to("results") for t in targets.values()} <= set(rebuilt)
     assert set(rebuilt) <= set(datasets(first))

@@ -112,14 +112,14 @@ _floats = st.one_of(
     v=_floats,
 )
 def test_scalar_right_hand_side_is_bit_identical_to_the_array_form(variant, plateau, deceleration, t, x, v):
-    """BeltModel.rhs evaluates one state in Python floats; it must give the very bits of the numpy form
-    (acceleration with np.sign, np.maximum, np.clip), signed zeros and NaN included."""
+    """BeltModel.rhs evaluates one state in Python floats; it must give the very bits of the array form
+    (acceleration on 1-element arrays: np.sign, np.maximum, np.clip), signed zeros and NaN included."""
     params = BeltParams.from_mapping(
         {**PAPER_BASELINE.as_dict(), "plateau_speed": plateau, "belt_deceleration": deceleration}
     )
     model = BeltModel.build(params, variant)
     fast = model.rhs(t, np.array([x, v]))
-    slow = model.acceleration(t, np.float64(x), np.float64(v))
+    slow = model.acceleration(np.array([t]), np.array([x]), np.array([v]))[0]
     assert fast[0] == v or (np.isnan(fast[0]) and np.isnan(v))
     assert np.array_equal(fast[1:], np.atleast_1d(slow), equal_nan=True)
     assert np.signbit(fast[1]) == np.signbit(slow)

@@ -42,15 +42,10 @@ class BeltModel:
     def rhs(self, t, y, sign=np.sign):
         """First-order form y = (x, v) for ODE solvers (the paper's ode45 right-hand side).
 
-        ``acceleration`` on one state in Python floats (same operations, same order, same bits): the
-        stalled runs of the methods study make 250 000 calls, where numpy's overhead on 0-d values was
-        half the cost of a run."""
-        p = self.params
-        x, v = float(y[0]), float(y[1])
-        vb = p.belt_velocity - p.belt_deceleration * float(t)
-        vb = vb if vb > 0.0 else (0.0 if vb <= 0.0 else vb)  # np.maximum(vb, 0.0), NaN kept
-        force = self.friction.scalar_force(v, vb, sign=sign)
-        return np.array([y[1], (force - p.damping * v - p.stiffness * x) / self.mass])
+        The state goes in as Python floats, so the belt speed and friction take their one-state paths (same
+        operations, same bits): the stalled runs of the methods study make 250 000 calls, where numpy's
+        overhead on 0-d values was half the cost of a run."""
+        return np.array([y[1], self.acceleration(float(t), float(y[0]), float(y[1]), sign=sign)])
 
     # -- quantities of the non-smooth (set-valued) model used by the exact solver -----------------
     def stick_demand(self, t, x):

@@ -64,13 +64,15 @@ class AffineFriction:
 
     def force(self, v, vb, sign=np.sign):
         """Friction force for mass velocity v and belt velocity vb; ``sign`` may be a smoothed sign."""
+        if isinstance(v, float) and isinstance(vb, float):
+            return self._scalar_force(v, vb, sign)
         v = np.asarray(v, dtype=float)
         if self.has_plateau:
             vr = np.clip(v - vb, -self.plateau_speed, self.plateau_speed)
             return self.a * sign(v - vb) + self.b * vr + (self.b + self.kappa) * vb
         return self.a * sign(v - vb) + self.b * v + self.kappa * vb
 
-    def scalar_force(self, v: float, vb: float, sign=np.sign) -> float:
+    def _scalar_force(self, v: float, vb: float, sign) -> float:
         """``force`` for one state (Python floats), the same operations in the same order: an ODE solver
         calls it once per right-hand side, where numpy's per-call overhead on 0-d values dominated."""
         d = v - vb

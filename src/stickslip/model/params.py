@@ -103,6 +103,9 @@ class BeltParams:
 
     def belt_velocity_at(self, t):
         """Belt speed V_b(t) [mm/s]: linear deceleration, then at rest."""
+        if isinstance(t, float):  # one time (an ODE right-hand side): the same operations in Python floats
+            vb = self.belt_velocity - self.belt_deceleration * t
+            return vb if vb > 0.0 else (0.0 if vb <= 0.0 else vb)  # np.maximum(vb, 0.0), NaN kept
         import numpy as np
 
         return np.maximum(self.belt_velocity - self.belt_deceleration * np.asarray(t, dtype=float), 0.0)
