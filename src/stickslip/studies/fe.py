@@ -282,7 +282,17 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
             window_envelope(t, y)[1],
             {"units": u, "long_name": f"half peak-to-peak {k.replace('_', ' ')} per window"},
         )
-    ds = xr.Dataset(
+    data["detail_windows"] = (
+        ("detail_window", "bound"),
+        np.array(windows, float),
+        {"units": "s", "long_name": "start and end of the full-resolution windows"},
+    )
+    for k, v in m.items():
+        u, ln = UNITS.get(k, ("1", k.replace("_", " ")))
+        data[k] = ((), float(v), {"units": u, "long_name": ln})
+    # One constructor call: assigning ~40 variables one by one re-aligns the whole dataset each time
+    # (2.6 s of a 6 s FE reading job).
+    return xr.Dataset(
         data,
         coords={
             "time": ("time", t[keep], {"units": "s", "long_name": "time (full-resolution windows only)"}),
@@ -294,15 +304,6 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
             "window_time": ("window", tw, {"units": "s", "long_name": "window centre time"}),
         },
     )
-    ds["detail_windows"] = (
-        ("detail_window", "bound"),
-        np.array(windows, float),
-        {"units": "s", "long_name": "start and end of the full-resolution windows"},
-    )
-    for k, v in m.items():
-        u, ln = UNITS.get(k, ("1", k.replace("_", " ")))
-        ds[k] = ((), float(v), {"units": u, "long_name": ln})
-    return ds
 
 
 def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> xr.Dataset:
