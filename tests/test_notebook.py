@@ -13,6 +13,7 @@ from stickslip.notebook import (
     claims_frame,
     reader_notebook,
     render,
+    render_all,
     scorecard_html,
     status_counts,
     styled_claims,
@@ -179,3 +180,23 @@ def test_render_executes_and_hides_code_and_parameters(tmp_path, monkeypatch):
     executed = nbformat.read(target.with_suffix(".ipynb"), as_version=4)
     tagged = [c for c in executed.cells if PARAMETERS_TAG in c.metadata.get("tags", [])]
     assert len(tagged) == 1 and json.dumps("injected_blob_marker") in tagged[0].source
+
+
+def test_render_all_renders_the_rest_when_one_fails_and_logs_why(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "notebooks").mkdir()
+    good, bad = tmp_path / "notebooks" / "good.py", tmp_path / "notebooks" / "bad.py"
+    good.write_text(SOURCE)
+    bad.write_text(SOURCE.replace('print(f"measured {VALUE}")', 'raise ValueError("broken_cell_marker")'))
+    out, logs = tmp_path / "results", tmp_path / "logs"
+    logs.mkdir()
+    jobs = [
+        (bad, out / "bad.html", {"value": 1}, logs / "bad.log"),
+        (good, out / "good.html", {"value": 7}, logs / "good.log"),
+    ]
+    failed = render_all(jobs, workers=2, timeout=60)
+    assert failed == [str(bad)]
+    assert "measured 42" in (out / "good.html").read_text()
+    assert not (out / "bad.html").exists()  # nothing half-written for the failed one
+    assert "broken_cell_marker" in (logs / "bad.log").read_text()
+    assert "good.html" in (logs / "good.log").read_text()

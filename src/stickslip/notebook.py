@@ -318,3 +318,28 @@ def render(
         fh.write(body)
     publish(tmp, target)
     nbformat.write(nb, target.with_suffix(".ipynb"))
+
+
+def render_all(jobs, workers: int = 2, timeout: int = 600) -> list[str]:
+    """Render several notebooks in one process, ``workers`` kernels at a time; returns the names of those
+    that failed (empty: all rendered).
+
+    ``jobs``: ``(source, target, params, log)`` tuples. One parent for all saves each notebook a Python
+    start and the nbclient/nbconvert imports (~2 s a notebook); every notebook still gets a fresh kernel.
+    A failing notebook's traceback goes to its ``log`` (the others' logs say where their HTML is), and the
+    others are rendered regardless, so one run shows every failure."""
+    import traceback
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(job) -> str | None:
+        source, target, params, log = job
+        try:
+            render(Path(source), Path(target), params, timeout=timeout)
+        except Exception:  # noqa: BLE001 - reported in the notebook's log, raised as a failed name
+            Path(log).write_text(f"{source}: rendering failed\n{traceback.format_exc()}")
+            return str(source)
+        Path(log).write_text(f"{source} -> {target}\n")
+        return None
+
+    with ThreadPoolExecutor(max_workers=max(1, int(workers))) as pool:
+        return [name for name in pool.map(one, list(jobs)) if name is not None]
