@@ -2,6 +2,7 @@
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from pydantic import ValidationError
 
@@ -42,3 +43,17 @@ def test_model_rejects_unknown_solver_naming_the_entry():
     with pytest.raises(ValidationError) as info:
         MethodsStudy.model_validate(study)
     assert ("methods", len(study["methods"]) - 1, "solver") in [e["loc"] for e in info.value.errors()]
+
+
+def test_failure_map_runs_each_method_once_and_the_work_precision_study_repeats_short_runs():
+    study = study_config("config/test/methods.yaml")
+    study["failure_map"]["values"] = study["failure_map"]["values"][:1]
+    study["failure_map"]["t_end"] = 2.0
+    fmap = methods_study.failure_map_dataset(study)
+    assert set(np.unique(fmap["repeats"].values)) == {1}
+    assert "each run once" in fmap.attrs["timing"]
+    default = study_config()  # the full study times a short run at least min_repeats (3) times
+    model = methods_study.scene_model(default, default["failure_map"]["scene"])
+    methods = methods_study.expand_methods([{"solver": "karnopp", "settings": {"eta": 1e-2}}])
+    records, *_ = methods_study.run_scene(default, model, 2.0, methods, paper=False)
+    assert records[0]["repeats"] >= default["timing"]["min_repeats"] > 1
