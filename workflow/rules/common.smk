@@ -33,6 +33,20 @@ CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
 
+#: Longest jobs first (their typical seconds on 2 cores, from results/benchmarks): on a CPU-bound build this
+#: lets both cores finish together, and the FE and study jobs the claims table and notebooks wait for are
+#: not left to the end (Snakemake otherwise picks among ready jobs without knowing their length).
+PRIORITY = {
+    "inverse_study": 35,
+    "methods_work_precision": 30,
+    "methods_failure_map": 15,
+    "fe_model_comparison": 14,
+    "onedof_sweeps": 10,
+    "fe_figures": 10,
+    "fe_studies": 10,
+    "fe_reading": 6,
+}
+
 #: Final outputs; every rules file appends its own.
 ALL_TARGETS = []
 

@@ -26,6 +26,7 @@ rule fe_reading:
         "results/benchmarks/fe_reading/{fe_reading}.tsv"
     wildcard_constraints:
         fe_reading="|".join(FE_READINGS),
+    priority: PRIORITY["fe_reading"]
     conda:
         CONDA_ENV
     params:
@@ -49,6 +50,7 @@ rule fe_studies:
         "results/logs/fe_studies/studies.log",
     benchmark:
         "results/benchmarks/fe_studies/studies.tsv"
+    priority: PRIORITY["fe_studies"]
     conda:
         CONDA_ENV
     params:
@@ -70,6 +72,7 @@ rule fe_model_comparison:
         "results/logs/fe_model_comparison/model_comparison.log",
     benchmark:
         "results/benchmarks/fe_model_comparison/model_comparison.tsv"
+    priority: PRIORITY["fe_model_comparison"]
     conda:
         CONDA_ENV
     params:
@@ -123,6 +126,7 @@ rule fe_figures:
         "results/logs/fe_figures/figures.log",
     benchmark:
         "results/benchmarks/fe_figures/figures.tsv"
+    priority: PRIORITY["fe_figures"]
     conda:
         CONDA_ENV
     params:

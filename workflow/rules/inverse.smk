@@ -24,6 +24,7 @@ rule inverse_study:
         "results/logs/inverse_study.log",
     benchmark:
         "results/benchmarks/inverse_study.tsv"
+    priority: PRIORITY["inverse_study"]
     conda:
         CONDA_ENV
     params:

@@ -24,6 +24,7 @@ rule methods_work_precision:
         "results/benchmarks/methods_work_precision/{scene}.tsv"
     wildcard_constraints:
         scene="|".join(METHODS_SCENES),
+    priority: PRIORITY["methods_work_precision"]
     conda:
         CONDA_ENV
     params:
@@ -39,6 +40,7 @@ rule methods_failure_map:
         "results/logs/methods_failure_map/all.log",
     benchmark:
         "results/benchmarks/methods_failure_map/all.tsv"
+    priority: PRIORITY["methods_failure_map"]
     conda:
         CONDA_ENV
     params:

@@ -35,6 +35,7 @@ rule onedof_sweeps:
         "results/benchmarks/onedof_sweeps/{reading}.tsv"
     wildcard_constraints:
         reading="|".join(ONEDOF["readings"]),
+    priority: PRIORITY["onedof_sweeps"]
     conda:
         CONDA_ENV
     params:
