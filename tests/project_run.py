@@ -27,12 +27,15 @@ def copy_project(dest: Path) -> Path:
 
 
 def snakemake_command(workdir: Path, *args) -> list[str]:
-    """`snakemake -j2` on the project copy in ``workdir`` with this interpreter."""
+    """`snakemake -j2` on the project copy in ``workdir`` with this interpreter, scheduled as `make figures`
+    schedules (greedy, see the Makefile)."""
     return [
         sys.executable,
         "-m",
         "snakemake",
         "-j2",
+        "--scheduler",
+        "greedy",
         "--directory",
         str(workdir),
         "--snakefile",
