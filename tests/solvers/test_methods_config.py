@@ -57,3 +57,22 @@ def test_failure_map_runs_each_method_once_and_the_work_precision_study_repeats_
     methods = methods_study.expand_methods([{"solver": "karnopp", "settings": {"eta": 1e-2}}])
     records, *_ = methods_study.run_scene(default, model, 2.0, methods, paper=False)
     assert records[0]["repeats"] >= default["timing"]["min_repeats"] > 1
+
+
+def test_the_papers_method_is_run_once_when_it_is_one_of_the_listed_settings(monkeypatch):
+    study = study_config("config/test/methods.yaml")
+    model = methods_study.scene_model(study, "baseline_sigma05")
+    calls = []
+    real = methods_study.measure_run
+    monkeypatch.setattr(
+        methods_study, "measure_run", lambda solver, *a, **k: calls.append(solver) or real(solver, *a, **k)
+    )
+    listed = methods_study.expand_methods(study["methods"])
+    records, _, _, paper = methods_study.run_scene(study, model, 2.0, listed)
+    assert len(calls) == len(listed)  # the paper's settings (sign_rk RK45, rtol 1e-3) are among them
+    (same,) = [r for r in records if r["label"] == "sign_rk[method=RK45,rtol=0.001,atol=1e-06]"]
+    assert paper is same
+    others = [m for m in listed if not (m[0] == "sign_rk" and m[1].get("rtol") == 1e-3)]
+    calls.clear()
+    _, _, _, paper = methods_study.run_scene(study, model, 2.0, others)
+    assert len(calls) == len(others) + 1 and paper["rhs_evaluations"] == same["rhs_evaluations"]
