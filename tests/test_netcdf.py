@@ -56,10 +56,9 @@ def test_interrupted_write_leaves_nothing(baseline_dataset, tmp_path, monkeypatc
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("reader", [netcdf.read_dataset, netcdf.open_lazily])
-def test_missing_dataset_error_names_the_file(tmp_path, reader):
+def test_missing_dataset_error_names_the_file(tmp_path):
     with pytest.raises(FileNotFoundError, match="nope.nc"):
-        reader(tmp_path / "nope.nc")
+        netcdf.read_dataset(tmp_path / "nope.nc")
 
 
 def test_written_datasets_are_readable_like_any_new_file(baseline_dataset, tmp_path):
@@ -91,6 +90,3 @@ def test_text_dimensions_are_written_as_index_plus_labels_and_read_back_labelled
     assert list(back.scene.values) == ["s1", "s2"] and "scene_label" not in back.coords
     assert float(back.value.sel(scene="s2", quantity="c")) == 5.0
     assert back.quantity.attrs == {"long_name": "quantity"}
-    lazy = netcdf.open_lazily(path)  # the same dataset, its arrays read on first use
-    assert lazy.identical(back)
-    lazy.close()

@@ -3,10 +3,8 @@
 from functools import lru_cache
 
 from stickslip.io.claims import evaluate_all, load_claims, write_table
-from stickslip.io.netcdf import open_lazily
+from stickslip.io.netcdf import read_dataset
 
-# A claim reads a few scalars of a dataset that may hold long time series: read only what is used.
-open_dataset = lru_cache(maxsize=None)(open_lazily)
-claims = load_claims(snakemake.input.claims)  # noqa: F821
-results = evaluate_all(claims, snakemake.params.readings, open_dataset)  # noqa: F821
-write_table(results, snakemake.output.csv, snakemake.output.md)  # noqa: F821
+open_dataset = lru_cache(maxsize=None)(read_dataset)
+results = evaluate_all(load_claims(snakemake.input.claims), snakemake.params.readings, open_dataset)
+write_table(results, snakemake.output.csv, snakemake.output.md)

@@ -310,15 +310,6 @@ def write_dataset(
     return path
 
 
-def open_lazily(path: str | os.PathLike) -> xr.Dataset:
-    """Open a dataset without reading its arrays (each is read when first used; the file stays open), with
-    the checks and labels of ``read_dataset``: for a reader of a few variables of many large datasets."""
-    path = Path(path)
-    if not path.exists():
-        raise FileNotFoundError(f"dataset {path} does not exist (has its rule run?)")
-    return label_text_dimensions(xr.open_dataset(path))
-
-
 def read_dataset(path: str | os.PathLike) -> xr.Dataset:
     """Open a dataset fully into memory (closes the file), with a clear error if it is missing; text
     dimensions written as index + labels (``index_text_dimensions``) come back labelled."""
