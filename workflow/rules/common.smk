@@ -1,6 +1,4 @@
 # Shared definitions for every rules file: config validation, target list, helpers.
-import json
-import shlex
 import sys
 from pathlib import Path
 
