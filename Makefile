@@ -17,7 +17,7 @@ export PATH := $(BIN):$(PATH)
 # uv resolves for every Python >= 3.11 at once (markers pick the right pins at install time).
 COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes
 
-.PHONY: setup figures test lint bench report clean lock slurm-test
+.PHONY: setup figures test lint bench report clean lock slurm-test repair
 
 # A fresh venv each time the lock changes, so what is installed is the lock and nothing else. Bytecode is
 # compiled at install (not for the packages' own test suites): every job is a new interpreter, and where
@@ -49,6 +49,13 @@ lock: $(STAMP)
 setup: $(STAMP)
 
 figures: $(STAMP)
+	$(SNAKEMAKE) -j$(JOBS)
+
+# Rebuild every dataset that no longer matches its content checksum (damaged, truncated, edited by another
+# program), then everything downstream of it: `python -m stickslip.io.netcdf verify` lists them.
+repair: $(STAMP)
+	bad=$$($(BIN)/python -m stickslip.io.netcdf verify results); \
+	if [ -n "$$bad" ]; then echo "rebuilding:" $$bad; $(SNAKEMAKE) -j$(JOBS) --force $$bad || exit 1; fi
 	$(SNAKEMAKE) -j$(JOBS)
 
 # Both cores: pytest-xdist workers (they share one small pipeline build, tests/project_run.py).

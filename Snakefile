@@ -1,10 +1,24 @@
 # Stick-slip replication pipeline: every figure of the paper is a rule.
 # Configuration: every config/*.yaml (one file per concern); `--configfile config/test/*.yaml` shrinks it.
+import sys
 from pathlib import Path
 
-for _cfg in sorted(Path(workflow.basedir, "config").glob("*.yaml")):
+from snakemake.utils import update_config
 
-    configfile: str(_cfg)
+sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
+
+from stickslip.config import load_config  # noqa: E402
+
+# The config files are read by the project's loader, not Snakemake's `configfile:`: data only (Snakemake's
+# would run a file marked `__use_yte__` as a template), duplicate keys and syntax errors named with file and
+# line. `--configfile` overrides are read again the same way; `--config key=value` applies last.
+update_config(
+    config,
+    load_config(
+        sorted(Path(workflow.basedir, "config").glob("*.yaml")) + list(workflow.overwrite_configfiles or [])
+    ),
+)
+update_config(config, dict(workflow.config_settings.config or {}))
 
 
 include: "workflow/rules/common.smk"
@@ -14,6 +28,14 @@ for _smk in sorted(Path(workflow.basedir, "workflow", "rules").glob("*.smk")):
     if _smk.name != "common.smk":
 
         include: str(_smk)
+
+
+# Every rule's job re-runs when a package module it imports changes (stickslip.pipeline.code_deps): one more
+# parameter per rule, the hash of those modules, set after every rule is defined.
+for _rule in workflow.rules:
+    _rule.set_params(code=rule_code_hash(_rule))
+
+check_inputs_producible(list(workflow.rules))
 
 
 rule all:

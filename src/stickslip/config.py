@@ -11,9 +11,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-import yaml
-
 from .model.params import ParameterError
+from .pipeline.yaml_files import YamlFileError, load_yaml
 
 
 class ConfigError(ValueError):
@@ -48,7 +47,13 @@ def load_config(paths: Iterable[str | Path]) -> dict:
     value removes an entry, see ``drop_removed``)."""
     config: dict = {}
     for path in paths:
-        config = merge(config, yaml.safe_load(Path(path).read_text()) or {})
+        try:
+            data = load_yaml(path) or {}
+        except YamlFileError as exc:
+            raise ConfigError(str(exc)) from None
+        if not isinstance(data, dict):
+            raise ConfigError(f"{path}: a config file is a mapping of sections, got {type(data).__name__}")
+        config = merge(config, data)
     return drop_removed(config)
 
 

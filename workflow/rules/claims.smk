@@ -38,10 +38,8 @@ rule claims_check:
         "results/benchmarks/claims_check/all.tsv"
     conda:
         CONDA_ENV
-    params:
-        python=sys.executable,
     shell:
-        "{params.python} -m stickslip.io.claims check {input} > {log} 2>&1 || (cat {log}; exit 1)"
+        "{PYTHON} -m stickslip.io.claims check {input} > {log} 2>&1 || (cat {log}; exit 1)"
 
 
 ALL_TARGETS.append("results/claims/deviations.csv")

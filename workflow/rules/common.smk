@@ -1,15 +1,14 @@
 # Shared definitions for every rules file: config validation, target list, helpers.
+import re
 import sys
+from functools import cache
+from glob import glob
 from pathlib import Path
 
-sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
-
-import re  # noqa: E402
-from glob import glob  # noqa: E402
-
-from stickslip.config import drop_removed, validate_config  # noqa: E402
-from stickslip.io.claims import load_claims, required_datasets  # noqa: E402
-from stickslip.studies.specs import dense_map  # noqa: E402
+from stickslip.config import drop_removed, validate_config
+from stickslip.io.claims import ClaimsError, check_claims, load_claims, required_datasets
+from stickslip.pipeline.code_deps import code_hash, module_file
+from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
@@ -22,11 +21,28 @@ validate_config(config, producible=PRODUCIBLE)
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")
 
-CLAIM_FILES = sorted(glob(str(Path(workflow.basedir) / "config" / "claims" / "*.yaml")))
+#: Relative to the working directory (the project folder), so a moved project keeps its inputs' names.
+CLAIM_FILES = sorted(glob("config/claims/*.yaml"))
+#: The pinned set of claim ids: a deleted row or claims file is an error naming the ids it lost.
+CLAIM_IDS_FILE = "config/claims/ids.txt"
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 #: The claims rows, read once at parse time for every rule that needs them.
 CLAIMS = load_claims(CLAIM_FILES)
+check_claims(
+    CLAIMS,
+    config["claims"]["readings"],
+    known_readings=list(config["onedof"]["readings"]) + list(config["fe"]["readings"]),
+    pinned_ids=[
+        line.strip()
+        for line in Path(CLAIM_IDS_FILE).read_text().splitlines()
+        if line.strip() and not line.startswith("#")
+    ],
+)
 CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
+
+#: The interpreter of shell rules: a global of the command text, not a param, so that a moved project or
+#: another interpreter path (`python3 -m snakemake`) is no change of the job.
+PYTHON = sys.executable
 
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
@@ -59,6 +75,39 @@ REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 #: The scene the critical-speed continuation and the Eq. 6 curve run (stickslip.studies.onedof), and the
 #: default of a sweep without `scene:`.
 BASELINE_SCENE = "fig02"
+
+
+SRC = Path(workflow.basedir) / "src"
+
+
+def rule_code_hash(rule):
+    """Hash of the package modules a rule's job can import: from its script, the `python -m` modules and
+    scripts of its shell command, and the notebooks among its inputs."""
+    entries = []
+    if rule.script:
+        entries.append(Path(rule.basedir.get_path_or_uri(secret_free=True)) / rule.script)
+    if rule.shellcmd:
+        entries += [module_file(SRC, m) for m in re.findall(r"-m (stickslip[\w.]*)", rule.shellcmd)]
+        entries += [Path(p) for p in re.findall(r"(workflow/scripts/\S+\.py)", rule.shellcmd)]
+    entries += [Path(f) for f in rule.input if isinstance(f, str) and f.endswith(".py")]
+    return code_hash([e for e in entries if e is not None], SRC)
+
+
+def check_inputs_producible(rules):
+    """Every dataset a claim reads and every file a notebook reads is an output of some rule. Snakemake would
+    take an existing file whose producer is gone for a source file and never rebuild its consumers."""
+
+    outputs = [(rule, o) for rule in rules for o in rule.products()]
+
+    @cache
+    def producible(path):
+        return any(o.match(path) for _, o in outputs)
+
+    check_claims(CLAIMS, config["claims"]["readings"], producible=producible)
+    for name in config["notebooks"]:
+        for path in notebook_inputs(name):
+            if not producible(path):
+                raise ClaimsError(f"notebooks.{name}.inputs: no rule writes {path!r}")
 
 
 def _names(value):

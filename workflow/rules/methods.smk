@@ -97,7 +97,5 @@ rule methods_notebook:
         "results/benchmarks/methods_notebook/all.tsv"
     conda:
         CONDA_ENV
-    params:
-        python=sys.executable,
     shell:
-        "{params.python} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
+        "{PYTHON} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"

@@ -32,7 +32,6 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
 
@@ -41,7 +40,6 @@ MARGIN_FACTOR = 3.0
 ENSEMBLE_SUFFIX = "_ensemble"  # stickslip.ensemble.SUFFIX (io may not import from the orchestration layer)
 KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
-REQUIRED = {"id", "section", "figure", "quote", "kind", "expected"}
 
 
 #: A fitted change smaller than this fraction of the mean |value| over the swept range counts as no trend
@@ -80,40 +78,77 @@ class ClaimResult:
     quote: str
 
 
-#: libyaml's safe loader where PyYAML has it: the same objects, ~7x faster on the claims files, which every
-#: Snakemake start reads (pure-Python parsing was 0.15 s of each start).
-SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+def _row_errors(exc) -> str:
+    from ..config import typed_errors  # the config's one format for a pydantic error: ``key: message``
+
+    return typed_errors(exc).replace("\n", "; ")
 
 
 def load_claims(paths) -> list[dict]:
+    """Every row of the claims files, each checked against ``ClaimRow`` (stickslip.io.claim_rows); an error
+    names the file, the row's id and the key. Rows come back as plain mappings (the measuring functions
+    read them by key) with the file they came from in ``_file``."""
+    from pydantic import ValidationError
+
+    from ..pipeline.yaml_files import YamlFileError, load_yaml
+    from .claim_rows import ClaimRow
+
     claims, seen = [], {}
     for path in sorted(Path(p) for p in paths):
-        rows = yaml.load(path.read_text(), Loader=SAFE_LOADER) or []
+        try:
+            rows = load_yaml(path) or []
+        except YamlFileError as exc:
+            raise ClaimsError(str(exc)) from None
         if not isinstance(rows, list):
             raise ClaimsError(f"{path}: expected a list of claim rows")
         for i, row in enumerate(rows):
             where = f"{path}: row {i} ({row.get('id', '?') if isinstance(row, dict) else '?'})"
             if not isinstance(row, dict):
                 raise ClaimsError(f"{where}: expected a mapping")
-            missing = sorted(REQUIRED - set(row))
-            if missing:
-                raise ClaimsError(f"{where}: missing key {missing[0]!r}")
-            if row["kind"] not in KINDS:
-                raise ClaimsError(f"{where}: kind {row['kind']!r} is not one of {KINDS}")
+            try:
+                ClaimRow.model_validate(row)
+            except ValidationError as exc:
+                raise ClaimsError(f"{where}: {_row_errors(exc)}") from None
             if row["id"] in seen:
                 raise ClaimsError(f"{where}: id {row['id']!r} already used in {seen[row['id']]}")
             seen[row["id"]] = path
-            _check_expected(row, where)
             claims.append({**row, "_file": str(path)})
     return claims
 
 
-def _check_expected(row, where):
-    exp = row["expected"]
-    values = exp.values() if isinstance(exp, dict) else [exp]
-    for v in values:
-        if v not in STATUSES:
-            raise ClaimsError(f"{where}: expected status {v!r} is not one of {STATUSES}")
+def check_claims(claims: list[dict], readings, known_readings=None, pinned_ids=None, producible=None) -> None:
+    """What a row alone cannot show: per-reading entries name known readings; the set of claim ids is the
+    pinned one (a deleted row or file is an error listing the ids it lost); every dataset a claim reads,
+    per claims reading (``readings``), is an output of some rule (``producible(path) -> bool``)."""
+    known = set(known_readings or ())
+    for c in claims if known_readings is not None else []:
+        where = f"{c['_file']}: claim {c['id']}"
+        for key in ("expected", "note"):
+            if isinstance(c.get(key), dict):
+                for name in c[key]:
+                    if name != "default" and name not in known:
+                        raise ClaimsError(f"{where}: {key}.{name}: not a reading ({sorted(known)})")
+    if pinned_ids is not None:
+        ids = {c["id"] for c in claims}
+        lost, new = sorted(set(pinned_ids) - ids), sorted(ids - set(pinned_ids))
+        if lost:
+            raise ClaimsError(f"claims pinned but not found in any claims file: {', '.join(lost)}")
+        if new:
+            raise ClaimsError(
+                f"claims not in the pinned id list (add them to it deliberately): {', '.join(new)}"
+            )
+    if producible is not None:
+        for c in claims:
+            refs = [("dataset", c)] + [
+                (f"{k}.dataset", c[k]) for k in ("lhs", "rhs") if isinstance(c.get(k), dict)
+            ]
+            for key, ref in refs:
+                if "dataset" not in ref:
+                    continue
+                for r in readings_of(c, readings) if "{reading}" in ref["dataset"] else [""]:
+                    path = ref["dataset"].format(reading=r)
+                    if not producible(path):
+                        raise ClaimsError(f"{c['_file']}: claim {c['id']}: {key}: no rule writes {path!r}")
 
 
 def dataset_paths(claim: dict) -> list[str]:

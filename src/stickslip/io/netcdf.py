@@ -303,6 +303,7 @@ def write_dataset(
     os.close(fd)
     try:
         ds.to_netcdf(tmp, format="NETCDF4", engine="netcdf4", encoding=encoding)
+        seal(tmp)
         publish(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -310,11 +311,107 @@ def write_dataset(
     return path
 
 
+#: Global attribute holding the hash of everything else a dataset's file holds (``content_checksum``).
+CHECKSUM_ATTR = "content_checksum"
+#: The one command that rebuilds every dataset whose content no longer matches its checksum.
+REPAIR_COMMAND = "make repair"
+
+
+class CorruptDatasetError(OSError):
+    """A dataset file cannot be read, or its content no longer matches the checksum it was written with."""
+
+
+def _attr_bytes(attrs: dict) -> bytes:
+    items = sorted((str(k), np.asarray(v).tolist()) for k, v in attrs.items() if k != CHECKSUM_ATTR)
+    return repr(items).encode()
+
+
+def content_checksum(raw: xr.Dataset) -> str:
+    """sha256 of a dataset as stored (opened without decoding): every variable's name, dimensions, type,
+    values and attributes, and the global attributes but the checksum itself."""
+    import hashlib
+
+    digest = hashlib.sha256(_attr_bytes(raw.attrs))
+    for name in sorted(raw.variables, key=str):
+        var = raw.variables[name]
+        digest.update(f"\0{name}:{var.dims}:{var.dtype.str}:{var.shape}\0".encode())
+        values = var.values
+        digest.update(
+            repr(values.tolist()).encode()
+            if values.dtype.kind == "O"
+            else np.ascontiguousarray(values).tobytes()
+        )
+        digest.update(_attr_bytes(var.attrs))
+    return "sha256:" + digest.hexdigest()
+
+
+def _open_raw(path) -> xr.Dataset:
+    return xr.open_dataset(path, engine="netcdf4", decode_cf=False, mask_and_scale=False, decode_times=False)
+
+
+def seal(path: str | os.PathLike) -> str:
+    """Write the content checksum into a finished file (a global attribute; the data are not rewritten)."""
+    import netCDF4
+
+    with _open_raw(path) as raw:
+        checksum = content_checksum(raw.load())
+    with netCDF4.Dataset(path, "a") as nc:
+        nc.setncattr(CHECKSUM_ATTR, checksum)
+    return checksum
+
+
 def read_dataset(path: str | os.PathLike) -> xr.Dataset:
-    """Open a dataset fully into memory (closes the file), with a clear error if it is missing; text
+    """Open a dataset fully into memory (closes the file), with a clear error if it is missing, unreadable
+    (truncated) or no longer matches its content checksum (a bit flip, an edit by another program); text
     dimensions written as index + labels (``index_text_dimensions``) come back labelled."""
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"dataset {path} does not exist (has its rule run?)")
-    with xr.open_dataset(path) as ds:
-        return label_text_dimensions(ds.load())
+    try:
+        with _open_raw(path) as raw:
+            raw = raw.load()
+    except Exception as exc:  # HDF5/netCDF errors of a damaged file come in several types
+        raise CorruptDatasetError(
+            f"dataset {path} cannot be read ({type(exc).__name__}: {exc}); it is damaged or truncated: "
+            f"rebuild it with `{REPAIR_COMMAND}`"
+        ) from None
+    stored = raw.attrs.get(CHECKSUM_ATTR)
+    if stored is None or content_checksum(raw) != stored:
+        why = "has no content checksum" if stored is None else "no longer matches its content checksum"
+        raise CorruptDatasetError(
+            f"dataset {path} {why} (damaged, or changed since its rule wrote it): rebuild it with "
+            f"`{REPAIR_COMMAND}`"
+        )
+    return label_text_dimensions(xr.decode_cf(raw))
+
+
+def verify(paths) -> list[tuple[str, str]]:
+    """(path, problem) for every dataset among ``paths`` that ``read_dataset`` refuses."""
+    bad = []
+    for path in paths:
+        try:
+            read_dataset(path)
+        except (CorruptDatasetError, FileNotFoundError) as exc:
+            bad.append((str(path), str(exc)))
+    return bad
+
+
+def main(argv=None) -> int:
+    """``python -m stickslip.io.netcdf verify [FOLDER]``: print every damaged dataset under FOLDER (default
+    results), one path per line, with its problem on stderr; exit 1 if there is one."""
+    import sys
+
+    argv = sys.argv[1:] if argv is None else argv
+    if not argv or argv[0] != "verify" or len(argv) > 2:
+        print("usage: python -m stickslip.io.netcdf verify [results]", file=sys.stderr)
+        return 2
+    folder = Path(argv[1] if len(argv) == 2 else "results")
+    bad = verify(sorted(p for p in folder.rglob("*.nc") if not p.name.startswith(".")))
+    for path, problem in bad:
+        print(path)
+        print(problem, file=sys.stderr)
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,141 @@
+"""One claims row as a typed record: every key checked when the claims files are read, before any job.
+
+A row that a typo would silently change (``tolerence`` for ``tolerance`` would make the band 0, a negative
+tolerance turns equal numbers into a deviation, ``value: "1.5 mm"`` fails inside the table job) is an error
+naming its file, claim id and key. What a row may hold depends on its kind:
+
+==========  ======================================================  ==========================
+kind        needs                                                    may not hold
+==========  ======================================================  ==========================
+value       dataset, variable, value, unit, tolerance               lhs, rhs, relation, coord, sign
+ratio       lhs, rhs, value, tolerance                               dataset, relation, coord, sign
+compare     lhs, rhs, relation                                       value, tolerance, coord, sign
+trend       dataset, variable, coord, sign                           lhs, rhs, value, tolerance, relation
+==========  ======================================================  ==========================
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
+Status = Literal["reproduced", "deviates", "indistinguishable", "not-comparable"]
+
+#: The paper's numbered figures (Figure 1 to Figure 36); a claim's ``figures`` name some of them.
+PAPER_FIGURES = range(1, 37)
+
+NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Text = Annotated[str, Field(min_length=1)]
+#: A per-reading value: one for every reading, or ``{default: ..., <reading>: ...}``.
+PerReading = Text | dict[str, Text]
+
+NEEDS = {
+    "value": ("dataset", "variable", "value", "unit", "tolerance"),
+    "ratio": ("lhs", "rhs", "value", "tolerance"),
+    "compare": ("lhs", "rhs", "relation"),
+    "trend": ("dataset", "variable", "coord", "sign"),
+}
+MAY_NOT = {
+    "value": ("lhs", "rhs", "relation", "coord", "sign"),
+    "ratio": ("dataset", "variable", "relation", "coord", "sign"),
+    "compare": ("value", "tolerance", "coord", "sign"),
+    "trend": ("lhs", "rhs", "value", "tolerance", "relation"),
+}
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+
+class Tolerance(_Strict):
+    """Half-width of the accepted band around the reported number: the larger of ``rel`` x |value| and
+    ``abs``, and why that width."""
+
+    rel: NonNegative | None = None
+    abs: NonNegative | None = None
+    reason: Text
+
+    @model_validator(mode="after")
+    def _has_width(self):
+        if self.rel is None and self.abs is None:
+            raise ValueError("needs rel or abs (a band of width 0 is never what a reported number means)")
+        return self
+
+
+class Operand(_Strict):
+    """One side of a ratio or comparison: a dataset's scalar, or a constant."""
+
+    dataset: Text | None = None
+    variable: Text | None = None
+    value: Finite | None = None
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if self.value is None and (self.dataset is None or self.variable is None):
+            raise ValueError("needs dataset and variable, or a value")
+        if self.value is not None and (self.dataset is not None or self.variable is not None):
+            raise ValueError("a constant (value) cannot also name a dataset or variable")
+        return self
+
+
+class ClaimRow(_Strict):
+    id: Annotated[str, Field(pattern=r"^[a-z0-9_]+$")]
+    section: Text
+    figure: Text = Field(description="display label, e.g. 'Fig. 21 vs Fig. 23'")
+    figures: list[int] = Field(description="the paper figures the claim is about ([] for text-only claims)")
+    quote: Text
+    kind: Literal["value", "ratio", "compare", "trend"]
+    expected: Status | dict[str, Status]
+    dataset: Text | None = None
+    variable: Text | None = None
+    note: PerReading | None = None
+    value: Finite | None = None
+    unit: str | None = None
+    tolerance: Tolerance | None = None
+    lhs: Operand | None = None
+    rhs: Operand | None = None
+    relation: Literal[">", "<", ">=", "<="] | None = None
+    coord: Text | None = None
+    sign: Literal[-1, 0, 1] | None = None
+    comparable: bool | None = None
+    coord_scale: Literal["log"] | None = None
+    min_relative_change: NonNegative | None = None
+
+    @model_validator(mode="after")
+    def _fits_its_kind(self):
+        missing = [k for k in NEEDS[self.kind] if getattr(self, k) is None]
+        if missing:
+            raise ValueError(f"{missing[0]}: a {self.kind} claim needs it")
+        extra = [k for k in MAY_NOT[self.kind] if getattr(self, k) is not None]
+        if extra:
+            raise ValueError(f"{extra[0]}: not used by a {self.kind} claim (misplaced or misspelt key?)")
+        if self.kind == "compare" and self.lhs.value is not None:
+            raise ValueError("lhs: a comparison measures its left side (a dataset variable)")
+        if self.min_relative_change is not None and self.kind != "trend":
+            raise ValueError("min_relative_change: only a trend claim has a floor")
+        bad = [f for f in self.figures if f not in PAPER_FIGURES]
+        if bad:
+            raise ValueError(f"figures: {bad[0]} is not a figure of the paper (1-{PAPER_FIGURES[-1]})")
+        if len(set(self.figures)) != len(self.figures):
+            raise ValueError("figures: a figure is listed twice")
+        return self
+
+    def per_reading_keys(self) -> dict[str, list[str]]:
+        """key -> reading names used by its per-reading mapping (``default`` excluded)."""
+        out = {}
+        for key in ("expected", "note"):
+            value = getattr(self, key)
+            if isinstance(value, dict):
+                out[key] = [k for k in value if k != "default"]
+        return out
+
+    def datasets(self) -> list[tuple[str, str]]:
+        """(key, dataset path template) of every dataset the row reads."""
+        refs = [("dataset", self.dataset)]
+        refs += [
+            (f"{side}.dataset", getattr(self, side).dataset) for side in ("lhs", "rhs") if getattr(self, side)
+        ]
+        return [(k, p) for k, p in refs if p is not None]
