@@ -22,13 +22,14 @@ ROW = {
     "id": "f",
     "section": "3",
     "figure": "Fig. 2",
+    "figures": [2],
     "quote": "q",
     "kind": "value",
     "dataset": "r/{reading}.nc",
     "variable": "f",
     "value": 0.25,
     "unit": "Hz",
-    "tolerance": {"rel": 0.2},
+    "tolerance": {"rel": 0.2, "reason": "test"},
     "expected": "reproduced",
 }
 
@@ -86,7 +87,7 @@ def test_expected_per_reading_with_default():
     "broken,match",
     [
         ({"kind": "guess"}, "kind"),
-        ({"expected": "maybe"}, "expected status"),
+        ({"expected": "maybe"}, "expected.*maybe"),
         ({"quote": None}, None),
     ],
 )

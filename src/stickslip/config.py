@@ -12,7 +12,10 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from .model.params import ParameterError
+from .pipeline.errors import typed_errors
 from .pipeline.yaml_files import YamlFileError, load_yaml
+
+__all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
 
 class ConfigError(ValueError):
@@ -57,20 +60,6 @@ def load_config(paths: Iterable[str | Path]) -> dict:
     return drop_removed(config)
 
 
-def typed_errors(exc) -> str:
-    """A pydantic ValidationError as one line per problem: ``dotted.key: message (got value)``."""
-    lines = []
-    for err in exc.errors():
-        key = "".join(f"[{part}]" if isinstance(part, int) else f".{part}" for part in err["loc"]).lstrip(".")
-        if err["type"] == "value_error":  # a validator's own message (cross-references name their key)
-            text = str(err["ctx"]["error"])
-            lines.append(text if key and text.startswith(key) else f"{key}: {text}")
-            continue
-        got = "" if err["type"] == "missing" else f" (got {err['input']!r})"
-        lines.append(f"{key}: {err['msg']}{got}")
-    return "\n".join(lines)
-
-
 def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
     """Raise ConfigError naming the key of the first bad value (all typed errors at once).
 
@@ -84,14 +73,31 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
     except ValidationError as exc:
         raise ConfigError(typed_errors(exc)) from None
     try:
+        _check_ensemble(config)
         _check_onedof(config)
         check_methods_config(config["methods_study"])
         _check_dense_maps(config)
-        check_fe_config(config["fe"], list(producible))
+        from .studies.fe import effective_fe_config
+
+        check_fe_config(
+            effective_fe_config(config),
+            list(producible),
+            allow_expensive=config.get("allow_expensive", False),
+        )
         _check_validation(config, list(producible))
         _check_inverse_claims(config)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
+
+
+def _check_ensemble(config: dict) -> None:
+    """The ensemble section builds the spec every claimed dataset's job builds (one schema, checked once)."""
+    from .ensemble import EnsembleSpec
+
+    try:
+        EnsembleSpec.from_mapping(config.get("ensemble"))
+    except (ValueError, TypeError) as exc:
+        raise ConfigError(str(exc) if str(exc).startswith("ensemble") else f"ensemble: {exc}") from None
 
 
 def _check_validation(config: dict, producible: list[str]) -> None:
@@ -115,7 +121,7 @@ def _check_inverse_claims(config: dict) -> None:
 
 def _check_onedof(config: dict) -> None:
     """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
-    from .studies.specs import figure_runs, run_spec, sweep_spec
+    from .studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
 
     onedof = config["onedof"]
     for figure in onedof["figures"]:
@@ -125,7 +131,7 @@ def _check_onedof(config: dict) -> None:
         for reading in config["claims"]["readings"]:
             sweep_spec(config, sweep, reading)
     for reading in (onedof.get("critical_speed") or {}).get("readings", []):
-        run_spec(config, "fig02", reading, "exact")
+        baseline_spec(config, reading)
 
 
 def _check_dense_maps(config: dict) -> None:
@@ -135,13 +141,54 @@ def _check_dense_maps(config: dict) -> None:
         dense_map(config, name)
 
 
-def check_fe_config(fe_cfg: dict, producible: list[str]) -> None:
+#: Beam element-increments (elements x explicit steps) a build may run without ``allow_expensive: true``.
+#: The default config's largest scene: 20 elements x ~1e5 steps = 2e6; ABAQUS's run of the paper (100
+#: elements, 3.7e6 increments) is 3.7e8; the limit lets that through and stops a mesh typo 100x larger.
+MAX_FE_ELEMENT_INCREMENTS = 2.0e9
+
+
+def check_fe_lengths(mapping: dict, key: str, reading: str | None, allow_expensive: bool = False) -> None:
+    """A merged FE scene's windows fit inside its run and its estimated cost is within the guard: the
+    explicit step is at most the time an axial wave needs to cross one element (the cheapest case), so
+    elements x t_end / step is a lower bound of the work."""
+    solver, output, beam = mapping.get("solver", {}), mapping.get("output", {}), mapping.get("beam", {})
+    where = f"{key} (FE reading {reading})" if reading else key
+    t_end = solver.get("t_end")
+    if t_end is None:
+        return
+    checks = [
+        ("solver.output_dt", solver.get("output_dt"), "<="),
+        ("output.bin_width", output.get("bin_width"), "<="),
+    ]
+    checks += [(f"output.windows[{i}]", w[1], "<=") for i, w in enumerate(output.get("windows") or [])]
+    for name, value, _ in checks:
+        if value is not None and value > t_end:
+            raise ConfigError(f"{where}.{name}: {value!r} does not fit in solver.t_end = {t_end!r}")
+    needed = ("n_elements", "length", "youngs_modulus_gpa", "density_kg_m3")
+    if allow_expensive or any(beam.get(k) is None for k in needed):
+        return
+    wave_speed = (beam["youngs_modulus_gpa"] * 1e9 / beam["density_kg_m3"]) ** 0.5 * 1e3  # mm/s
+    step = solver.get("safety_factor", 1.0) * beam["length"] / beam["n_elements"] / wave_speed
+    cost = beam["n_elements"] * t_end / step
+    if cost > MAX_FE_ELEMENT_INCREMENTS:
+        raise ConfigError(
+            f"{where}.beam.n_elements: {beam['n_elements']} elements over t_end = {t_end} s is an estimated "
+            f"{cost:.3g} element-increments, more than the limit {MAX_FE_ELEMENT_INCREMENTS:.3g}; set "
+            "allow_expensive: true to build it anyway"
+        )
+
+
+def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool = False) -> None:
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
     before any job starts with the config key named (references between entries: config_models)."""
     from .fe.scene import SceneParams
     from .studies.fe import scene_mapping
 
     for name in fe_cfg["scenes"]:
+        for reading in fe_cfg.get("readings") or [None]:
+            check_fe_lengths(
+                scene_mapping(fe_cfg, name, reading), f"fe.scenes.{name}", reading, allow_expensive
+            )
         mapping = scene_mapping(fe_cfg, name)
         try:
             SceneParams.from_mapping(

@@ -107,6 +107,35 @@ class RunLengths(Section):
     count_window: Positive | None = Field(None, description="peak-count window [s] (paper: 18 s)")
 
 
+def check_run_lengths(run: dict, key_of: dict) -> None:
+    """A run's lengths fit inside it: ``output_dt <= t_end``, ``transient < t_end``, ``count_window <=
+    t_end`` (peaks are counted in [0, count_window]). ``key_of`` names where each value came from."""
+    t_end = run.get("t_end")
+    if t_end is None:
+        return
+    for name, bad in (
+        ("output_dt", lambda v: v > t_end),
+        ("transient", lambda v: v >= t_end),
+        ("count_window", lambda v: v > t_end),
+    ):
+        value = run.get(name)
+        if value is not None and bad(value):
+            raise ValueError(
+                f"{key_of[name]}: {value!r} does not fit in the run's t_end = {t_end!r} ({key_of['t_end']})"
+            )
+
+
+def merged_run_lengths(layers: list[tuple[str, Any]]) -> tuple[dict, dict]:
+    """(values, key each came from) of the run-length keys over config layers, later layers winning."""
+    run, key_of = {}, {}
+    for prefix, layer in layers:
+        for name in ("t_end", "output_dt", "transient", "count_window"):
+            value = getattr(layer, name, None) if layer is not None else None
+            if value is not None:
+                run[name], key_of[name] = value, f"{prefix}.{name}"
+    return run, key_of
+
+
 class OnedofDefaults(RunLengths):
     params: BeltParameters
     t_end: Positive
@@ -186,7 +215,7 @@ class Sweep(Section):
     _linked = field_validator("linked")(linked_parameters)
 
 
-class SweepFigure(Open):
+class SweepFigure(Section):
     title: str | None = None
     sweep: str
     readings: Names
@@ -200,6 +229,16 @@ class CriticalSpeed(Section):
     t_end: Positive
     transient: NonNegative
 
+    @model_validator(mode="after")
+    def ordered(self):
+        if not self.start < self.stop:
+            raise ValueError(
+                f"start < stop needed (the continuation runs upward), got {self.start!r}, {self.stop!r}"
+            )
+        if not self.transient < self.t_end:
+            raise ValueError(f"transient: {self.transient!r} does not fit in t_end = {self.t_end!r}")
+        return self
+
 
 class FrictionTable(Section):
     scene: str
@@ -208,7 +247,7 @@ class FrictionTable(Section):
     bins: Annotated[int, Field(ge=2)]
 
 
-class Figure(Open):
+class Figure(Section):
     title: str | None = None
     scene: str
     plot: Literal["timeseries", "phase", "velocity"] | None = None
@@ -216,7 +255,16 @@ class Figure(Open):
     methods: Names
 
 
+class Baseline(Section):
+    """The paper's baseline run: what a study without its own scene, reading or method starts from."""
+
+    scene: str
+    reading: str
+    method: str
+
+
 class Onedof(Section):
+    baseline: Baseline
     defaults: OnedofDefaults
     readings: Annotated[dict[str, Reading], Field(min_length=1)]
     methods: Annotated[dict[str, Method], Field(min_length=1)]
@@ -237,9 +285,13 @@ class Onedof(Section):
             scenes.append((f"onedof.figures.{name}.scene", fig.scene))
             readings += [(f"onedof.figures.{name}.readings", r) for r in fig.readings]
             methods += [(f"onedof.figures.{name}.methods", m) for m in fig.methods]
+        base = self.baseline
+        scenes.append(("onedof.baseline.scene", base.scene))
+        readings.append(("onedof.baseline.reading", base.reading))
+        methods.append(("onedof.baseline.method", base.method))
         for name, sweep in self.sweeps.items():
-            scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or "fig02"))
-            methods.append((f"onedof.sweeps.{name}.method", sweep.method or "exact"))
+            scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or base.scene))
+            methods.append((f"onedof.sweeps.{name}.method", sweep.method or base.method))
         table = self.friction_table
         scenes.append(("onedof.friction_table.scene", table.scene))
         readings.append(("onedof.friction_table.reading", table.reading))
@@ -253,24 +305,35 @@ class Onedof(Section):
         check_refs(readings, self.readings, "onedof.readings")
         check_refs(methods, self.methods, "onedof.methods")
         for name, sweep in self.sweeps.items():
-            needs_switch(f"onedof.sweeps.{name}", sweep.law, sweep.method or "exact", self.methods)
+            needs_switch(f"onedof.sweeps.{name}", sweep.law, sweep.method or base.method, self.methods)
+        for name, scene in self.scenes.items():
+            for rname, reading in self.readings.items():
+                check_run_lengths(
+                    *merged_run_lengths(
+                        [
+                            ("onedof.defaults", self.defaults),
+                            (f"onedof.scenes.{name}", scene),
+                            (f"onedof.readings.{rname}", reading),
+                        ]
+                    )
+                )
         return self
 
 
-class Claims(Open):
+class Claims(Section):
     readings: Names
     check: bool | None = None
 
 
 class Ensemble(Section):
-    relative: Annotated[float, Field(gt=0, le=1e-3, allow_inf_nan=False)] | None = None
+    relative: Annotated[float, Field(gt=0, lt=1e-3, allow_inf_nan=False)] | None = None
     seeds: Annotated[list[int], Field(min_length=1)] | None = None
     step_factor: Annotated[float, Field(gt=0, lt=1, allow_inf_nan=False)] | None = None
     step_keys: list[str] | None = None
     blas_threads: Annotated[int, Field(ge=1)] | None = None
 
 
-class Notebook(Open):
+class Notebook(Section):
     figures: list[str] | None = None
     sweep_figures: list[str] | None = None
     inputs: list[str] | None = Field(
@@ -303,6 +366,8 @@ class MapAxis(Section):
             missing = [k for k in ("start", "stop", "num") if getattr(self, k) is None]
             if missing:
                 raise ValueError(f"{missing[0]}: missing (give either values or start, stop, num)")
+            if self.num > 1 and not self.start < self.stop:
+                raise ValueError(f"start < stop needed, got {self.start!r}, {self.stop!r}")
             if self.spacing == "log" and not (self.start > 0 and self.stop > 0):
                 raise ValueError(
                     f"log spacing needs start > 0 and stop > 0, got {self.start!r}, {self.stop!r}"
@@ -392,6 +457,12 @@ class Timing(Section):
     slow_run: Positive = 1.0
     """A run taking longer than this [s of CPU] is timed once."""
 
+    @model_validator(mode="after")
+    def ordered(self):
+        if self.min_repeats > self.max_repeats:
+            raise ValueError(f"min_repeats {self.min_repeats!r} > max_repeats {self.max_repeats!r}")
+        return self
+
 
 class StudyScene(Section):
     variant: Variant
@@ -416,6 +487,11 @@ class MethodsStudy(Section):
     scenes: Annotated[dict[str, StudyScene], Field(min_length=1)]
     methods: Annotated[list[StudyMethod], Field(min_length=1)]
     failure_map: FailureMap
+
+    @model_validator(mode="after")
+    def lengths_fit(self):
+        check_run_lengths(*merged_run_lengths([("methods_study", self)]))
+        return self
 
 
 # -- beam on disc (FE) ---------------------------------------------------------------------------------------
@@ -464,6 +540,13 @@ class FeSolver(Section):
 class FeOutput(Section):
     bin_width: Positive | None = Field(None, description="s")
     windows: list[Annotated[list[NonNegative], Field(min_length=2, max_length=2)]] | None = None
+
+    @model_validator(mode="after")
+    def windows_ordered(self):
+        for i, (start, stop) in enumerate(self.windows or []):
+            if not start < stop:
+                raise ValueError(f"windows[{i}]: start < stop needed, got [{start!r}, {stop!r}]")
+        return self
 
 
 class FeScene(Section):
@@ -591,6 +674,12 @@ class MuKRatio(Section):
     min: Positive
     max: Positive
 
+    @model_validator(mode="after")
+    def ordered(self):
+        if not self.min < self.max:
+            raise ValueError(f"need min < max, got {self.min!r}, {self.max!r}")
+        return self
+
 
 class Hypothesis(Section):
     """Values applied to every run of the joint problem (every other parameter as stated)."""
@@ -697,6 +786,11 @@ class MethodsPerLaw(Section):
     methods: Annotated[list[StudyMethod], Field(min_length=1)]
     paper_method: str
 
+    @model_validator(mode="after")
+    def lengths_fit(self):
+        check_run_lengths(*merged_run_lengths([("validation.methods_per_law", self)]))
+        return self
+
 
 class Validation(Section):
     base_params: BeltParameters
@@ -717,6 +811,65 @@ class Validation(Section):
 
 # -- the whole config ----------------------------------------------------------------------------------------
 
+#: What one build may ask for before ``allow_expensive: true`` must say it is meant. The default config's
+#: largest study stores 6.4e6 samples (the speed-damping dense map) and one run at most 4.0e4
+#: (``estimated_costs``); the limits sit ~50-80x above, below what would exhaust a 24 GiB machine (8 bytes a
+#: sample, several arrays a run).
+MAX_SAMPLES_PER_RUN = 2_000_000
+MAX_SAMPLES_PER_STUDY = 500_000_000
+#: Largest beam mesh (elements) or continuum mesh (cells) without ``allow_expensive`` (the paper: 100 x 1).
+MAX_FE_ELEMENTS = 20_000
+
+
+def _samples(t_end: float, output_dt: float) -> int:
+    return int(t_end / output_dt) + 1
+
+
+def estimated_costs(cfg: PipelineConfig) -> list[tuple[str, str, float, float]]:
+    """(key, what, estimate, limit) of every study whose size the config sets, in stored samples (1-DOF) or
+    mesh elements (FE). Cheap: sizes only, nothing is allocated."""
+    import math
+
+    onedof = cfg.onedof
+    out = []
+    for name, scene in onedof.scenes.items():
+        run, _ = merged_run_lengths([("d", onedof.defaults), ("s", scene)])
+        for rname, reading in onedof.readings.items():
+            dt = reading.output_dt or run["output_dt"]
+            key = f"onedof.scenes.{name} (reading {rname})"
+            out.append((key, "samples per run", _samples(run["t_end"], dt), MAX_SAMPLES_PER_RUN))
+    for name, sweep in onedof.sweeps.items():
+        scene = onedof.scenes.get(sweep.scene or onedof.baseline.scene)
+        run, _ = merged_run_lengths([("d", onedof.defaults), ("s", scene)])
+        points = (len(sweep.values) + sweep.dense.num) * len(cfg.claims.readings)
+        per_run = _samples(run["t_end"], run["output_dt"])
+        out.append((f"onedof.sweeps.{name}.dense.num", "samples", points * per_run, MAX_SAMPLES_PER_STUDY))
+    for name, m in cfg.dense_map.maps.items():
+        scene = onedof.scenes.get(m.scene)
+        run, _ = merged_run_lengths([("d", onedof.defaults), ("s", scene), ("m", m)])
+        points = math.prod(a.size for a in m.axes)
+        per_run = _samples(run["t_end"], run["output_dt"])
+        out.append((f"dense_map.maps.{name}.axes", "samples", points * per_run, MAX_SAMPLES_PER_STUDY))
+    if onedof.critical_speed is not None:
+        cs = onedof.critical_speed
+        per_run = _samples(cs.t_end, onedof.defaults.output_dt)
+        out.append(("onedof.critical_speed.num", "samples", cs.num * per_run, MAX_SAMPLES_PER_STUDY))
+    fe = cfg.fe
+    beams = [("fe.defaults", fe.defaults.beam)]
+    beams += [
+        (f"fe.{section}.{n}", sc.beam)
+        for section in ("scenes", "readings")
+        for n, sc in getattr(fe, section).items()
+    ]
+    for key, beam in beams:
+        if beam is not None and beam.n_elements is not None:
+            out.append((f"{key}.beam.n_elements", "elements", beam.n_elements, MAX_FE_ELEMENTS))
+    out.append(("fe.convergence.n_elements", "elements", max(fe.convergence.n_elements), MAX_FE_ELEMENTS))
+    for i, (nx, ny) in enumerate([fe.comparison.mesh] + list(fe.increments.meshes)):
+        key = "fe.comparison.mesh" if i == 0 else f"fe.increments.meshes[{i - 1}]"
+        out.append((key, "cells", nx * ny, MAX_FE_ELEMENTS))
+    return out
+
 
 class PipelineConfig(Section):
     """The merged config Snakemake builds from config/*.yaml (and any --configfile)."""
@@ -731,6 +884,21 @@ class PipelineConfig(Section):
     fe_long_runs: bool = Field(False, description="run the paper's windows (fe.long_runs), not short ones")
     inverse: Inverse
     validation: Validation
+    allow_expensive: bool = Field(
+        False, description="true: build even a study larger than the cost guard's limits (estimated_costs)"
+    )
+
+    @model_validator(mode="after")
+    def within_cost_limits(self):
+        """Every study's size below its limit, unless ``allow_expensive: true`` (the estimate is reported)."""
+        if not self.allow_expensive:
+            for key, what, estimate, limit in estimated_costs(self):
+                if estimate > limit:
+                    raise ValueError(
+                        f"{key}: an estimated {estimate:.3g} {what}, more than the limit {limit:.3g}; set "
+                        "allow_expensive: true to build it anyway"
+                    )
+        return self
 
     @model_validator(mode="after")
     def sections_refer_to_each_other(self):

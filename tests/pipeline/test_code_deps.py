@@ -56,10 +56,16 @@ def test_a_lazy_import_inside_a_function_counts():
     assert "stickslip.fe.kernel" in imported_names(source)
 
 
-def test_a_registry_loaded_by_name_depends_on_every_module_of_its_package():
-    files = dependency_files([module_file(SRC, "stickslip.solvers")], SRC)
-    assert module_file(SRC, "stickslip.solvers.exact") in files
-    assert module_file(SRC, "stickslip.solvers.moreau") in files
+def test_a_name_from_a_registry_package_depends_on_every_module_it_may_load(tmp_path):
+    by_name, by_module = tmp_path / "by_name.py", tmp_path / "by_module.py"
+    by_name.write_text("from stickslip.solvers import make_solver\n")
+    by_module.write_text("from stickslip.solvers.base import Trajectory\n")
+    registry = dependency_files([by_name], SRC)
+    assert module_file(SRC, "stickslip.solvers.exact") in registry
+    assert module_file(SRC, "stickslip.solvers.moreau") in registry
+    one_module = dependency_files([by_module], SRC)
+    assert module_file(SRC, "stickslip.solvers") in one_module  # its __init__ runs
+    assert module_file(SRC, "stickslip.solvers.exact") not in one_module
 
 
 def test_a_module_depends_on_its_parent_packages_and_not_on_unrelated_ones():

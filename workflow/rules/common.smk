@@ -7,6 +7,7 @@ from pathlib import Path
 
 from stickslip.config import drop_removed, validate_config
 from stickslip.io.claims import ClaimsError, check_claims, load_claims, required_datasets
+from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
 from stickslip.studies.specs import dense_map
 
@@ -65,6 +66,8 @@ PRIORITY = {
 ALL_TARGETS = []
 
 ONEDOF = config["onedof"]
+#: Every 1-DOF run's dataset path -> its run (scene, reading, method): paths are looked up, never parsed.
+ONEDOF_CATALOGUE = onedof_catalogue(ONEDOF)
 
 #: One caption template for every figure of `snakemake --report` (written by rule report_captions). An
 #: absolute path under the working directory, since report() resolves captions against the rules folder.
@@ -72,9 +75,9 @@ REPORT_CAPTIONS = "results/report/captions.rst"
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
-#: The scene the critical-speed continuation and the Eq. 6 curve run (stickslip.studies.onedof), and the
-#: default of a sweep without `scene:`.
-BASELINE_SCENE = "fig02"
+#: The paper's baseline run (`onedof.baseline`): the Eq. 6 curve, the critical-speed continuation and a sweep
+#: without its own `scene:` start from it.
+BASELINE = ONEDOF["baseline"]
 
 
 SRC = Path(workflow.basedir) / "src"
@@ -118,17 +121,13 @@ def onedof_subconfig(readings=None, scenes=None, methods=None, study=None):
     """The part of the config a 1-DOF job reads, passed as its params: the defaults, the named readings,
     scenes and methods (a name or a list; None: all) and at most one study section. Snakemake re-runs a job
     whose params change, so an edit re-runs exactly the jobs that read the edited value."""
-    sub = {"defaults": ONEDOF["defaults"]}
+    sub = {"baseline": ONEDOF["baseline"], "defaults": ONEDOF["defaults"]}
     for key, names in (("readings", readings), ("scenes", scenes), ("methods", methods)):
         names = _names(names)
         sub[key] = ONEDOF[key] if names is None else {n: ONEDOF[key][n] for n in names}
     if study is not None:
         sub[study] = ONEDOF[study]
     return {"onedof": sub}
-
-
-def onedof_dataset(scene, reading, method):
-    return f"results/onedof/{scene}/{reading}/{method}.nc"
 
 
 def onedof_runs():
@@ -142,10 +141,8 @@ def onedof_runs():
     table = ONEDOF["friction_table"]
     wanted.add(onedof_dataset(table["scene"], table["reading"], table["method"]))
     runs = {}
-    for path in wanted:
-        m = re.fullmatch(r"results/onedof/([^/]+)/([^/]+)/([^/]+)\.nc", path)
-        if m and m[1] in ONEDOF["scenes"] and m[2] in ONEDOF["readings"] and m[3] in ONEDOF["methods"]:
-            runs.setdefault(m[1], set()).add((m[2], m[3]))
+    for run in filter(None, map(ONEDOF_CATALOGUE.get, wanted)):
+        runs.setdefault(run.scene, set()).add((run.reading, run.method))
     return {scene: sorted(pairs) for scene, pairs in sorted(runs.items())}
 
 
@@ -199,10 +196,6 @@ def notebook_inputs(name):
 
 
 # -- sweeps and maps ----------------------------------------------------------------------------------
-
-
-def sweep_dataset(sweep, reading, dense=False):
-    return f"results/onedof/sweeps/{sweep}{'_dense' if dense else ''}/{reading}.nc"
 
 
 def dense_map_chunks(wildcards):

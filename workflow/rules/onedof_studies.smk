@@ -2,8 +2,8 @@
 # speed (Section 13) and the interpretation study (readings ranked by the claims they reproduce).
 SWEEPS = ONEDOF.get("sweeps", {})
 SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
-SWEEP_METHODS = sorted({sw.get("method", "exact") for sw in SWEEPS.values()})
-SWEEP_SCENES = sorted({sw.get("scene", BASELINE_SCENE) for sw in SWEEPS.values()})
+SWEEP_METHODS = sorted({sw.get("method", BASELINE["method"]) for sw in SWEEPS.values()})
+SWEEP_SCENES = sorted({sw.get("scene", BASELINE["scene"]) for sw in SWEEPS.values()})
 CRITICAL = ONEDOF.get("critical_speed")
 
 
@@ -19,7 +19,7 @@ rule eq6_curve:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig("consistent_caption", BASELINE_SCENE, "exact", study="eq6"),
+        config=onedof_subconfig(BASELINE["reading"], BASELINE["scene"], BASELINE["method"], study="eq6"),
         ensemble=ENSEMBLE,
     script:
         "../scripts/eq6_curve.py"
@@ -86,7 +86,10 @@ rule critical_speed:
         CONDA_ENV
     params:
         config=onedof_subconfig(
-            CRITICAL["readings"] if CRITICAL else [], BASELINE_SCENE, "exact", study="critical_speed"
+            CRITICAL["readings"] if CRITICAL else [],
+            BASELINE["scene"],
+            BASELINE["method"],
+            study="critical_speed",
         ),
         readings=CRITICAL["readings"] if CRITICAL else [],
         ensemble=ENSEMBLE,

@@ -7,13 +7,13 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.onedof import critical_speed_from_config
-from stickslip.studies.specs import run_spec
+from stickslip.studies.specs import baseline_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
 config = snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
 for reading, path in zip(snakemake.params.readings, snakemake.output):
-    spec = run_spec(config, "fig02", reading, "exact")
+    spec = baseline_spec(config, reading)
     claimed = path in snakemake.params.ensemble_outputs
     ds = ensemble_dataset(
         partial(critical_speed_from_config, reading=reading), config, ensemble if claimed else None
@@ -23,7 +23,7 @@ for reading, path in zip(snakemake.params.readings, snakemake.output):
         path,
         scene=spec.scene_attrs() | {"continuation": "natural parameter, increasing V_b"},
         interpretation=spec.interpretation(),
-        method={"name": "exact", **spec.solver_settings},
+        method={"name": spec.method, **spec.solver_settings},
         title=f"Critical belt speed, reading {reading}",
     )
     logging.info(

@@ -8,7 +8,7 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
 from stickslip.plots import eq6_figure  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
-from stickslip.studies.specs import run_spec  # noqa: E402
+from stickslip.studies.specs import baseline_spec  # noqa: E402
 
 config = snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # closed form: no BLAS
@@ -16,7 +16,7 @@ ds = ensemble_dataset(eq6_from_config, config, ensemble)
 write_dataset(
     ds,
     snakemake.output.nc,
-    scene=run_spec(config, "fig02", "consistent_caption", "exact").scene_attrs(),
+    scene=baseline_spec(config).scene_attrs(),
     interpretation={
         "equation": "Eq. 6 as printed and dimensionally correct",
         "force": config["onedof"]["eq6"].get("force", "mu_s N"),

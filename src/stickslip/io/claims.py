@@ -79,7 +79,7 @@ class ClaimResult:
 
 
 def _row_errors(exc) -> str:
-    from ..config import typed_errors  # the config's one format for a pydantic error: ``key: message``
+    from ..pipeline.errors import typed_errors  # the config's format of a pydantic error: ``key: message``
 
     return typed_errors(exc).replace("\n", "; ")
 

@@ -12,8 +12,9 @@ How the dependency set is found (static, at parse time, no import executed):
   package imports heavy modules lazily, on first use);
 * importing ``a.b.c`` runs ``a/__init__.py`` and ``a/b/__init__.py`` too, so those count;
 * ``from pkg import name`` counts ``pkg.name`` when that is a module;
-* a module that calls ``import_module`` (a registry loaded by name, e.g. the solvers) depends on every module
-  of its own package: the static reading cannot tell which one a string names.
+* a package whose ``__init__`` calls ``import_module`` (a registry loaded by name: the solvers) may load any
+  of its modules when one of its names is used, so taking a name from it (``from stickslip.solvers import
+  make_solver``) depends on every module of that package; importing one of its modules does not.
 
 What it leaves out, deliberately: third-party packages (the lock pins them; every dataset records their
 versions), data files the code reads (those are rule inputs), and blank or whole-line comment lines (an
@@ -99,15 +100,37 @@ def _with_parents(module: str) -> list[str]:
 
 
 @cache
+def _lazy_package(src: Path, package: str) -> bool:
+    """A package whose ``__init__`` loads modules by name (``import_module``: a registry)."""
+    init = module_file(src, package)
+    return init is not None and init.name == "__init__.py" and "import_module(" in _source(init)
+
+
+def _by_name(src: Path, package: str) -> set[str]:
+    """Every module of a lazy package: any of them may be loaded when one of its names is used."""
+    init = module_file(src, package)
+    return {_module_name(src, p)[0] for p in init.parent.glob("*.py")}
+
+
+@cache
 def _direct_dependencies(path: Path, src: Path) -> frozenset[Path]:
-    """Package files one file imports directly (its parent packages' ``__init__`` included)."""
+    """Package files one file imports directly (its parent packages' ``__init__`` included).
+
+    A name taken from a lazy package that is not one of its modules (``from stickslip.solvers import
+    make_solver``), or the plain import of such a package, may load any of its modules; importing one of
+    its modules (``from stickslip.solvers.base import Trajectory``) runs its ``__init__``, nothing more."""
     inside = path.is_relative_to(src)
     module, is_package = _module_name(src, path) if inside else (None, False)
-    names = imported_names(_source(path), module, is_package)
+    source = _source(path)
+    names = imported_names(source, module, is_package)
     if inside:
         names.update(_with_parents(module))
-        if "import_module(" in _source(path):  # a registry loaded by name: every sibling module
-            names.update(_module_name(src, p)[0] for p in path.parent.glob("*.py"))
+    for name in list(names):
+        parent = name.rpartition(".")[0]
+        if parent and _lazy_package(src, parent) and module_file(src, name) is None:
+            names.update(_by_name(src, parent))
+        if _lazy_package(src, name) and re.search(rf"^[ \t]*import[ \t]+{re.escape(name)}\b", source, re.M):
+            names.update(_by_name(src, name))
     found = {module_file(src, dotted) for name in names for dotted in _with_parents(name)}
     return frozenset(p for p in found if p is not None and p != path)
 

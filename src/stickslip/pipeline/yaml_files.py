@@ -36,7 +36,7 @@ def _construct_mapping(loader, node, deep=False):
             raise yaml.constructor.ConstructorError(
                 None,
                 None,
-                f"duplicate key {key_node.value!r} (first at line {seen[key] + 1}); YAML would keep only the last",
+                f"duplicate key {key_node.value!r} (first at line {seen[key] + 1}): YAML keeps only the last",
                 mark,
             )
         seen[key] = key_node.start_mark.line

@@ -15,7 +15,7 @@ from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunk
 from ..io.netcdf import trajectory_dataset
 from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
 from ..model.params import effective_mass
-from .specs import RunSpec, SweepSpec, run_spec, sweep_spec
+from .specs import RunSpec, SweepSpec, baseline_spec, run_spec, sweep_spec
 
 
 def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
@@ -185,7 +185,7 @@ def critical_speed_from_config(config: dict, *, reading: str) -> xr.Dataset:
     """``critical_speed_dataset`` of the baseline scene under ``onedof.critical_speed`` for a reading."""
     cfg = config["onedof"]["critical_speed"]
     speeds = np.geomspace(float(cfg["start"]), float(cfg["stop"]), int(cfg["num"]))
-    spec = run_spec(config, "fig02", reading, "exact")
+    spec = baseline_spec(config, reading)
     return critical_speed_dataset(spec, speeds, float(cfg["t_end"]), float(cfg["transient"]))
 
 
@@ -282,5 +282,5 @@ def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
 def eq6_from_config(config: dict) -> xr.Dataset:
     """``eq6_dataset`` of the baseline scene with ``onedof.eq6`` (f_max, points)."""
     cfg = config["onedof"]["eq6"]
-    spec = run_spec(config, "fig02", "consistent_caption", "exact")
+    spec = baseline_spec(config)
     return eq6_dataset(spec, float(cfg["f_max"]), int(cfg["points"]))

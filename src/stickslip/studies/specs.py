@@ -126,6 +126,12 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
     return spec
 
 
+def baseline_spec(config: dict, reading: str | None = None) -> RunSpec:
+    """The paper's baseline run (``onedof.baseline``), under its own reading or ``reading``."""
+    base = config["onedof"]["baseline"]
+    return run_spec(config, base["scene"], reading or base["reading"], base["method"])
+
+
 def figure_runs(config: dict, figure: str) -> list[tuple[str, str, str]]:
     """(scene, reading, method) triples a figure needs."""
     fig = config["onedof"]["figures"][figure]
@@ -170,7 +176,10 @@ def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
     """``onedof.sweeps.<sweep>`` for one reading; every point must make valid parameters."""
     cfg = config["onedof"]["sweeps"][sweep]
     key = f"onedof.sweeps.{sweep}"
-    base = run_spec(config, cfg.get("scene") or "fig02", reading, cfg.get("method") or "exact")
+    baseline = config["onedof"]["baseline"]
+    base = run_spec(
+        config, cfg.get("scene") or baseline["scene"], reading, cfg.get("method") or baseline["method"]
+    )
     dense_cfg = cfg["dense"]
     scale = dense_cfg.get("spacing") or "linear"
     spaced = np.geomspace if scale == "log" else np.linspace
