@@ -181,3 +181,58 @@ def check_page(chrome, run):
 
     with Image.open(shot) as im:
         assert im.width == 1400
+
+
+# -- the notebooks show the same verdicts, and let wide tables scroll --------------------------------------
+
+
+def test_notebook_verdicts_are_the_pages(tmp_path):
+    from stickslip.notebook import figure_verdicts
+
+    (tmp_path / "claims").mkdir()
+    (tmp_path / "claims" / "c.yaml").write_text(
+        "- {id: a, section: '3', figure: Fig. 2, figures: [2], quote: q, kind: value, expected: reproduced}\n"
+        "- {id: b, section: '3', figure: Figs. 2-3, figures: [2, 3], quote: q, kind: value,"
+        " expected: deviates}\n"
+    )
+    header = "claim,reading,section,figure,status\n"
+    (tmp_path / "deviations.csv").write_text(
+        header + "a,r1,3,Fig. 2,reproduced\nb,r1,3,Figs. 2-3,deviates\n"
+        "a,r2,3,Fig. 2,reproduced\nb,r2,3,Figs. 2-3,not-comparable\n"
+    )
+    (tmp_path / "reading_ranking.csv").write_text("reading,reproduced\nr1,1\nr2,1\n")
+    frame = figure_verdicts([2, 3], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
+    assert frame.to_dict("records") == [
+        {
+            "figure": "Fig. 2",
+            "verdict": "reproduced",
+            "best reading": "r2",
+            "reproduced": 1,
+            "deviates": 0,
+            "undecided": 1,
+        },
+        {
+            "figure": "Fig. 3",
+            "verdict": "deviating",
+            "best reading": "r1",
+            "reproduced": 0,
+            "deviates": 1,
+            "undecided": 0,
+        },
+    ]
+
+
+def test_rendered_notebook_lets_wide_tables_scroll():
+    import nbformat
+
+    from stickslip.notebook import READER_CSS, to_html
+
+    nb = nbformat.v4.new_notebook()
+    cell = nbformat.v4.new_code_cell("wide")
+    wide = "<table><tr>" + "<td>a wide cell</td>" * 60 + "</tr></table>"
+    cell.outputs = [nbformat.v4.new_output("display_data", data={"text/html": wide})]
+    nb.cells = [nbformat.v4.new_markdown_cell("# Title"), cell]
+    page = to_html(nb)
+    head = page[: page.index("</head>")]
+    assert READER_CSS in head and "overflow-x: auto" in READER_CSS
+    assert wide in page
