@@ -200,7 +200,6 @@ def test_notebook_verdicts_are_the_pages(tmp_path):
         header + "a,r1,3,Fig. 2,reproduced\nb,r1,3,Figs. 2-3,deviates\n"
         "a,r2,3,Fig. 2,reproduced\nb,r2,3,Figs. 2-3,not-comparable\n"
     )
-    (tmp_path / "reading_ranking.csv").write_text("reading,reproduced\nr1,1\nr2,1\n")
     frame = figure_verdicts([2, 3], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
     assert frame.to_dict("records") == [
         {

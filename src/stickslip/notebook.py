@@ -201,23 +201,23 @@ def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPE
     return HTML(scorecard_html(frame, title, open_rows, legend))
 
 
-def figure_verdicts(
-    figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml", ranking=None
-):
+def figure_verdicts(figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"):
     """Each paper figure's verdict, as the replication page (``results/index.html``) derives it: the figure is
-    judged in its best reading (``stickslip.presentation.verdicts``). A DataFrame, one row per figure."""
+    judged in its best reading (``stickslip.presentation.verdicts``), ties broken by the overall reading
+    ranking (computed from the same table, as ``results/claims/reading_ranking.csv`` is). A DataFrame, one
+    row per figure."""
     from glob import glob
 
     import pandas as pd
 
     from stickslip.io.claims import load_claims, read_table
-    from stickslip.presentation.page import claim_figures, read_csv
+    from stickslip.presentation.page import claim_figures
     from stickslip.presentation.verdicts import best_reading, figure_verdict, rows_in_reading
+    from stickslip.studies.ranking import rank_readings
 
     rows = read_table(csv_path)
     figs_of = claim_figures(load_claims(sorted(glob(claims_glob))))
-    ranking = ranking or str(Path(csv_path).with_name("reading_ranking.csv"))
-    order = [r["reading"] for r in read_csv(ranking)]
+    order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
     out = []
     for number in figures:
         mine = [r for r in rows if number in figs_of.get(r["claim"], [])]
