@@ -89,6 +89,41 @@ def test_paper_spec_lists_every_figure_once_in_the_papers_order():
     assert set(PAPER_FIGURES) <= set(numbers)
 
 
+def test_page_sources_map_images_to_paper_figures_from_config_titles_fe_map_and_docstrings(tmp_path):
+    from types import SimpleNamespace
+
+    from stickslip.presentation.sources import page_sources
+
+    rules_file = tmp_path / "workflow" / "rules" / "x.smk"
+
+    def rule(name, outputs, docstring=None):
+        return SimpleNamespace(
+            name=name,
+            output=outputs,
+            docstring=docstring,
+            snakefile=str(rules_file),
+            script="../scripts/s.py",
+        )
+
+    rules = [
+        rule("onedof_figure_fig12", ["results/figures/fig12/plateau_caption.png"]),
+        rule("fe_figures", ["results/figures/fe/section11_a.png", "results/figures/fe/readings.png"]),
+        rule("eq6_curve", ["results/onedof/fig04/eq6.nc", "results/figures/fig04/eq6.png"], "Fig. 4: Eq. 6"),
+        rule("other", ["results/figures/methods/map.png"], "Where methods fail"),
+    ]
+    titled = {"fig12": {"title": "Fig. 12-13: damping"}}
+    fe = {"section11_a": {"figures": "Fig. 29-33"}}
+    found = {s["path"]: s for s in page_sources(rules, titled, fe, tmp_path)}
+    assert {p: s["figures"] for p, s in found.items()} == {
+        "results/figures/fig12/plateau_caption.png": [12, 13],
+        "results/figures/fe/section11_a.png": [29, 30, 31, 32, 33],
+        "results/figures/fig04/eq6.png": [4],
+    }
+    eq6 = found["results/figures/fig04/eq6.png"]
+    assert (eq6["label"], eq6["rule"]) == ("eq6", "eq6_curve")
+    assert (eq6["rule_file"], eq6["script"]) == ("workflow/rules/x.smk", "workflow/scripts/s.py")
+
+
 # -- the page of a run, in a browser ------------------------------------------------------------------
 
 
