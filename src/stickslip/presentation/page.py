@@ -133,7 +133,7 @@ def thumbnail(png: Path, out: Path, width: int = THUMB_WIDTH) -> Path:
     with Image.open(png) as im:
         im = im.convert("RGB")
         height = max(1, round(im.height * width / im.width))
-        im.resize((width, height), Image.LANCZOS).save(out, optimize=True)
+        im.resize((width, height), Image.LANCZOS, reducing_gap=2.0).save(out, compress_level=6)
     return out
 
 
