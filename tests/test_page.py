@@ -270,3 +270,17 @@ def test_rendered_notebook_lets_wide_tables_scroll():
     head = page[: page.index("</head>")]
     assert READER_CSS in head and "overflow-x: auto" in READER_CSS
     assert wide in page
+
+
+def test_notebook_link_prefers_the_most_specific_section(tmp_path):
+    from stickslip.presentation.page import notebook_link, notebook_sections
+
+    page = tmp_path / "nb.html"
+    page.write_text(
+        '<h1 id="Section-4">Section 4 — Figure 4 (Eq. 6)</h1><h2 id="Fig-4">Figure 4 — Eq. 6</h2>'
+        '<h2 id="Figs-2-4">Figures 2 and 4</h2><h2 id="Fig-7-9">Figures 7, 8 and 9</h2>'
+    )
+    sections = {"nb": notebook_sections(page)}
+    assert notebook_link(4, sections) == ("nb", "Fig-4")
+    assert notebook_link(8, sections) == ("nb", "Fig-7-9")
+    assert notebook_link(5, sections) is None

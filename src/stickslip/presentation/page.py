@@ -87,24 +87,27 @@ def source_modules(script: Path, src: Path) -> list[str]:
 _HEADING = re.compile(r"<h([1-4])[^>]*\bid=\"([^\"]+)\"[^>]*>(.*?)</h\1>", re.S)
 
 
-def notebook_sections(path: Path) -> list[tuple[str, str, set[int]]]:
-    """(anchor, heading text, paper figures it names) of every heading of a rendered notebook."""
+def notebook_sections(path: Path) -> list[tuple[str, str, set[int], int]]:
+    """(anchor, heading text, paper figures it names, heading level) of every heading of a rendered
+    notebook."""
     if not path.is_file():
         return []
     out = []
-    for _, anchor, inner in _HEADING.findall(path.read_text(errors="replace")):
+    for level, anchor, inner in _HEADING.findall(path.read_text(errors="replace")):
         text = html.unescape(re.sub(r"<[^>]+>", "", inner)).replace("¶", "").strip()
-        out.append((anchor, text, paper_figures(text)))
+        out.append((anchor, text, paper_figures(text), int(level)))
     return out
 
 
 def notebook_link(number: int, notebooks: dict[str, list]) -> tuple[str, str] | None:
-    """(notebook name, anchor) of the most specific notebook heading naming figure ``number``."""
+    """(notebook name, anchor) of the most specific notebook heading naming figure ``number``: the one
+    naming fewest figures, then the section rather than the notebook's title."""
     best = None
     for name, sections in notebooks.items():
-        for anchor, _text, figs in sections:
-            if number in figs and (best is None or len(figs) < best[0]):
-                best = (len(figs), name, anchor)
+        for anchor, _text, figs, level in sections:
+            key = (len(figs), level == 1)
+            if number in figs and (best is None or key < best[0]):
+                best = (key, name, anchor)
     return (best[1], best[2]) if best else None
 
 
