@@ -3,6 +3,7 @@
 import shutil
 import subprocess
 from html.parser import HTMLParser
+from pathlib import Path
 from urllib.parse import unquote, urlsplit
 
 import pytest
@@ -284,3 +285,11 @@ def test_notebook_link_prefers_the_most_specific_section(tmp_path):
     assert notebook_link(4, sections) == ("nb", "Fig-4")
     assert notebook_link(8, sections) == ("nb", "Fig-7-9")
     assert notebook_link(5, sections) is None
+
+
+def test_readme_opens_with_the_two_commands_and_stays_short():
+    lines = (Path(__file__).resolve().parents[1] / "README.md").read_text().splitlines()
+    assert len(lines) <= 120
+    code = lines[lines.index("```bash") + 1 :][:2]
+    assert lines.index("```bash") <= 3
+    assert [c.split()[:2] for c in code] == [["make", "figures"], ["make", "test"]]
