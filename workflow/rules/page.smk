@@ -39,6 +39,7 @@ rule replication_page:
         "results/benchmarks/replication_page/all.tsv"
     conda:
         CONDA_ENV
+    threads: 2  # thumbnails two at a time (the last job: both cores are free)
     params:
         sources=PAGE_SOURCES,
         notebooks=list(config["notebooks"]),

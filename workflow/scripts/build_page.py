@@ -15,5 +15,6 @@ builder = PageBuilder(
     inverse_figures=dict(params.inverse_figures),
     fe_default_reading=params.fe_default_reading,
     friction_table=params.friction_table,
+    workers=snakemake.threads,
 )
 build_page(Path(snakemake.output.html), builder)

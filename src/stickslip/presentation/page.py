@@ -140,26 +140,41 @@ def thumbnail(png: Path, out: Path, width: int = THUMB_WIDTH) -> Path:
     return out
 
 
-def plot_table(csv_path: Path, out: Path, x: str, y: str, title: str) -> Path:
-    """A small plot of two columns of a CSV table (for a figure the pipeline tabulates but does not draw)."""
-    import matplotlib
+def svg_plot(xs, ys, xlabel: str, ylabel: str, width: int = THUMB_WIDTH, height: int = 240) -> str:
+    """A small line plot as SVG text (for a curve the pipeline tabulates but does not draw): the points, a
+    frame and the range of each axis."""
+    left, right, top, bottom = 46, 10, 10, 36
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    sx = (width - left - right) / ((x1 - x0) or 1.0)
+    sy = (height - top - bottom) / ((y1 - y0) or 1.0)
+    points = " ".join(
+        f"{left + (x - x0) * sx:.1f},{height - bottom - (y - y0) * sy:.1f}" for x, y in zip(xs, ys)
+    )
+    esc = html.escape
+    return (
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+        f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="11">'
+        f'<rect width="{width}" height="{height}" fill="white"/>'
+        f'<rect x="{left}" y="{top}" width="{width - left - right}" height="{height - top - bottom}" '
+        'fill="none" stroke="#888"/>'
+        f'<polyline points="{points}" fill="none" stroke="#1f77b4" stroke-width="1.5"/>'
+        f'<text x="{left}" y="{height - bottom + 13}">{x0:.3g}</text>'
+        f'<text x="{width - right}" y="{height - bottom + 13}" text-anchor="end">{x1:.3g}</text>'
+        f'<text x="{(width + left) / 2}" y="{height - 6}" text-anchor="middle">{esc(xlabel)}</text>'
+        f'<text x="{left - 4}" y="{height - bottom}" text-anchor="end">{y0:.3g}</text>'
+        f'<text x="{left - 4}" y="{top + 9}" text-anchor="end">{y1:.3g}</text>'
+        f'<text x="12" y="{(height - bottom + top) / 2}" text-anchor="middle" '
+        f'transform="rotate(-90 12 {(height - bottom + top) / 2})">{esc(ylabel)}</text></svg>\n'
+    )
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
-    rows = read_csv(csv_path)
-    xs, ys = [_number(r[x]) for r in rows], [_number(r[y]) for r in rows]
-    fig, ax = plt.subplots(figsize=(4.8, 3.2), dpi=75)
-    ax.plot(xs, ys, "o-", ms=3)
-    ax.set_xlabel(x)
-    ax.set_ylabel(y)
-    ax.set_title(title, fontsize=10)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
-    plt.close(fig)
-    return out
+def make_thumbnails(jobs, workers: int = 2) -> None:
+    """``thumbnail(png, out)`` for every ``(png, out)`` of ``jobs``, ``workers`` at a time (Pillow decodes
+    and resizes without holding the interpreter lock)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        list(pool.map(lambda job: thumbnail(*job), jobs))
 
 
 class PageBuilder:
@@ -175,6 +190,7 @@ class PageBuilder:
         friction_table: str = "results/onedof/friction_mu_vr.csv",
         claims_glob: str = "config/claims/*.yaml",
         results: str = "results",
+        workers: int = 1,
     ):
         self.workdir = Path(workdir)
         self.results = self.workdir / results
@@ -193,6 +209,8 @@ class PageBuilder:
         self.inverse = {name: read_csv(p) for name, p in self._inverse_tables().items()}
         self.notebooks = {n: notebook_sections(self.results / "notebooks" / f"{n}.html") for n in notebooks}
         self.thumbs = self.results / "page" / "thumbs"
+        self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
+        self.workers = workers
 
     # -- links ----------------------------------------------------------------------------------------
 
@@ -203,6 +221,10 @@ class PageBuilder:
             return None
         parts = Path(os.path.relpath(full, self.workdir)).parts
         return "/".join(parts[1:]) if parts[0] == self.results.name else "/".join(("..", *parts))
+
+    def page_path(self, path: Path) -> str:
+        """The link to a file under the results folder that this page writes (it may not exist yet)."""
+        return Path(os.path.relpath(path, self.results)).as_posix()
 
     def link(self, path, text=None) -> dict:
         return {"href": self.href(path), "text": text or str(path)}
@@ -315,24 +337,26 @@ class PageBuilder:
         images = self.images(number, reading, rows) if number is not None else []
         thumb = None
         if images:
-            png = self.workdir / images[0]["path"]
-            thumb = self.href(thumbnail(png, self.thumbs / f"fig{number:02d}.png").relative_to(self.workdir))
+            source = images[0]["path"]  # one thumbnail per image, however many figures it shows
+            out = self.thumbs / (Path(source).relative_to(self.results.name).as_posix().replace("/", "__"))
+            if (self.workdir / source, out) not in self.thumb_jobs:
+                self.thumb_jobs.append((self.workdir / source, out))
+            thumb = self.page_path(out)
         table = None
-        if entry.get("table") or number == 17:
-            csv_path = self.workdir / self.friction_table
-            if csv_path.is_file():
-                if entry.get("table"):
-                    table = self.table_preview(csv_path)
-                elif not images:
-                    columns = list(read_csv(csv_path)[0])
-                    png = plot_table(
-                        csv_path, self.thumbs / f"fig{number:02d}.png", columns[0], columns[1], ""
-                    )
-                    thumb = self.href(png.relative_to(self.workdir))
-                    images = [
-                        {"label": "drawn by this page from the friction table", "full": thumb, "path": ""}
-                    ]
-        data = [self.friction_table] if (entry.get("table") or number == 17) else []
+        from_table = entry.get("table") or entry.get("drawn_from_table")
+        csv_path = self.workdir / self.friction_table
+        if from_table and csv_path.is_file():
+            if entry.get("table"):
+                table = self.table_preview(csv_path)
+            elif not images:
+                rows_ = read_csv(csv_path)
+                x, y = list(rows_[0])[:2]
+                out = self.thumbs / f"fig{number:02d}.svg"
+                out.parent.mkdir(parents=True, exist_ok=True)
+                out.write_text(svg_plot([_number(r[x]) for r in rows_], [_number(r[y]) for r in rows_], x, y))
+                thumb = self.page_path(out)
+                images = [{"label": "drawn by this page from the friction table", "full": thumb, "path": ""}]
+        data = [self.friction_table] if from_table else []
         for r in judged:
             for p in dataset_paths_of(self.claim.get(r["claim"], {})):
                 data.append(p.format(reading=reading) if "{reading}" in p else p)
@@ -425,6 +449,7 @@ class PageBuilder:
 
     def context(self) -> dict:
         cards = [self.card(e) for e in self.paper["figures"]] + [self.card(e) for e in self.paper["text"]]
+        make_thumbnails(self.thumb_jobs, self.workers)
         placed = {r["claim"] for c in cards for r in c["claims"]} | {
             r["claim"] for r in self.rows if self.figures_of.get(r["claim"])
         }
