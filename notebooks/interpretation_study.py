@@ -38,7 +38,14 @@ from IPython.display import Markdown, display
 
 from stickslip.io.claims import STATUSES
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, claims_readings, scorecard, status_counts, styled_claims
+from stickslip.notebook import (
+    claims_frame,
+    claims_readings,
+    scorecard,
+    status_counts,
+    styled_claims,
+    verdicts,
+)
 from stickslip.plots import STATUS_COLOUR, reading_colours
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
@@ -59,6 +66,7 @@ continuation = {r: read_dataset(f"results/onedof/critical_speed/{r}.nc") for r i
 # it, so it is called neither reproduced nor deviating (and is not counted as comparable below).
 
 # %%
+display(verdicts(list(range(2, 18))))
 display(scorecard(deviations, "All claims of the paper"))
 
 # %% [markdown]

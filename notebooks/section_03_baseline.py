@@ -33,7 +33,7 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, scorecard
+from stickslip.notebook import claims_frame, scorecard, verdicts
 from stickslip.plots import mark_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
@@ -66,6 +66,7 @@ claims = claims[claims["figure"].str.startswith("Fig. 2") | claims["figure"].str
 # pipeline's own numerical noise could decide it, so it is called neither reproduced nor deviating.
 
 # %%
+display(verdicts([2, 3]))
 display(scorecard(claims, "Section 3 claims: Figures 2 and 3 (incl. their restatements in Section 5)"))
 
 # %% [markdown]

@@ -32,7 +32,7 @@ import numpy as np
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, claims_readings, scorecard
+from stickslip.notebook import claims_frame, claims_readings, scorecard, verdicts
 from stickslip.plots import eq6_figure, reading_colours, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
@@ -51,6 +51,7 @@ claims = claims_frame("results/claims/deviations.csv", sections=["4"])
 # pipeline's own numerical noise could decide it, so it is called neither reproduced nor deviating.
 
 # %%
+display(verdicts([4]))
 display(scorecard(claims, "Section 4 claims: Figure 4 and Eq. 6"))
 
 # %% [markdown]

@@ -38,7 +38,7 @@
 from IPython.display import Image, Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, reported_value, scorecard, styled_claims
+from stickslip.notebook import claims_frame, reported_value, scorecard, styled_claims, verdicts
 from stickslip.plots import (
     metric_units,
     readings_grid,
@@ -109,6 +109,7 @@ def show_claims(prefixes):
 # checks are repeated below, figure by figure, next to the curves they are measured on.
 
 # %%
+display(verdicts(list(range(5, 15))))
 display(scorecard(claims, "Section 5 claims: Figures 5-14"))
 
 # %% [markdown]

@@ -30,7 +30,7 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, scorecard
+from stickslip.notebook import claims_frame, scorecard, verdicts
 from stickslip.plots import readings_grid, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
@@ -50,6 +50,7 @@ BELT_STOP = 0.5 / 0.025  # the caption's V_b = 0.5 - 0.025 t reaches zero here [
 # pipeline's own numerical noise could decide it, so it is called neither reproduced nor deviating.
 
 # %%
+display(verdicts([15, 16]))
 display(scorecard(claims, "Section 6 claims: Figures 15 and 16"))
 
 # %% [markdown]

@@ -36,7 +36,7 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, claims_readings, reported_value, scorecard
+from stickslip.notebook import claims_frame, claims_readings, reported_value, scorecard, verdicts
 from stickslip.plots import mark_reported, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
@@ -57,6 +57,7 @@ V_PLATEAU = 0.6  # mm/s, "until the relative velocity 0.6mm/sec"
 # pipeline's own numerical noise could decide it, so it is called neither reproduced nor deviating.
 
 # %%
+display(verdicts([17]))
 display(scorecard(claims, "Section 7 claims: Figure 17"))
 
 # %% [markdown]

@@ -53,7 +53,7 @@ def test_claims_for_filters_by_figure_and_reading():
 
 def test_caption_names_figures_statuses_and_failed_runs():
     text = caption_text("FE scene", {21}, claims_for(ROWS, {21}))
-    assert "Reproduces: Fig. 21." in text
+    assert "Shows: Fig. 21." in text
     assert "1 not-comparable (1 on a failed solver run)" in text
     assert "(pinned reproduced)" in text
 

@@ -201,6 +201,78 @@ def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPE
     return HTML(scorecard_html(frame, title, open_rows, legend))
 
 
+def figure_verdicts(figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"):
+    """Each paper figure's verdict, as the replication page (``results/index.html``) derives it: the figure is
+    judged in its best reading (``stickslip.presentation.verdicts``), ties broken by the overall reading
+    ranking (computed from the same table, as ``results/claims/reading_ranking.csv`` is). A DataFrame, one
+    row per figure."""
+    from glob import glob
+
+    import pandas as pd
+
+    from stickslip.io.claims import load_claims, read_table
+    from stickslip.presentation.page import claim_figures
+    from stickslip.presentation.verdicts import best_reading, figure_verdict, rows_in_reading
+    from stickslip.studies.ranking import rank_readings
+
+    rows = read_table(csv_path)
+    figs_of = claim_figures(load_claims(sorted(glob(claims_glob))))
+    order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
+    out = []
+    for number in figures:
+        mine = [r for r in rows if number in figs_of.get(r["claim"], [])]
+        reading = best_reading(mine, order)
+        judged = rows_in_reading(mine, reading) if reading else mine
+        statuses = [r["status"] for r in judged]
+        out.append(
+            {
+                "figure": f"Fig. {number}",
+                "verdict": figure_verdict(statuses),
+                "best reading": reading or "-",
+                "reproduced": statuses.count("reproduced"),
+                "deviates": statuses.count("deviates"),
+                "undecided": len(statuses) - statuses.count("reproduced") - statuses.count("deviates"),
+            }
+        )
+    return pd.DataFrame(out)
+
+
+#: Colours of the figure verdicts (as on the replication page).
+VERDICT_COLOUR = {
+    "reproduced": STATUS_COLOUR["reproduced"],
+    "partly": STATUS_COLOUR["indistinguishable"],
+    "deviating": STATUS_COLOUR["deviates"],
+    "not comparable": STATUS_COLOUR["not-comparable"],
+}
+
+
+def verdicts_html(
+    figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"
+) -> str:
+    """The figures' verdicts as a small coloured table, with the rule that derives them in one line."""
+    from stickslip.presentation.verdicts import VERDICT_RULE
+
+    frame = figure_verdicts(figures, csv_path, claims_glob)
+    table = (
+        frame.style.map(lambda v: f"background-color: {VERDICT_COLOUR.get(v, 'white')}", subset=["verdict"])
+        .hide(axis="index")
+        .to_html()
+    )
+    rule = "; ".join(f"<i>{v}</i>: {html.escape(r)}" for v, r in VERDICT_RULE.items())
+    return (
+        f"<h3>Verdicts</h3>{table}<p style='font-size: 0.85em'>Each figure is judged in its best reading"
+        f" (the one reproducing most of its claims). {rule}. The same verdicts head each figure's card"
+        " on the replication page, <code>results/index.html</code>.</p>"
+    )
+
+
+def verdicts(figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"):
+    """Display object of ``verdicts_html`` for a notebook cell."""
+    from IPython.display import HTML
+
+    return HTML(verdicts_html(figures, csv_path, claims_glob))
+
+
 # -- rendering ---------------------------------------------------------------------------------------------
 
 
@@ -262,8 +334,17 @@ def notebook_title(nb) -> str:
     return ""
 
 
+#: Page style added to every rendered notebook: a table wider than the page scrolls inside its output instead
+#: of being cut at the page's edge.
+READER_CSS = """<style>
+div.output_subarea, div.output_html, div.output_area details { max-width: 100%; overflow-x: auto; }
+div.output_subarea { flex: 1 1 auto; }
+</style>
+"""
+
+
 def to_html(nb, code: str = "details", source_link: str | None = None, title: str = "") -> str:
-    """HTML of an executed notebook for a reader (see ``reader_notebook``)."""
+    """HTML of an executed notebook for a reader (see ``reader_notebook``), wide tables scrolling."""
     from nbconvert import HTMLExporter
 
     exporter = HTMLExporter(template_name="classic")
@@ -274,7 +355,7 @@ def to_html(nb, code: str = "details", source_link: str | None = None, title: st
     body, _ = exporter.from_notebook_node(
         reader_notebook(nb, code, source_link), resources={"metadata": {"name": title}}
     )
-    return body
+    return body.replace("</head>", READER_CSS + "</head>", 1)
 
 
 def render(

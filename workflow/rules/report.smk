@@ -1,5 +1,5 @@
-# Captions for `snakemake --report results/report.html`: every figure with the paper figure it reproduces
-# and the statuses of its claims (read from the deviations table of the same run).
+# Captions for `snakemake --report results/report.html`: every figure with the paper figure it shows (a label,
+# never a verdict) and the statuses of its claims (read from the deviations table of the same run).
 
 
 rule report_captions:

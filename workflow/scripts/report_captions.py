@@ -1,4 +1,4 @@
-"""Thin wiring: the report's captions (paper figure + claim statuses per image) from the deviations table."""
+"""Thin wiring: the report's captions (which paper figure each image shows; claim statuses)."""
 
 import yaml
 

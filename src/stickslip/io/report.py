@@ -1,4 +1,4 @@
-"""Captions for ``snakemake --report``: which paper figure each image reproduces, and its claim statuses.
+"""Captions for ``snakemake --report``: which paper figure each image shows, and its claim statuses.
 
 Snakemake renders one caption file per rule as a Jinja template (with ``snakemake.output`` etc. in scope).
 The pipeline's rule ``report_captions`` writes one such file, ``results/report/captions.rst``, that picks
@@ -74,7 +74,7 @@ def caption_text(title: str, figures: set[int], rows: list[dict], note: str = ""
         ", ".join(f"Fig. {n}" for n in sorted(figures))
         or "no figure of the paper (added by this replication)"
     )
-    lines = [f"**{_rst_escape(title)}**", "", f"Reproduces: {figs}.", ""]
+    lines = [f"**{_rst_escape(title)}**", "", f"Shows: {figs}.", ""]
     if note:
         lines += [_rst_escape(note), ""]
     if not rows:

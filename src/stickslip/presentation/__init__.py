@@ -1,0 +1,1 @@
+"""Presentation of a run: the replication page (``results/index.html``) and its verdict rule."""

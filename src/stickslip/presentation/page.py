@@ -1,0 +1,506 @@
+"""The replication at a glance: ``results/index.html``, one card per figure of the paper.
+
+Everything on the page is read from the run: the claims table (``results/claims/deviations.csv``), the
+claims files (which paper figures each claim is about), the reading ranking, the FE readings table, the
+inverse study's tables, the images the figure rules wrote and the rendered notebooks. The paper's figure
+list and captions ship with this package (``paper.yaml``). The page is static: CSS inline, no script, no
+network; every link is relative, so it opens from the file system.
+"""
+
+from __future__ import annotations
+
+import csv
+import html
+import os
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from ..io.claims import load_claims, read_table
+from ..io.report import paper_figures
+from .verdicts import (
+    VERDICT_RULE,
+    VERDICTS,
+    best_reading,
+    figure_verdict,
+    readings_by_preference,
+    rows_in_reading,
+    status_counts,
+)
+
+HERE = Path(__file__).parent
+THUMB_WIDTH = 360  # px: the thumbnails' width (the cards show them at up to 320 px)
+
+
+@dataclass
+class Source:
+    """An image (or table) a rule wrote that shows some figures of the paper."""
+
+    path: str  #: relative to the working directory, e.g. results/figures/fig02/consistent_caption.png
+    figures: list[int]
+    label: str  #: the reading or scene it shows
+    rule: str
+    rule_file: str = ""  #: relative to the working directory
+    script: str = ""
+    inputs: list[str] = field(default_factory=list)
+
+
+def paper_spec(path: Path | None = None) -> dict:
+    """The paper's figure list and captions (``paper.yaml``)."""
+    return yaml.safe_load((path or HERE / "paper.yaml").read_text())
+
+
+def read_csv(path) -> list[dict]:
+    path = Path(path)
+    if not path.is_file():
+        return []
+    with path.open(newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def claim_figures(claims: list[dict]) -> dict[str, list[int]]:
+    """Claim id -> the paper figures it is about (its ``figures`` key; the free-text label otherwise)."""
+    out = {}
+    for c in claims:
+        figs = c.get("figures")
+        out[c["id"]] = sorted(figs) if figs is not None else sorted(paper_figures(c.get("figure", "")))
+    return out
+
+
+def source_modules(script: Path, src: Path) -> list[str]:
+    """The project modules a script imports (``from stickslip.x import``), as files under ``src``."""
+    if not script.is_file():
+        return []
+    found = []
+    for name in re.findall(r"^\s*(?:from|import)\s+(stickslip(?:\.\w+)*)", script.read_text(), re.M):
+        parts = name.split(".")
+        for candidate in (src.joinpath(*parts).with_suffix(".py"), src.joinpath(*parts, "__init__.py")):
+            if candidate.is_file():
+                found.append(candidate)
+                break
+    return list(dict.fromkeys(found))
+
+
+_HEADING = re.compile(r"<h([1-4])[^>]*\bid=\"([^\"]+)\"[^>]*>(.*?)</h\1>", re.S)
+
+
+def notebook_sections(path: Path) -> list[tuple[str, str, set[int], int]]:
+    """(anchor, heading text, paper figures it names, heading level) of every heading of a rendered
+    notebook."""
+    if not path.is_file():
+        return []
+    out = []
+    for level, anchor, inner in _HEADING.findall(path.read_text(errors="replace")):
+        text = html.unescape(re.sub(r"<[^>]+>", "", inner)).replace("¶", "").strip()
+        out.append((anchor, text, paper_figures(text), int(level)))
+    return out
+
+
+def notebook_link(number: int, notebooks: dict[str, list]) -> tuple[str, str] | None:
+    """(notebook name, anchor) of the most specific notebook heading naming figure ``number``: the one
+    naming fewest figures, then the section rather than the notebook's title."""
+    best = None
+    for name, sections in notebooks.items():
+        for anchor, _text, figs, level in sections:
+            key = (len(figs), level == 1)
+            if number in figs and (best is None or key < best[0]):
+                best = (key, name, anchor)
+    return (best[1], best[2]) if best else None
+
+
+def _number(value) -> float:
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def fmt(value) -> str:
+    """A table number for display: 4 significant digits, blank for NaN."""
+    x = _number(value)
+    if x != x:
+        return "" if value in ("", None, "nan", "NaN") else str(value)
+    return f"{x:.4g}"
+
+
+def thumbnail(png: Path, out: Path, width: int = THUMB_WIDTH) -> Path:
+    """A small copy of ``png`` (kept when it is newer than the image)."""
+    from PIL import Image
+
+    if out.is_file() and out.stat().st_mtime >= png.stat().st_mtime:
+        return out
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with Image.open(png) as im:
+        im = im.convert("RGB")
+        height = max(1, round(im.height * width / im.width))
+        im.resize((width, height), Image.LANCZOS, reducing_gap=2.0).save(out, compress_level=6)
+    return out
+
+
+def svg_plot(xs, ys, xlabel: str, ylabel: str, width: int = THUMB_WIDTH, height: int = 240) -> str:
+    """A small line plot as SVG text (for a curve the pipeline tabulates but does not draw): the points, a
+    frame and the range of each axis."""
+    left, right, top, bottom = 46, 10, 10, 36
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    sx = (width - left - right) / ((x1 - x0) or 1.0)
+    sy = (height - top - bottom) / ((y1 - y0) or 1.0)
+    points = " ".join(
+        f"{left + (x - x0) * sx:.1f},{height - bottom - (y - y0) * sy:.1f}" for x, y in zip(xs, ys)
+    )
+    esc = html.escape
+    return (
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+        f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="11">'
+        f'<rect width="{width}" height="{height}" fill="white"/>'
+        f'<rect x="{left}" y="{top}" width="{width - left - right}" height="{height - top - bottom}" '
+        'fill="none" stroke="#888"/>'
+        f'<polyline points="{points}" fill="none" stroke="#1f77b4" stroke-width="1.5"/>'
+        f'<text x="{left}" y="{height - bottom + 13}">{x0:.3g}</text>'
+        f'<text x="{width - right}" y="{height - bottom + 13}" text-anchor="end">{x1:.3g}</text>'
+        f'<text x="{(width + left) / 2}" y="{height - 6}" text-anchor="middle">{esc(xlabel)}</text>'
+        f'<text x="{left - 4}" y="{height - bottom}" text-anchor="end">{y0:.3g}</text>'
+        f'<text x="{left - 4}" y="{top + 9}" text-anchor="end">{y1:.3g}</text>'
+        f'<text x="12" y="{(height - bottom + top) / 2}" text-anchor="middle" '
+        f'transform="rotate(-90 12 {(height - bottom + top) / 2})">{esc(ylabel)}</text></svg>\n'
+    )
+
+
+def make_thumbnails(jobs, workers: int = 2) -> None:
+    """``thumbnail(png, out)`` for every ``(png, out)`` of ``jobs``, ``workers`` at a time (Pillow decodes
+    and resizes without holding the interpreter lock)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        list(pool.map(lambda job: thumbnail(*job), jobs))
+
+
+class PageBuilder:
+    """Gathers every card's content from a run's results (paths relative to ``workdir``)."""
+
+    def __init__(
+        self,
+        workdir: Path,
+        sources: list[Source],
+        notebooks: list[str],
+        inverse_figures: dict[str, list[str]],
+        fe_default_reading: str = "",
+        friction_table: str = "results/onedof/friction_mu_vr.csv",
+        claims_glob: str = "config/claims/*.yaml",
+        results: str = "results",
+        workers: int = 1,
+    ):
+        self.workdir = Path(workdir)
+        self.results = self.workdir / results
+        self.sources = sources
+        self.paper = paper_spec()
+        self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
+        self.figures_of = claim_figures(self.claims)
+        self.claim = {c["id"]: c for c in self.claims}
+        self.rows = read_table(self.results / "claims" / "deviations.csv")
+        self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
+        self.order = [r["reading"] for r in self.ranking]
+        self.fe_rows = read_csv(self.results / "fe" / "readings_claims.csv")
+        self.fe_default = fe_default_reading
+        self.friction_table = friction_table
+        self.inverse_figures = inverse_figures
+        self.inverse = {name: read_csv(p) for name, p in self._inverse_tables().items()}
+        self.notebooks = {n: notebook_sections(self.results / "notebooks" / f"{n}.html") for n in notebooks}
+        self.thumbs = self.results / "page" / "thumbs"
+        self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
+        self.workers = workers
+
+    # -- links ----------------------------------------------------------------------------------------
+
+    def href(self, path) -> str | None:
+        """A link relative to the page (results/index.html), or None when the file does not exist."""
+        full = self.workdir / path  # (an absolute path stays itself)
+        if not full.exists():
+            return None
+        parts = Path(os.path.relpath(full, self.workdir)).parts
+        return "/".join(parts[1:]) if parts[0] == self.results.name else "/".join(("..", *parts))
+
+    def page_path(self, path: Path) -> str:
+        """The link to a file under the results folder that this page writes (it may not exist yet)."""
+        return Path(os.path.relpath(path, self.results)).as_posix()
+
+    def link(self, path, text=None) -> dict:
+        return {"href": self.href(path), "text": text or str(path)}
+
+    # -- inverse --------------------------------------------------------------------------------------
+
+    def _inverse_tables(self) -> dict[str, Path]:
+        """Every table of the inverse study with a ``figure`` column (the per-figure verdicts first)."""
+        folder = self.results / "inverse"
+        tables = sorted(folder.glob("*.csv")) if folder.is_dir() else []
+        tables.sort(key=lambda p: (p.name != "summary.csv", p.name))
+        return {p.name: p for p in tables if "figure" in (read_csv(p)[:1] or [{}])[0]}
+
+    def inverse_for(self, number: int) -> list[dict]:
+        """The inverse study's rows about paper figure ``number`` (an inverse figure covers the paper figures
+        of the claims it is fitted to): one entry per table, its columns and rows."""
+        names = [
+            name
+            for name, ids in self.inverse_figures.items()
+            if any(number in self.figures_of.get(i, []) for i in ids)
+        ]
+        out = []
+        for table, rows in self.inverse.items():
+            mine = [r for r in rows if r.get("figure") in names]
+            if not mine:
+                continue
+            columns = [c for c in mine[0] if not c.startswith(("best_", "stated_"))]
+            out.append(
+                {
+                    "table": table,
+                    "href": self.href(self.results / "inverse" / table),
+                    "columns": columns,
+                    "rows": [
+                        [fmt(r[c]) if c not in ("figure", "family") else r[c] for c in columns] for r in mine
+                    ],
+                    "verdicts": sorted(
+                        {(r.get("family", ""), r.get("verdict", "")) for r in mine if r.get("verdict")}
+                    ),
+                }
+            )
+        return out
+
+    # -- cards ----------------------------------------------------------------------------------------
+
+    def rows_about(self, number: int | None, section: str | None = None) -> list[dict]:
+        if number is None:
+            return [
+                r
+                for r in self.rows
+                if not self.figures_of.get(r["claim"])
+                and str(self.claim.get(r["claim"], {}).get("section")) == section
+            ]
+        return [r for r in self.rows if number in self.figures_of.get(r["claim"], [])]
+
+    def per_reading(self, rows: list[dict], fe: bool) -> list[dict]:
+        """The figure's verdict in every reading (FE: every FE reading, from the FE readings table)."""
+        if fe:
+            ids = {r["claim"] for r in rows}
+            table = [r for r in self.fe_rows if r["claim"] in ids]
+            readings = list(dict.fromkeys(r["reading"] for r in table))
+            return [
+                {"reading": rd, "verdict": figure_verdict(r["status"] for r in table if r["reading"] == rd)}
+                for rd in readings
+            ]
+        readings = readings_by_preference(rows, self.order)
+        return [
+            {"reading": rd, "verdict": figure_verdict(r["status"] for r in rows_in_reading(rows, rd))}
+            for rd in readings
+        ]
+
+    def images(self, number: int, reading: str, rows: list[dict]) -> list[dict]:
+        """The images showing figure ``number``: the best reading's first, then the scenes its claims read."""
+        mine = [s for s in self.sources if number in s.figures and (self.workdir / s.path).is_file()]
+        preferred = readings_by_preference(rows, self.order)
+        datasets = [p for r in rows for p in dataset_paths_of(self.claim.get(r["claim"], {}))]
+
+        def key(s: Source):  # the best reading's image, then by reading preference, then the scene most read
+            rank = preferred.index(s.label) if s.label in preferred else len(preferred)
+            return (s.label != reading, rank, -sum(s.label in p for p in datasets), s.label)
+
+        out = []
+        for s in sorted(mine, key=key):
+            script = self.workdir / s.script if s.script else None
+            out.append(
+                {
+                    "label": s.label,
+                    "full": self.href(s.path),
+                    "rule": s.rule,
+                    "rule_file": self.link(s.rule_file) if s.rule_file else None,
+                    "script": self.link(s.script) if s.script else None,
+                    "modules": [
+                        self.link(m.relative_to(self.workdir))
+                        for m in source_modules(script, self.workdir / "src")
+                    ]
+                    if script
+                    else [],
+                    "path": s.path,
+                }
+            )
+        return out
+
+    def card(self, entry: dict) -> dict:
+        number = entry.get("number")
+        fe = entry.get("half") == "fe"
+        rows = self.rows_about(number, entry.get("section"))
+        reading = best_reading(rows, self.order)
+        judged = rows_in_reading(rows, reading) if reading else rows
+        verdict = figure_verdict(r["status"] for r in judged)
+        counts = status_counts(r["status"] for r in judged)
+        images = self.images(number, reading, rows) if number is not None else []
+        thumb = None
+        if images:
+            source = images[0]["path"]  # one thumbnail per image, however many figures it shows
+            out = self.thumbs / (Path(source).relative_to(self.results.name).as_posix().replace("/", "__"))
+            if (self.workdir / source, out) not in self.thumb_jobs:
+                self.thumb_jobs.append((self.workdir / source, out))
+            thumb = self.page_path(out)
+        table = None
+        from_table = entry.get("table") or entry.get("drawn_from_table")
+        csv_path = self.workdir / self.friction_table
+        if from_table and csv_path.is_file():
+            if entry.get("table"):
+                table = self.table_preview(csv_path)
+            elif not images:
+                rows_ = read_csv(csv_path)
+                x, y = list(rows_[0])[:2]
+                out = self.thumbs / f"fig{number:02d}.svg"
+                out.parent.mkdir(parents=True, exist_ok=True)
+                out.write_text(svg_plot([_number(r[x]) for r in rows_], [_number(r[y]) for r in rows_], x, y))
+                thumb = self.page_path(out)
+                images = [{"label": "drawn by this page from the friction table", "full": thumb, "path": ""}]
+        data = [self.friction_table] if from_table else []
+        for r in judged:
+            for p in dataset_paths_of(self.claim.get(r["claim"], {})):
+                data.append(p.format(reading=reading) if "{reading}" in p else p)
+        datasets = [self.link(p) for p in dict.fromkeys(data)]
+        notebook = None
+        if number is not None:
+            found = notebook_link(number, self.notebooks)
+            if found:
+                notebook = {
+                    "name": found[0],
+                    "href": f"{self.href(f'results/notebooks/{found[0]}.html')}#{found[1]}",
+                }
+        key = f"fig-{number}" if number is not None else entry["key"]
+        title = entry.get("title") or (
+            f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
+        )
+        return {
+            "key": key,
+            "number": number,
+            "title": title,
+            "half": entry.get("half", "text"),
+            "caption": entry["caption"],
+            "verdict": verdict,
+            "verdict_class": verdict.replace(" ", "-"),
+            "rule": VERDICT_RULE[verdict],
+            "reading": reading or (self.fe_default if fe and rows else ""),
+            "reading_note": (
+                "the FE reading the claims table checks"
+                if fe and rows and not reading
+                else ("the reading that reproduces most of its claims" if reading else "")
+            ),
+            "counts": counts,
+            "n_rows": len(judged),
+            "claims": [self.claim_row(r) for r in judged],
+            "per_reading": self.per_reading(rows, fe) if rows else [],
+            "images": images,
+            "thumb": thumb,
+            "table": table,
+            "datasets": [d for d in datasets if d["href"]],
+            "inverse": self.inverse_for(number) if number is not None else [],
+            "notebook": notebook,
+        }
+
+    def claim_row(self, r: dict) -> dict:
+        return {
+            "claim": r["claim"],
+            "reading": r["reading"] or "all",
+            "quantity": r["quantity"],
+            "reported": fmt(r["reported"]),
+            "measured": fmt(r["measured"]),
+            "unit": r["unit"],
+            "margin": fmt(r["margin"]),
+            "spread": fmt(r["spread"]),
+            "status": r["status"],
+            "status_class": r["status"],
+            "reason": r["reason"],
+            "quote": r["quote"],
+        }
+
+    def table_preview(self, csv_path: Path) -> dict:
+        rows = read_csv(csv_path)
+        columns = list(rows[0]) if rows else []
+        return {"columns": columns, "rows": [[fmt(r[c]) for c in columns] for r in rows]}
+
+    # -- summary --------------------------------------------------------------------------------------
+
+    def half_summary(self, half: str, cards: list[dict]) -> dict:
+        mine = [c for c in cards if c["half"] == half]
+        counts = Counter(c["verdict"] for c in mine)
+        if half == "fe":
+            table = Counter(r["reading"] for r in self.fe_rows if r["status"] == "reproduced")
+            total = Counter(r["reading"] for r in self.fe_rows)
+            best = max(total, key=lambda rd: (table[rd], rd == self.fe_default)) if total else ""
+            best_line = {"reading": best, "reproduced": table[best], "total": total[best]} if best else None
+        else:
+            top = self.ranking[0] if self.ranking else None
+            best_line = (
+                {"reading": top["reading"], "reproduced": int(top["reproduced"]), "total": int(top["total"])}
+                if top
+                else None
+            )
+        return {
+            "half": half,
+            "title": self.paper["halves"][half],
+            "figures": len(mine),
+            "counts": {v: counts[v] for v in VERDICTS},
+            "best": best_line,
+            "cards": mine,
+        }
+
+    def context(self) -> dict:
+        cards = [self.card(e) for e in self.paper["figures"]] + [self.card(e) for e in self.paper["text"]]
+        make_thumbnails(self.thumb_jobs, self.workers)
+        placed = {r["claim"] for c in cards for r in c["claims"]} | {
+            r["claim"] for r in self.rows if self.figures_of.get(r["claim"])
+        }
+        unplaced = sorted({r["claim"] for r in self.rows} - placed)
+        halves = [self.half_summary(h, cards) for h in self.paper["halves"]]
+        totals = status_counts(r["status"] for r in self.rows)
+        return {
+            "cards": cards,
+            "halves": halves,
+            "verdicts": VERDICTS,
+            "verdict_rule": VERDICT_RULE,
+            "claim_totals": totals,
+            "n_claim_rows": len(self.rows),
+            "n_claims": len({r["claim"] for r in self.rows}),
+            "unplaced": unplaced,
+            "links": {
+                "deviations": self.href("results/claims/deviations.csv"),
+                "deviations_md": self.href("results/claims/deviations.md"),
+                "ranking": self.href("results/claims/reading_ranking.csv"),
+                "fe_readings": self.href("results/fe/readings_claims.csv"),
+                "interpretation": self.href("results/notebooks/interpretation_study.html"),
+                "inverse": self.href("results/notebooks/inverse_study.html"),
+                "readme": self.href("README.md"),
+            },
+        }
+
+
+def dataset_paths_of(claim: dict) -> list[str]:
+    refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
+    return [r["dataset"] for r in refs if isinstance(r, dict) and "dataset" in r]
+
+
+def render(context: dict) -> str:
+    import jinja2
+
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(HERE / "templates"),
+        autoescape=jinja2.select_autoescape(["html", "j2"]),
+        trim_blocks=True,
+        lstrip_blocks=True,
+        undefined=jinja2.StrictUndefined,
+    )
+    css = (HERE / "templates" / "page.css").read_text()
+    return env.get_template("page.html.j2").render(css=css, **context)
+
+
+def build_page(out: Path, builder: PageBuilder) -> Path:
+    """Write the page to ``out`` (atomically) and return its path."""
+    out = Path(out)
+    text = render(builder.context())
+    tmp = out.with_suffix(".html.tmp")
+    tmp.write_text(text)
+    tmp.replace(out)
+    return out

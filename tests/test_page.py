@@ -1,0 +1,295 @@
+"""The replication page: the verdict rule, and the page of a real run loaded in a headless browser."""
+
+import shutil
+import subprocess
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import unquote, urlsplit
+
+import pytest
+
+from stickslip.io.claims import load_claims, read_table
+from stickslip.presentation.page import claim_figures, paper_spec
+from stickslip.presentation.verdicts import VERDICTS, best_reading, figure_verdict, rows_in_reading
+
+from project_run import shared_small_run
+
+PAPER_FIGURES = [*range(2, 18), *range(19, 37)]
+
+
+# -- the verdict rule ---------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "statuses, verdict",
+    [
+        (["reproduced", "reproduced", "indistinguishable"], "reproduced"),
+        (["reproduced", "deviates", "not-comparable"], "partly"),
+        (["deviates", "indistinguishable", "deviates"], "deviating"),
+        (["indistinguishable", "not-comparable"], "not comparable"),
+        ([], "not comparable"),
+    ],
+)
+def test_figure_verdict_counts_only_decided_claims(statuses, verdict):
+    assert figure_verdict(statuses) == verdict
+    assert verdict in VERDICTS
+
+
+def _row(claim, reading, status):
+    return {"claim": claim, "reading": reading, "status": status}
+
+
+def test_best_reading_maximises_reproduced_then_minimises_deviations():
+    rows = [
+        _row("a", "r1", "reproduced"),
+        _row("b", "r1", "deviates"),
+        _row("a", "r2", "reproduced"),
+        _row("b", "r2", "indistinguishable"),
+        _row("a", "r3", "deviates"),
+        _row("b", "r3", "deviates"),
+        _row("c", "", "reproduced"),  # holds in every reading
+    ]
+    # r1 and r2 reproduce one each; r2 has none deviating, though r1 ranks first overall
+    assert best_reading(rows, ["r1", "r2", "r3"]) == "r2"
+    assert [r["claim"] for r in rows_in_reading(rows, "r2")] == ["a", "b", "c"]
+    assert figure_verdict(r["status"] for r in rows_in_reading(rows, "r2")) == "reproduced"
+    assert figure_verdict(r["status"] for r in rows_in_reading(rows, "r3")) == "partly"
+
+
+def test_best_reading_prefers_a_reading_that_decides_over_one_that_measures_nothing():
+    rows = [
+        _row("a", "measures", "deviates"),
+        _row("b", "measures", "deviates"),
+        _row("a", "blind", "not-comparable"),
+        _row("b", "blind", "not-comparable"),
+    ]
+    assert best_reading(rows, ["blind", "measures"]) == "measures"
+    assert figure_verdict(r["status"] for r in rows_in_reading(rows, "measures")) == "deviating"
+
+
+def test_best_reading_prefers_a_clean_record_at_equal_reproduced_counts():
+    rows = [
+        _row("a", "mixed", "reproduced"),
+        _row("b", "mixed", "deviates"),
+        _row("a", "clean", "reproduced"),
+        _row("b", "clean", "not-comparable"),
+    ]
+    assert best_reading(rows, ["mixed", "clean"]) == "clean"
+
+
+def test_best_reading_ties_follow_the_overall_ranking():
+    rows = [_row("a", "r1", "reproduced"), _row("a", "r2", "reproduced")]
+    assert best_reading(rows, ["r2", "r1"]) == "r2"
+    assert best_reading(rows, ["r1", "r2"]) == "r1"
+    assert best_reading([_row("a", "", "deviates")], ["r1"]) == ""
+
+
+def test_paper_spec_lists_every_figure_once_in_the_papers_order():
+    numbers = [f["number"] for f in paper_spec()["figures"]]
+    assert numbers == sorted(set(numbers))
+    assert set(PAPER_FIGURES) <= set(numbers)
+
+
+def test_page_sources_map_images_to_paper_figures_from_config_titles_fe_map_and_docstrings(tmp_path):
+    from types import SimpleNamespace
+
+    from stickslip.presentation.sources import page_sources
+
+    rules_file = tmp_path / "workflow" / "rules" / "x.smk"
+
+    def rule(name, outputs, docstring=None):
+        return SimpleNamespace(
+            name=name,
+            output=outputs,
+            docstring=docstring,
+            snakefile=str(rules_file),
+            script="../scripts/s.py",
+        )
+
+    rules = [
+        rule("onedof_figure_fig12", ["results/figures/fig12/plateau_caption.png"]),
+        rule("fe_figures", ["results/figures/fe/section11_a.png", "results/figures/fe/readings.png"]),
+        rule("eq6_curve", ["results/onedof/fig04/eq6.nc", "results/figures/fig04/eq6.png"], "Fig. 4: Eq. 6"),
+        rule("other", ["results/figures/methods/map.png"], "Where methods fail"),
+    ]
+    titled = {"fig12": {"title": "Fig. 12-13: damping"}}
+    fe = {"section11_a": {"figures": "Fig. 29-33"}}
+    found = {s["path"]: s for s in page_sources(rules, titled, fe, tmp_path)}
+    assert {p: s["figures"] for p, s in found.items()} == {
+        "results/figures/fig12/plateau_caption.png": [12, 13],
+        "results/figures/fe/section11_a.png": [29, 30, 31, 32, 33],
+        "results/figures/fig04/eq6.png": [4],
+    }
+    eq6 = found["results/figures/fig04/eq6.png"]
+    assert (eq6["label"], eq6["rule"]) == ("eq6", "eq6_curve")
+    assert (eq6["rule_file"], eq6["script"]) == ("workflow/rules/x.smk", "workflow/scripts/s.py")
+
+
+# -- the page of a run, in a browser ------------------------------------------------------------------
+
+
+def browser() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome", "chrome"):
+        if shutil.which(name):
+            return shutil.which(name)
+    return None
+
+
+class _Dom(HTMLParser):
+    """Links, sources and figure cards of a dumped DOM."""
+
+    def __init__(self):
+        super().__init__()
+        self.urls, self.cards = [], {}
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        for key in ("href", "src"):
+            if a.get(key):
+                self.urls.append(a[key])
+        if tag == "section" and "card" in a.get("class", "").split():
+            self.cards[a["id"]] = (a.get("data-figure", ""), a.get("data-verdict"))
+
+
+def _headless(chrome, *args, timeout=120):
+    cmd = [chrome, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", *args]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    return shared_small_run(tmp_path_factory)
+
+
+@pytest.mark.pipeline
+def test_page_in_headless_chromium(run):
+    chrome = browser()
+    if chrome is None:
+        pytest.skip("no Chromium/Chrome binary on PATH (Debian: apt-get install chromium)")
+    check_page(chrome, run)
+
+
+def check_page(chrome, run):
+    """The page of the run in ``run`` (a project folder with results/) loaded in ``chrome``."""
+    results = run / "results"
+    page = results / "index.html"
+    assert page.is_file(), "make figures did not write results/index.html"
+    url = page.resolve().as_uri()
+
+    proc = _headless(chrome, "--enable-logging=stderr", "--v=0", "--dump-dom", url)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    console = [line for line in proc.stderr.splitlines() if ":CONSOLE" in line]
+    assert not console, "console messages:\n" + "\n".join(console)
+    dom = _Dom()
+    dom.feed(proc.stdout)
+
+    missing = []
+    for u in dom.urls:
+        parts = urlsplit(u)
+        if parts.scheme in ("http", "https"):
+            missing.append(f"{u} (network)")
+            continue
+        if parts.scheme == "data" or not parts.path:  # an in-page anchor or an inline icon
+            continue
+        if not (results / unquote(parts.path)).exists():
+            missing.append(u)
+    assert not missing, f"links to files that do not exist: {missing}"
+
+    figures = {int(n): v for n, v in dom.cards.values() if n}
+    assert sorted(set(PAPER_FIGURES) - set(figures)) == []
+    assert {"section-4", "conclusions"} <= set(dom.cards)
+
+    # the verdicts on the page are those the claims table gives, under the documented rule
+    rows = read_table(results / "claims" / "deviations.csv")
+    figs_of = claim_figures(load_claims(sorted((run / "config" / "claims").glob("*.yaml"))))
+    order = [r["reading"] for r in read_table(results / "claims" / "reading_ranking.csv")]
+    for number, shown in figures.items():
+        mine = [r for r in rows if number in figs_of[r["claim"]]]
+        reading = best_reading(mine, order)
+        judged = rows_in_reading(mine, reading) if reading else mine
+        assert shown == figure_verdict(r["status"] for r in judged), f"Fig. {number}"
+
+    shot = results / "page_top.png"
+    shot.unlink(missing_ok=True)
+    proc = _headless(chrome, "--window-size=1400,1800", f"--screenshot={shot}", url)
+    assert shot.is_file(), proc.stderr[-2000:]
+    from PIL import Image
+
+    with Image.open(shot) as im:
+        assert im.width == 1400
+
+
+# -- the notebooks show the same verdicts, and let wide tables scroll --------------------------------------
+
+
+def test_notebook_verdicts_are_the_pages(tmp_path):
+    from stickslip.notebook import figure_verdicts
+
+    (tmp_path / "claims").mkdir()
+    (tmp_path / "claims" / "c.yaml").write_text(
+        "- {id: a, section: '3', figure: Fig. 2, figures: [2], quote: q, kind: value, expected: reproduced}\n"
+        "- {id: b, section: '3', figure: Figs. 2-3, figures: [2, 3], quote: q, kind: value,"
+        " expected: deviates}\n"
+    )
+    header = "claim,reading,section,figure,status\n"
+    (tmp_path / "deviations.csv").write_text(
+        header + "a,r1,3,Fig. 2,reproduced\nb,r1,3,Figs. 2-3,deviates\n"
+        "a,r2,3,Fig. 2,reproduced\nb,r2,3,Figs. 2-3,not-comparable\n"
+    )
+    frame = figure_verdicts([2, 3], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
+    assert frame.to_dict("records") == [
+        {
+            "figure": "Fig. 2",
+            "verdict": "reproduced",
+            "best reading": "r2",
+            "reproduced": 1,
+            "deviates": 0,
+            "undecided": 1,
+        },
+        {
+            "figure": "Fig. 3",
+            "verdict": "deviating",
+            "best reading": "r1",
+            "reproduced": 0,
+            "deviates": 1,
+            "undecided": 0,
+        },
+    ]
+
+
+def test_rendered_notebook_lets_wide_tables_scroll():
+    import nbformat
+
+    from stickslip.notebook import READER_CSS, to_html
+
+    nb = nbformat.v4.new_notebook()
+    cell = nbformat.v4.new_code_cell("wide")
+    wide = "<table><tr>" + "<td>a wide cell</td>" * 60 + "</tr></table>"
+    cell.outputs = [nbformat.v4.new_output("display_data", data={"text/html": wide})]
+    nb.cells = [nbformat.v4.new_markdown_cell("# Title"), cell]
+    page = to_html(nb)
+    head = page[: page.index("</head>")]
+    assert READER_CSS in head and "overflow-x: auto" in READER_CSS
+    assert wide in page
+
+
+def test_notebook_link_prefers_the_most_specific_section(tmp_path):
+    from stickslip.presentation.page import notebook_link, notebook_sections
+
+    page = tmp_path / "nb.html"
+    page.write_text(
+        '<h1 id="Section-4">Section 4 — Figure 4 (Eq. 6)</h1><h2 id="Fig-4">Figure 4 — Eq. 6</h2>'
+        '<h2 id="Figs-2-4">Figures 2 and 4</h2><h2 id="Fig-7-9">Figures 7, 8 and 9</h2>'
+    )
+    sections = {"nb": notebook_sections(page)}
+    assert notebook_link(4, sections) == ("nb", "Fig-4")
+    assert notebook_link(8, sections) == ("nb", "Fig-7-9")
+    assert notebook_link(5, sections) is None
+
+
+def test_readme_opens_with_the_two_commands_and_stays_short():
+    lines = (Path(__file__).resolve().parents[1] / "README.md").read_text().splitlines()
+    assert len(lines) <= 120
+    code = lines[lines.index("```bash") + 1 :][:2]
+    assert lines.index("```bash") <= 3
+    assert [c.split()[:2] for c in code] == [["make", "figures"], ["make", "test"]]
