@@ -25,7 +25,7 @@ def test_the_friction_table_is_the_readings_law_along_the_solution(config, readi
     v = ds.sample_relative_speed.values
     assert v.size > 100 and np.all(v >= 0)
     clipped = np.minimum(v, p.plateau_speed) if np.isfinite(p.plateau_speed or np.inf) else v
-    # every slip sample obeys |F|/N = mu_s (1 - sigma |v_r|) (capped at the plateau), the law the reading reads
+    # every slip sample obeys |F|/N = mu_s (1 - sigma |v_r|), capped at the plateau: the reading's own law
     np.testing.assert_allclose(ds.sample_mu.values, p.mu_s * (1 - p.sigma * clipped), rtol=0, atol=1e-12)
     table = ds.mu.values
     assert table[0] == pytest.approx(p.mu_s) and ds.relative_speed.values[0] == 0.0
