@@ -17,45 +17,29 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
+from .events import (
+    EventDrivenSolver,
+    Segment,
+    StickMotion,
+    _check_t_end,
+    sample_segments,
+    trajectory_from_segments,
+)
 from .linear import LinearSegment
+
+__all__ = [
+    "ExactSwitchSolver",
+    "Segment",
+    "StickMotion",
+    "first_exit_root",
+    "sample_segments",
+    "trajectory_from_segments",
+    "_check_t_end",
+]
 
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
 WINDOW_SAMPLES = (256, 1 << 16)
-
-
-@dataclass(frozen=True)
-class StickMotion:
-    """The mass carried by the belt: x = x0 + vb0 tau + slope tau^2 / 2."""
-
-    x0: float
-    vb0: float
-    slope: float
-
-    def state(self, tau):
-        tau = np.asarray(tau, dtype=float)
-        return self.x0 + self.vb0 * tau + 0.5 * self.slope * tau * tau, self.vb0 + self.slope * tau + 0 * tau
-
-
-@dataclass(frozen=True)
-class Segment:
-    t0: float
-    t1: float
-    phase: int
-    motion: object  # LinearSegment | StickMotion
-
-    def state(self, t):
-        return self.motion.state(np.asarray(t, dtype=float) - self.t0)
-
-
-def _check_t_end(t_end) -> float:
-    try:
-        value = float(t_end)
-    except (TypeError, ValueError):
-        value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        raise SolverError(f"exact solver: t_end must be a finite number > 0, got {t_end!r}")
-    return value
 
 
 def first_exit_root(c0: float, c1: float, c2: float) -> float:
@@ -85,7 +69,7 @@ def first_exit_root(c0: float, c1: float, c2: float) -> float:
 
 
 @dataclass
-class ExactSwitchSolver:
+class ExactSwitchSolver(EventDrivenSolver):
     """Reference solver; ``graze_tolerance`` is relative to the model's velocity scale."""
 
     samples_per_period: int = 64
@@ -98,51 +82,15 @@ class ExactSwitchSolver:
     def settings(self) -> dict:
         return {"samples_per_period": self.samples_per_period, "graze_tolerance": self.graze_tolerance}
 
-    # -- public ---------------------------------------------------------------------------------------
-    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        return trajectory_from_segments(self.segments, model, t_end, t_eval, self.name, self.settings)
-
-    def segments(self, model: BeltModel, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
-        stats = stats if stats is not None else SolverStats()
-        t_end = _check_t_end(t_end)
-        p = model.params
-        t, x, v = 0.0, float(p.x0), float(p.v0)
-        out: list[Segment] = []
-        zero_run = 0
-        mode = self._mode_from_state(model, t, x, v)
-        while t < t_end:
-            if len(out) >= self.max_segments:
-                raise SolverError(f"exact solver: more than {self.max_segments} segments before t={t_end}")
-            if mode == "contact":
-                mode = self._contact_decision(model, t, x)
-                stats.events += 1
-                continue
-            t_limit = min(t_end, p.belt_stop_time) if t < p.belt_stop_time else t_end
-            if mode == STICK:
-                seg, release = self._stick(model, t, x, t_limit)
-                next_mode = release if release is not None else "contact"
-            else:
-                seg, hit = self._slip(model, t, x, v, mode, t_limit)
-                next_mode = "contact" if hit else mode
-            stats.steps += 1
-            out.append(seg)
-            if seg.t1 - seg.t0 <= 1e-14 * max(1.0, abs(seg.t0)):
-                zero_run += 1
-                if zero_run > self.max_zero_length:
-                    raise SolverError(
-                        f"exact solver cannot proceed at t={t:.17g}, x={x:.17g}: "
-                        f"{zero_run} zero-length segments in a row"
-                    )
-            else:
-                zero_run = 0
-            t = seg.t1
-            x, v = (float(q) for q in seg.state(t))
-            if next_mode == "contact" or mode == STICK:
-                v = float(model.belt_velocity(t))  # snap to the belt: v_r is zero here by construction
-            if next_mode != "contact" and t >= p.belt_stop_time and seg.t0 < p.belt_stop_time:
-                next_mode = self._mode_from_state(model, t, x, v)  # belt just stopped: re-decide
-            mode = next_mode
-        return out
+    def _phase(self, model, mode, t, x, v, t_limit, stats):
+        if mode == STICK:
+            seg, release = self._stick(model, t, x, t_limit)
+            next_mode = release if release is not None else "contact"
+        else:
+            seg, hit = self._slip(model, t, x, v, mode, t_limit)
+            next_mode = "contact" if hit else mode
+        stats.steps += 1
+        return seg, next_mode
 
     # -- pieces ---------------------------------------------------------------------------------------
     @staticmethod
@@ -338,54 +286,3 @@ class ExactSwitchSolver:
                 return hi
             return brentq(gap, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
         return None
-
-
-def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, settings: dict) -> Trajectory:
-    """The solve of an event-driven solver (exact, switch): ``segments_of(model, t_end, stats)`` gives the
-    phases of the motion, sampled on ``t_eval`` (default 2001 points); a ``SolverError`` while building them
-    is a failed run whose samples past the last good segment are NaN."""
-    stats = SolverStats()
-    t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
-    with Timer() as timer:
-        try:
-            segments = segments_of(model, t_end, stats)
-        except SolverError as exc:
-            stats.status, stats.message, stats.failures = "failed", str(exc), 1
-            segments = []
-    stats.cpu_time = timer.elapsed
-    t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
-    x, v, phase = sample_segments(segments, t_eval)
-    return Trajectory(
-        t=t_eval,
-        x=x,
-        v=v,
-        phase=phase,
-        belt_velocity=model.belt_velocity(t_eval),
-        stats=stats,
-        method=method,
-        settings=settings,
-        segments=np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3),
-    )
-
-
-def sample_segments(segments: list[Segment], t_eval: np.ndarray):
-    """Evaluate a piecewise solution at sorted ``t_eval``; samples past a failed solve are NaN.
-
-    Each segment owns the samples in [t0, t1) (the last one also t1), found by binary search, so the cost is
-    O(samples + segments log samples) even for runs with many thousands of segments.
-    """
-    x = np.full(t_eval.shape, np.nan)
-    v = np.full(t_eval.shape, np.nan)
-    phase = np.zeros(t_eval.shape, dtype=np.int8)
-    if not segments:
-        return x, v, phase
-    starts = np.searchsorted(t_eval, [seg.t0 for seg in segments], side="left")
-    ends = np.searchsorted(t_eval, [seg.t1 for seg in segments], side="left")
-    ends[-1] = np.searchsorted(t_eval, segments[-1].t1, side="right")
-    for seg, lo, hi in zip(segments, starts, ends):
-        if hi <= lo:
-            continue
-        xs, vs = seg.state(t_eval[lo:hi])
-        x[lo:hi], v[lo:hi] = xs, vs
-        phase[lo:hi] = seg.phase
-    return x, v, phase

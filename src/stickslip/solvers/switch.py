@@ -33,14 +33,9 @@ from scipy.integrate import solve_ivp
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import ParameterError
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory
-from .exact import (
-    Segment,
-    StickMotion,
-    _check_t_end,
-    first_exit_root,
-    trajectory_from_segments,
-)
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError
+from .events import EventDrivenSolver, Segment, StickMotion
+from .exact import first_exit_root
 
 
 @dataclass(frozen=True)
@@ -67,7 +62,7 @@ def as_law_model(model) -> LawModel:
 
 
 @dataclass
-class SwitchSolver:
+class SwitchSolver(EventDrivenSolver):
     """Switch-model solver; ``rtol``/``atol`` are DOP853's tolerances on (x [mm], v [mm/s])."""
 
     rtol: float = 1e-12
@@ -82,8 +77,10 @@ class SwitchSolver:
     def __post_init__(self):
         for key in ("rtol", "atol", "graze_tolerance"):
             value = getattr(self, key)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not (
-                math.isfinite(value) and value > 0
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, (int, float))
+                or not (math.isfinite(value) and value > 0)
             ):
                 raise ParameterError(f"{key}: must be a finite number > 0, got {value!r}")
         if self.method not in ("DOP853", "RK45", "Radau", "LSODA"):
@@ -98,50 +95,24 @@ class SwitchSolver:
             "graze_tolerance": self.graze_tolerance,
         }
 
-    # -- public ---------------------------------------------------------------------------------------
-    def solve(self, model, t_end: float, t_eval=None) -> Trajectory:
-        law_model = as_law_model(model)
-        settings = {**self.settings, "law": law_model.law.describe()}
-        return trajectory_from_segments(self.segments, law_model, t_end, t_eval, self.name, settings)
+    def _integrated(self, model) -> LawModel:
+        return as_law_model(model)
 
-    def segments(self, model, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
-        """The phases of the motion up to ``t_end`` (each with its own exact or dense solution)."""
-        lm = as_law_model(model)
-        stats = stats if stats is not None else SolverStats()
-        t_end = _check_t_end(t_end)
-        p = lm.params
-        t, x, v = 0.0, float(p.x0), float(p.v0)
-        out: list[Segment] = []
-        zero_run = 0
-        mode = _mode_from_state(lm, t, x, v)
-        while t < t_end:
-            if len(out) >= self.max_segments:
-                raise SolverError(f"switch solver: more than {self.max_segments} segments before t={t_end}")
-            if mode == "contact":
-                mode = contact_decision(lm, t, x)
-                stats.events += 1
-                continue
-            stop = p.belt_stop_time
-            t_limit = min(t_end, stop) if t < stop else t_end
-            if mode == STICK:
-                seg, next_mode = self._stick(lm, t, x, t_limit)
-            else:
-                seg, next_mode = self._slip(lm, t, x, v, mode, t_limit, stats)
-            stats.steps += mode == STICK
-            out.append(seg)
-            zero_run = zero_run + 1 if seg.t1 - seg.t0 <= 1e-14 * max(1.0, abs(seg.t0)) else 0
-            if zero_run > self.max_zero_length:
-                raise SolverError(
-                    f"switch solver cannot proceed at t={t:.17g}, x={x:.17g}: {zero_run} zero-length phases"
-                )
-            t = seg.t1
-            x, v = (float(q) for q in seg.state(t))
-            if next_mode == "contact" or mode == STICK:
-                v = float(lm.belt_velocity(t))  # v_r = 0 here by construction
-            if next_mode != "contact" and t >= stop and seg.t0 < stop:
-                next_mode = _mode_from_state(lm, t, x, v)  # the belt just stopped: decide again
-            mode = next_mode
-        return out
+    def _solve_settings(self, model) -> dict:
+        return {**self.settings, "law": model.law.describe()}
+
+    def _mode_from_state(self, lm, t, x, v):
+        return _mode_from_state(lm, t, x, v)
+
+    def _contact_decision(self, lm, t, x):
+        return contact_decision(lm, t, x)
+
+    def _phase(self, lm, mode, t, x, v, t_limit, stats):
+        if mode == STICK:
+            phase = self._stick(lm, t, x, t_limit)
+            stats.steps += 1  # a slip phase counts its integrator's steps
+            return phase
+        return self._slip(lm, t, x, v, mode, t_limit, stats)
 
     # -- phases ---------------------------------------------------------------------------------------
     @staticmethod
@@ -224,6 +195,7 @@ class SwitchSolver:
 def smooth_interval(nodes: tuple[float, ...], rel: float, rate: float) -> tuple[float, float]:
     """(lo, hi): the interval between breakpoints that the relative speed ``rel`` is in, or, on a
     breakpoint (a restart there), the one it moves into (by the sign of its rate)."""
+
     def node(j):
         return -math.inf if j < 0 else (math.inf if j >= len(nodes) else nodes[j])
 

@@ -1,0 +1,175 @@
+"""The contract of the event-driven solvers (exact, switch), as scipy's ``OdeSolver`` splits its own.
+
+The base class owns what every such solver does the same way: ``solve()`` (sample times, counters, CPU time,
+a ``SolverError`` while building the phases becomes a failed run, never a result) and the phase loop
+(segment budget, the zero-length guard, the set-valued decision at v_r = 0, the belt's stop as a scheduled
+event). A subclass supplies only its phases: ``_phase`` (one stick or slip phase and the mode after it),
+``_mode_from_state`` and ``_contact_decision``, and, where it integrates a model of its own kind,
+``_integrated``. Settings are checked in the subclass's constructor.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .base import STICK, SolverError, SolverStats, Timer, Trajectory
+
+
+@dataclass(frozen=True)
+class StickMotion:
+    """The mass carried by the belt: x = x0 + vb0 tau + slope tau^2 / 2."""
+
+    x0: float
+    vb0: float
+    slope: float
+
+    def state(self, tau):
+        tau = np.asarray(tau, dtype=float)
+        return self.x0 + self.vb0 * tau + 0.5 * self.slope * tau * tau, self.vb0 + self.slope * tau + 0 * tau
+
+
+@dataclass(frozen=True)
+class Segment:
+    t0: float
+    t1: float
+    phase: int
+    motion: object  # LinearSegment | StickMotion
+
+    def state(self, t):
+        return self.motion.state(np.asarray(t, dtype=float) - self.t0)
+
+
+def _check_t_end(t_end) -> float:
+    try:
+        value = float(t_end)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise SolverError(f"exact solver: t_end must be a finite number > 0, got {t_end!r}")
+    return value
+
+
+class EventDrivenSolver:
+    """Base of the event-driven solvers: subclasses are dataclasses with ``name``, ``max_segments``,
+    ``max_zero_length`` and ``settings``, and implement the phase hooks below."""
+
+    name: str
+    max_segments: int
+    max_zero_length: int
+
+    # -- hooks ----------------------------------------------------------------------------------------
+    def _integrated(self, model):
+        """The model this solver integrates (a conversion of ``model`` where it needs one)."""
+        return model
+
+    def _solve_settings(self, model) -> dict:
+        return self.settings
+
+    def _mode_from_state(self, model, t: float, x: float, v: float):
+        raise NotImplementedError
+
+    def _contact_decision(self, model, t: float, x: float):
+        raise NotImplementedError
+
+    def _phase(self, model, mode, t: float, x: float, v: float, t_limit: float, stats: SolverStats):
+        """One phase from (t, x, v) in ``mode`` up to at most ``t_limit``: (Segment, mode after it, where
+        'contact' means v_r = 0 and the next mode is decided there)."""
+        raise NotImplementedError
+
+    # -- owned here -----------------------------------------------------------------------------------
+    def solve(self, model, t_end: float, t_eval=None) -> Trajectory:
+        integrated = self._integrated(model)
+        settings = self._solve_settings(integrated)
+        return trajectory_from_segments(self.segments, integrated, t_end, t_eval, self.name, settings)
+
+    def segments(self, model, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
+        """The phases of the motion up to ``t_end``."""
+        model = self._integrated(model)
+        stats = stats if stats is not None else SolverStats()
+        t_end = _check_t_end(t_end)
+        p = model.params
+        stop = p.belt_stop_time
+        t, x, v = 0.0, float(p.x0), float(p.v0)
+        out: list[Segment] = []
+        zero_run = 0
+        mode = self._mode_from_state(model, t, x, v)
+        while t < t_end:
+            if len(out) >= self.max_segments:
+                raise SolverError(
+                    f"{self.name} solver: more than {self.max_segments} segments before t={t_end}"
+                )
+            if mode == "contact":
+                mode = self._contact_decision(model, t, x)
+                stats.events += 1
+                continue
+            t_limit = min(t_end, stop) if t < stop else t_end
+            seg, next_mode = self._phase(model, mode, t, x, v, t_limit, stats)
+            out.append(seg)
+            zero_run = zero_run + 1 if seg.t1 - seg.t0 <= 1e-14 * max(1.0, abs(seg.t0)) else 0
+            if zero_run > self.max_zero_length:
+                raise SolverError(
+                    f"{self.name} solver cannot proceed at t={t:.17g}, x={x:.17g}: "
+                    f"{zero_run} zero-length segments in a row"
+                )
+            t = seg.t1
+            x, v = (float(q) for q in seg.state(t))
+            if next_mode == "contact" or mode == STICK:
+                v = float(model.belt_velocity(t))  # snap to the belt: v_r is zero here by construction
+            if next_mode != "contact" and t >= stop and seg.t0 < stop:
+                next_mode = self._mode_from_state(model, t, x, v)  # the belt just stopped: decide again
+            mode = next_mode
+        return out
+
+
+def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, settings: dict) -> Trajectory:
+    """The solve of an event-driven solver (exact, switch): ``segments_of(model, t_end, stats)`` gives the
+    phases of the motion, sampled on ``t_eval`` (default 2001 points); a ``SolverError`` while building them
+    is a failed run whose samples past the last good segment are NaN."""
+    stats = SolverStats()
+    t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
+    with Timer() as timer:
+        try:
+            segments = segments_of(model, t_end, stats)
+        except SolverError as exc:
+            stats.status, stats.message, stats.failures = "failed", str(exc), 1
+            segments = []
+    stats.cpu_time = timer.elapsed
+    t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
+    x, v, phase = sample_segments(segments, t_eval)
+    return Trajectory(
+        t=t_eval,
+        x=x,
+        v=v,
+        phase=phase,
+        belt_velocity=model.belt_velocity(t_eval),
+        stats=stats,
+        method=method,
+        settings=settings,
+        segments=np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3),
+    )
+
+
+def sample_segments(segments: list[Segment], t_eval: np.ndarray):
+    """Evaluate a piecewise solution at sorted ``t_eval``; samples past a failed solve are NaN.
+
+    Each segment owns the samples in [t0, t1) (the last one also t1), found by binary search, so the cost is
+    O(samples + segments log samples) even for runs with many thousands of segments.
+    """
+    x = np.full(t_eval.shape, np.nan)
+    v = np.full(t_eval.shape, np.nan)
+    phase = np.zeros(t_eval.shape, dtype=np.int8)
+    if not segments:
+        return x, v, phase
+    starts = np.searchsorted(t_eval, [seg.t0 for seg in segments], side="left")
+    ends = np.searchsorted(t_eval, [seg.t1 for seg in segments], side="left")
+    ends[-1] = np.searchsorted(t_eval, segments[-1].t1, side="right")
+    for seg, lo, hi in zip(segments, starts, ends):
+        if hi <= lo:
+            continue
+        xs, vs = seg.state(t_eval[lo:hi])
+        x[lo:hi], v[lo:hi] = xs, vs
+        phase[lo:hi] = seg.phase
+    return x, v, phase
