@@ -7,7 +7,7 @@ from snakemake.utils import update_config
 
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
 
-from stickslip.config import load_config  # noqa: E402
+from stickslip.pipeline.config import load_config  # noqa: E402
 
 # The config files are read by the project's loader, not Snakemake's `configfile:`: data only (Snakemake's
 # would run a file marked `__use_yte__` as a template), duplicate keys and syntax errors named with file and

@@ -39,7 +39,7 @@ def test_config_errors_name_the_key(repo_root, mutate, key):
     """One entry point validates: the typed models, then every run resolved (physics at construction)."""
     from glob import glob
 
-    from stickslip.config import ConfigError, load_config, validate_config
+    from stickslip.pipeline.config import ConfigError, load_config, validate_config
 
     bad = load_config(sorted(glob(str(repo_root / "config" / "*.yaml"))))
     mutate(bad)
@@ -83,7 +83,7 @@ def test_a_budgeted_method_records_a_stall_as_a_failed_run(config):
 def test_a_null_in_an_override_file_removes_the_entry(tmp_path, repo_root):
     """Merging can only add or replace: a null value is how the small config drops a figure of the main one
     (and with it the figure's rule); every other entry of the section stays."""
-    from stickslip.config import load_config
+    from stickslip.pipeline.config import load_config
 
     override = tmp_path / "drop.yaml"
     override.write_text("onedof:\n  figures:\n    fig05: null\n")

@@ -7,8 +7,8 @@ from glob import glob
 import pytest
 from pydantic import ValidationError
 
-from stickslip.config import load_config
-from stickslip.config_models import SCHEMA_PATH, PipelineConfig, schema_text
+from stickslip.pipeline.config import load_config
+from stickslip.pipeline.config_models import SCHEMA_PATH, PipelineConfig, schema_text
 
 from project_run import ROOT
 
@@ -25,7 +25,7 @@ def test_repository_configs_validate(test):
 
 def test_committed_schema_is_the_generated_one():
     assert (ROOT / SCHEMA_PATH).read_text() == schema_text(), (
-        "workflow/schemas/config.schema.json is stale: run `python -m stickslip.config_models --write`"
+        "workflow/schemas/config.schema.json is stale: run `python -m stickslip.pipeline.config_models --write`"
     )
 
 
@@ -58,10 +58,10 @@ def test_typed_names_are_the_models_own():
     implements (written twice only because a Literal type needs the values spelled out)."""
     from typing import get_args
 
-    from stickslip.config_models import InverseParameter, Units, Variant
     from stickslip.inverse.problem import PARAMS
     from stickslip.model.friction import VARIANTS
     from stickslip.model.params import UNIT_READINGS
+    from stickslip.pipeline.config_models import InverseParameter, Units, Variant
 
     assert get_args(Variant) == VARIANTS
     assert get_args(Units) == UNIT_READINGS

@@ -7,8 +7,8 @@ import pytest
 import xarray as xr
 
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
-from stickslip.config import ConfigError, validate_config
-from stickslip.config import load_config as load_files
+from stickslip.pipeline.config import ConfigError, validate_config
+from stickslip.pipeline.config import load_config as load_files
 from stickslip.studies import specs as dmc
 
 from project_run import ROOT, copy_project, run_snakemake

@@ -41,7 +41,7 @@ def test_step_member_only_where_a_step_setting_exists():
     [({"relative": -1}, "relative"), ({"step_factor": 1.5}, "step_factor"), ({"seedz": [1]}, "seedz")],
 )
 def test_bad_ensemble_settings_name_their_key(bad, key, repo_root):
-    from stickslip.config import ConfigError, load_config, validate_config
+    from stickslip.pipeline.config import ConfigError, load_config, validate_config
 
     config = load_config(sorted((repo_root / "config").glob("*.yaml")))
     config["ensemble"].update(bad)

@@ -131,7 +131,7 @@ def test_mu_k_keeps_the_stick_limit_and_changes_the_slip():
 )
 def test_bad_inverse_config_names_the_key(change, key):
     """The inverse section is checked by the typed config layer with the rest, before any job."""
-    from stickslip.config import ConfigError, load_config, merge, validate_config
+    from stickslip.pipeline.config import ConfigError, load_config, merge, validate_config
 
     config = load_config(sorted((ROOT / "config").glob("*.yaml")))
     config["inverse"] = merge(config["inverse"], change)

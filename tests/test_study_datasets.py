@@ -5,7 +5,7 @@ Each builder runs on the repository config's own run specs (short windows where 
 import numpy as np
 import pytest
 
-from stickslip.config import load_config
+from stickslip.pipeline.config import load_config
 from stickslip.studies.onedof import critical_speed_dataset, eq6_dataset, friction_table_dataset
 from stickslip.studies.specs import baseline_spec, run_spec
 

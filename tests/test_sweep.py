@@ -93,7 +93,7 @@ def test_bad_axes_and_chunks_name_the_problem():
 def _sweep_config(law=None, method="switch"):
     from glob import glob
 
-    from stickslip.config import load_config
+    from stickslip.pipeline.config import load_config
 
     from project_run import ROOT
 
@@ -120,7 +120,7 @@ def test_a_sweep_with_the_readings_own_affine_law_matches_the_exact_sweep():
 
 
 def test_a_sweep_law_needs_the_switch_method_and_valid_parameters():
-    from stickslip.config import ConfigError, validate_config
+    from stickslip.pipeline.config import ConfigError, validate_config
 
     table = ["results/onedof/friction_mu_vr.csv"]  # written by a rule: need not exist yet
     with pytest.raises(ConfigError, match="onedof.sweeps.with_law.method"):

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
-from stickslip.config import load_config
-from stickslip.config_models import MethodsStudy
+from stickslip.pipeline.config import load_config
+from stickslip.pipeline.config_models import MethodsStudy
 from stickslip.solvers import make_solver
 from stickslip.studies import methods as methods_study
 

@@ -1,5 +1,5 @@
 # The claims table: every reported number vs what the pipeline measures, with pinned statuses.
-CLAIM_READINGS = config["claims"]["readings"]  # checked against onedof.readings by stickslip.config
+CLAIM_READINGS = config["claims"]["readings"]  # checked against onedof.readings by stickslip.pipeline.config
 
 
 rule claims_table:

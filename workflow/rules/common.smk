@@ -5,7 +5,7 @@ from functools import cache
 from glob import glob
 from pathlib import Path
 
-from stickslip.config import drop_removed, validate_config
+from stickslip.pipeline.config import drop_removed, validate_config
 from stickslip.io.claims import ClaimsError, check_claims, load_claims, required_datasets
 from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
@@ -15,7 +15,7 @@ from stickslip.studies.specs import dense_map
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 
 # An override file removes an entry by setting it to null; then every config value is checked, before any
-# job starts, an error naming its key (stickslip.config).
+# job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
 validate_config(config, producible=PRODUCIBLE)
 

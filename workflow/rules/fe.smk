@@ -1,5 +1,5 @@
 # Beam on rotating disc (paper Sections 9-12, issues 5 and 11). Scene and reading names come from config["fe"].
-# The config (schema and references) is checked once for the whole workflow by stickslip.config.
+# The config (schema and references) is checked once for the whole workflow by stickslip.pipeline.config.
 
 FE = config["fe"]
 FE_SCENES = list(FE["scenes"])

@@ -1,6 +1,6 @@
 """From the validated config to run specifications: scene x reading x method, a sweep, a dense map.
 
-The config has been checked by the typed layer (``stickslip.config.validate_config``: types, bounds,
+The config has been checked by the typed layer (``stickslip.pipeline.config.validate_config``: types, bounds,
 references between sections, which solver a friction law needs) before anything here runs. What is left is
 resolution: merge defaults, scene, reading and method into a ``RunSpec`` and build the science objects
 (``BeltParams``, the solver, a friction law), whose constructors check physics; their errors are re-keyed

@@ -1,7 +1,7 @@
 """The pipeline's configuration, checked in one place before any job runs.
 
 ``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
-the typed models of ``stickslip.config_models`` (types, physical ranges, finite numbers, unknown keys), then
+the typed models of ``stickslip.pipeline.config_models`` (types, physical ranges, finite numbers, unknown keys), then
 what a model alone cannot see (names that refer to other sections, solver settings, every scene's model,
 the friction table), each error naming the offending config key.
 """
@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from .model.params import ParameterError
-from .pipeline.errors import typed_errors
-from .pipeline.yaml_files import YamlFileError, load_yaml
+from ..model.params import ParameterError
+from .errors import typed_errors
+from .yaml_files import YamlFileError, load_yaml
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -77,7 +77,7 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
         _check_onedof(config)
         check_methods_config(config["methods_study"])
         _check_dense_maps(config)
-        from .studies.fe import effective_fe_config
+        from ..studies.fe import effective_fe_config
 
         check_fe_config(
             effective_fe_config(config),
@@ -92,7 +92,7 @@ def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
 
 def _check_ensemble(config: dict) -> None:
     """The ensemble section builds the spec every claimed dataset's job builds (one schema, checked once)."""
-    from .ensemble import EnsembleSpec
+    from ..ensemble import EnsembleSpec
 
     try:
         EnsembleSpec.from_mapping(config.get("ensemble"))
@@ -101,7 +101,7 @@ def _check_ensemble(config: dict) -> None:
 
 
 def _check_validation(config: dict, producible: list[str]) -> None:
-    from .validation.setup import ValidationSetup
+    from ..validation.setup import ValidationSetup
 
     ValidationSetup(config["validation"]).check(producible)
 
@@ -110,7 +110,7 @@ def _check_inverse_claims(config: dict) -> None:
     """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names."""
     from glob import glob
 
-    from .inverse.problem import load_claim_rows
+    from ..inverse.problem import load_claim_rows
 
     claims = load_claim_rows(sorted(glob(config["inverse"]["claims_glob"])))
     for name, figure in config["inverse"]["figures"].items():
@@ -121,7 +121,7 @@ def _check_inverse_claims(config: dict) -> None:
 
 def _check_onedof(config: dict) -> None:
     """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
-    from .studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
+    from ..studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
 
     onedof = config["onedof"]
     for figure in onedof["figures"]:
@@ -135,7 +135,7 @@ def _check_onedof(config: dict) -> None:
 
 
 def _check_dense_maps(config: dict) -> None:
-    from .studies.specs import dense_map
+    from ..studies.specs import dense_map
 
     for name in config["dense_map"]["maps"]:
         dense_map(config, name)
@@ -181,8 +181,8 @@ def check_fe_lengths(mapping: dict, key: str, reading: str | None, allow_expensi
 def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool = False) -> None:
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
     before any job starts with the config key named (references between entries: config_models)."""
-    from .fe.scene import SceneParams
-    from .studies.fe import scene_mapping
+    from ..fe.scene import SceneParams
+    from ..studies.fe import scene_mapping
 
     for name in fe_cfg["scenes"]:
         for reading in fe_cfg.get("readings") or [None]:
@@ -207,9 +207,9 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
 def check_methods_config(cfg: dict) -> None:
     """Build every scene model and every swept method of the methods study, so a bad value fails before
     any job starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from .model import BeltModel, BeltParams
-    from .solvers import make_solver
-    from .studies.methods import expand_methods
+    from ..model import BeltModel, BeltParams
+    from ..solvers import make_solver
+    from ..studies.methods import expand_methods
 
     fm = cfg["failure_map"]
     runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]

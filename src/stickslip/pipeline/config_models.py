@@ -2,10 +2,10 @@
 
 Every mapping forbids unknown keys, every number must be finite (no NaN or inf), bounds are physical
 (masses, stiffnesses, durations > 0), and an error names the full key (``onedof.scenes.fig02.params.mass``).
-``stickslip.config.validate_config`` validates the merged Snakemake config against ``PipelineConfig`` and
+``stickslip.pipeline.config.validate_config`` validates the merged Snakemake config against ``PipelineConfig`` and
 then resolves what a model alone cannot (names that refer to other sections, solver settings, files).
 The JSON schema in ``workflow/schemas/config.schema.json`` is generated from these models
-(``python -m stickslip.config_models --write``; a test checks it is current), never written by hand.
+(``python -m stickslip.pipeline.config_models --write``; a test checks it is current), never written by hand.
 
 Every section is typed here, the inverse study's and the friction-law validation's included.
 """
@@ -40,7 +40,7 @@ def belt_parameter(name: str) -> str:
     """``name`` is a parameter of the 1-DOF model (what a sweep or a map axis may set)."""
     import dataclasses
 
-    from .model.params import BeltParams
+    from ..model.params import BeltParams
 
     known = {f.name for f in dataclasses.fields(BeltParams)} - {"units"}
     if name not in known:
@@ -159,7 +159,7 @@ class Method(Open):
     @field_validator("solver")
     @classmethod
     def registered(cls, name: str) -> str:
-        from .solvers import REGISTRY  # the registry is the one list of solver names
+        from ..solvers import REGISTRY  # the registry is the one list of solver names
 
         if name not in REGISTRY:
             raise ValueError(f"{name!r} is not one of {sorted(REGISTRY)}")
@@ -934,7 +934,7 @@ def schema_text() -> str:
     return json.dumps(json_schema(), indent=1, sort_keys=True) + "\n"
 
 
-if __name__ == "__main__":  # python -m stickslip.config_models --write  (from the repository root)
+if __name__ == "__main__":  # python -m stickslip.pipeline.config_models --write  (from the repository root)
     if sys.argv[1:] == ["--write"]:
         SCHEMA_PATH.write_text(schema_text())
     else:
