@@ -2,7 +2,7 @@
 
 Every case is an override config merged over config/*.yaml and the small CI config, as a user's
 ``--configfile`` would be, or a broken claims file. The whole matrix goes through
-``stickslip.pipeline.config.validate_config`` in-process - the one function the Snakefile calls at parse time - and
+``stickslip.pipeline.config.validate_config`` in-process - what the Snakefile calls at parse time - and
 a few cases of each kind also run the real pipeline (not a dry run) on a copy of the project: it must fail
 at parse time, print the offending key, and leave no ``results/`` behind. Run with ``-s`` to see each
 input and the last lines of its message.

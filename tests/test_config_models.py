@@ -25,7 +25,8 @@ def test_repository_configs_validate(test):
 
 def test_committed_schema_is_the_generated_one():
     assert (ROOT / SCHEMA_PATH).read_text() == schema_text(), (
-        "workflow/schemas/config.schema.json is stale: run `python -m stickslip.pipeline.config_models --write`"
+        "workflow/schemas/config.schema.json is stale: "
+        "run `python -m stickslip.pipeline.config_models --write`"
     )
 
 

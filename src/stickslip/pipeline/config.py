@@ -1,7 +1,7 @@
 """The pipeline's configuration, checked in one place before any job runs.
 
 ``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
-the typed models of ``stickslip.pipeline.config_models`` (types, physical ranges, finite numbers, unknown keys), then
+the typed models of ``config_models`` (types, physical ranges, finite numbers, unknown keys), then
 what a model alone cannot see (names that refer to other sections, solver settings, every scene's model,
 the friction table), each error naming the offending config key.
 """

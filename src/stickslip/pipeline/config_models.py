@@ -2,7 +2,7 @@
 
 Every mapping forbids unknown keys, every number must be finite (no NaN or inf), bounds are physical
 (masses, stiffnesses, durations > 0), and an error names the full key (``onedof.scenes.fig02.params.mass``).
-``stickslip.pipeline.config.validate_config`` validates the merged Snakemake config against ``PipelineConfig`` and
+``stickslip.pipeline.config.validate_config`` validates the merged config against ``PipelineConfig`` and
 then resolves what a model alone cannot (names that refer to other sections, solver settings, files).
 The JSON schema in ``workflow/schemas/config.schema.json`` is generated from these models
 (``python -m stickslip.pipeline.config_models --write``; a test checks it is current), never written by hand.
