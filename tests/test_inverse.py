@@ -1,4 +1,4 @@
-"""Inverse study (issue 14): forward-model equivalence with the claims' metrics, identifiability, infeasible
+"""Inverse study: forward-model equivalence with the claims' metrics, identifiability, infeasible
 runs, the mu_k extension, and recovery of known parameters from numbers the project itself generates."""
 
 from __future__ import annotations
