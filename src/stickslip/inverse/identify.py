@@ -15,7 +15,8 @@ that is pinned. What the reported numbers identify is decided here by the data's
    exceeds the smallest value seen on the profile by ``threshold`` (default 1: one reading precision on one
    number, the precision every residual is scaled by) or the parameter bounds are reached (config
    ``inverse.bounds`` and the plateau constraint; the last point is evaluated on the bound). An infeasible
-   set (a number the run cannot produce) ends the profile.
+   set (a number the run cannot produce) ends the profile. A direction flat by construction (structural, or
+   beyond the number of numbers) is evaluated on the bounds first and stepped only where that fails.
 3. *Ridge*: a direction whose profile stays within the threshold up to the bounds on both sides, or one
    of zero first-order sensitivity because the figure has fewer numbers than identifiable coordinates (m
    numbers fix at most m directions; the others lie in a valley that may curve away from a straight line,
@@ -120,13 +121,21 @@ def bound_step(problem: Problem, u0: np.ndarray, d: np.ndarray, sign: float) -> 
 
 
 def profile(
-    forward: Forward, u0: np.ndarray, d: np.ndarray, threshold: float, chi2_0: float, slope: float = 0.0
+    forward: Forward,
+    u0: np.ndarray,
+    d: np.ndarray,
+    threshold: float,
+    chi2_0: float,
+    slope: float = 0.0,
+    ends_first: bool = False,
 ) -> tuple:
     """(t_lower, t_upper, reached lower bound, reached upper bound, largest rise, evaluations) along d.
 
-    The first step on each side is where the linearisation predicts a rise of threshold / 4 (0.5 sqrt(
-    threshold) / slope, at least PROFILE_FIRST_STEP; without a slope an eighth of the way to the bound);
-    each further step doubles it, up to the bound.
+    The first step on each side is where the linearisation predicts a rise of half the threshold (sqrt(
+    threshold / 2) / slope, at least PROFILE_FIRST_STEP; without a slope an eighth of the way to the bound);
+    each further step doubles it, up to the bound. ``ends_first``: a direction already known to be flat
+    (structural, or beyond the number of reported numbers) is evaluated on each bound first; within the
+    threshold there, that side is done (no interior point), else it is stepped out as any other.
     """
     p = forward.problem
     seen = [chi2_0]
@@ -134,9 +143,18 @@ def profile(
     points = {0.0: chi2_0}
     for sign in (-1.0, 1.0):
         limit = bound_step(p, u0, d, sign) * (1 - 1e-9)
-        first = 0.5 * np.sqrt(threshold) / slope if slope > 0 and np.isfinite(slope) else limit / 8
+        first = np.sqrt(threshold / 2) / slope if slope > 0 and np.isfinite(slope) else limit / 8
         first = max(PROFILE_FIRST_STEP, float(first))
         t_in, hit = 0.0, limit <= 0.0
+        if ends_first and not hit:
+            c = _chi2(forward, u0 + sign * limit * d)
+            evals += 1
+            points[sign * limit] = c
+            if c <= min(seen) + threshold:
+                seen.append(c)
+                ends.append(sign * limit)
+                reached.append(True)
+                continue
         k = 0
         while not hit:
             t = min(first * 2.0**k, limit)
@@ -209,7 +227,8 @@ def identify(
         raise ValueError(f"{p.name}/{p.family}: the best fit is infeasible; nothing to profile")
     profiles = []
     for d, s, structural, unconstrained in directions(p, forward, u0, jacobian):
-        t_lo, t_hi, b_lo, b_hi, rise, evals = profile(forward, u0, d, threshold, chi2_0, s)
+        known_flat = structural or unconstrained
+        t_lo, t_hi, b_lo, b_hi, rise, evals = profile(forward, u0, d, threshold, chi2_0, s, known_flat)
         profiles.append(Profile(d, s, structural, unconstrained, t_lo, t_hi, b_lo, b_hi, rise, evals))
     return Identification(tuple(profiles), float(threshold), len(p.free))
 

@@ -134,7 +134,14 @@ class _Analysis:
 
 
 def analyse(r: dict) -> _Analysis:
-    """Ranges along the flat set for the parameters and combinations of one fitted problem."""
+    """Ranges along the flat set for the parameters and combinations of one fitted problem (computed once,
+    kept in ``r``)."""
+    if "analysis" not in r:
+        r["analysis"] = _analyse(r)
+    return r["analysis"]
+
+
+def _analyse(r: dict) -> _Analysis:
     p, fit, ident = r["problem"], r["fit"], r["identification"]
     v = np.asarray(fit.free_values, dtype=float)
     combos = p.combinations(v)
