@@ -94,6 +94,8 @@ table = summary.assign(**{"fitted (stated)": summary.apply(pairs, axis=1)})[
         "worst_residual",
         "worst_claim",
         "verdict",
+        "residual_noise",
+        "verdict_above_noise",
     ]
 ]
 display(
@@ -153,7 +155,8 @@ display(pd.DataFrame(rows).round(4).style.hide(axis="index"))
 # bounds puts within their reading precision (a set *conflicts* when the best fit to it alone still leaves a
 # residual above 1; *minimal*: none of its proper subsets conflicts). Subsets are searched by increasing size
 # up to the cap stated in each row; "worst residual" is the smallest worst |residual| any fit to the subset
-# reached.
+# reached, and "above_noise" whether its margin over 1 exceeds the residuals' numerical noise (their largest
+# change when the sample spacing is halved, at the figure's best fit).
 
 # %%
 display(Markdown(f"> {data['joint'].attrs['conflict_method']}"))

@@ -86,6 +86,7 @@ def test_a_parameter_on_a_ridge_is_a_range_never_a_point(study):
 
 def test_conflicts_csv_equals_the_datasets(study):
     rows = [r for r in csv.DictReader((study / "conflicts.csv").open()) if int(r["size"]) > 0]
+    assert rows and all(r["above_noise"] in ("0", "1", "") and r["residual_noise"] != "" for r in rows)
     from_csv = sorted((r["figure"], r["family"], r["claims"]) for r in rows)
     from_ds = []
     for path in sorted(study.glob("*.nc")):

@@ -74,18 +74,30 @@ def fit_problem(
     else:
         loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
+    noise = residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan
     return {
         "problem": problem,
         "fit": fit,
         "region": region,
         "loo": loo_r,
         "stated_residuals": stated_r,
+        "residual_noise": noise,
         "conflicts": search,
         "identification": ident,
         "fit_source": source,
         "forward": forward,
         "cpu": time.process_time() - t0,
     }
+
+
+def residual_noise(problem: Problem, free_values) -> float:
+    """Numerical noise of the residuals at a set: the largest change when the sample spacing is halved
+    (step halving of the time-series metrics). A verdict or conflict margin below it is not a result."""
+    dt = float(problem.run_settings["output_dt"])
+    coarse = Forward(problem).residuals(free_values)
+    fine = Forward(problem, {"output_dt": dt / 2}).residuals(free_values)
+    d = np.abs(fine - coarse)
+    return float(np.max(d[np.isfinite(d)])) if np.any(np.isfinite(d)) else np.nan
 
 
 def _pad(values: np.ndarray, free: tuple, fill=np.nan) -> np.ndarray:
@@ -618,7 +630,7 @@ def conflict_rows(name: str, results: dict[str, dict]) -> list[dict]:
         search = r["conflicts"]
         if search is None:
             continue
-        p = r["problem"]
+        p, noise = r["problem"], r["residual_noise"]
         base = {
             "figure": name,
             "family": fam,
@@ -632,6 +644,8 @@ def conflict_rows(name: str, results: dict[str, dict]) -> list[dict]:
                     "size": len(c.members),
                     "claims": " + ".join(p.observations[i].claim for i in c.members),
                     "worst_residual": round(c.worst, 3) if math.isfinite(c.worst) else "inf",
+                    "residual_noise": round(noise, 3) if math.isfinite(noise) else "",
+                    "above_noise": int(c.worst - 1.0 > noise) if math.isfinite(noise) else "",
                 }
             )
         if not search.conflicts:
@@ -666,6 +680,10 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             worst_claim=p.observations[k].claim,
             chi_square=round(fit.chi2, 3) if math.isfinite(fit.chi2) else "inf",
             verdict="consistent" if fit.consistent else "inconsistent",
+            residual_noise=round(r["residual_noise"], 3) if math.isfinite(r["residual_noise"]) else "",
+            verdict_above_noise=int(abs(fit.worst - 1.0) > r["residual_noise"])
+            if math.isfinite(r["residual_noise"]) and math.isfinite(fit.worst)
+            else "",
             fit_source=r["fit_source"],
             minimal_conflicts=len(search.conflicts) if search is not None else "",
         )
