@@ -160,7 +160,7 @@ display(pd.DataFrame(rows).round(4).style.hide(axis="index"))
 
 # %%
 display(Markdown(f"> {data['joint'].attrs['conflict_method']}"))
-display(conflicts.style.hide(axis="index"))
+display(conflicts.style.format(precision=3).hide(axis="index"))
 
 # %% [markdown]
 # ## 2. Residual of every reported number: stated parameters vs the best fit
