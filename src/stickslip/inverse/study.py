@@ -61,7 +61,10 @@ def fit_problem(
     search, source = None, "least squares"
     if conflicts and not fit.consistent:
         seeds = [fit.free_values, problem.stated_free] + (list(region.samples_free) if region else [])
-        search = minimal_conflicts(forward, seeds)
+        # a subset fit gets at most twice a full fit's iterations: the default build's CONFLICT_NFEV, fewer in
+        # a build whose fits are token ones (CI size)
+        nfev = min(CONFLICT_NFEV, 2 * int(settings["max_nfev"]))
+        search = minimal_conflicts(forward, seeds, max_nfev=nfev)
         if search.witness is not None:
             closest = problem.closest_equivalent(search.witness)
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
@@ -126,8 +129,8 @@ IDENTIFIABILITY_METHOD = (
 CONFLICT_METHOD = (
     "subsets of the figure's reported numbers by increasing size up to conflict_search_max_size; a subset "
     "conflicts when the best fit to it alone (least squares, "
-    f"{CONFLICT_NFEV} iterations, from the best witness) leaves a residual above 1; minimal: no conflicting "
-    "proper subset (stickslip.inverse.conflicts)"
+    f"at most {CONFLICT_NFEV} iterations, from the best witness) leaves a residual above 1; minimal: no "
+    "conflicting proper subset (stickslip.inverse.conflicts)"
 )
 
 
