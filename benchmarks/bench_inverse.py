@@ -1,9 +1,14 @@
-"""Cost of the inverse study (issue 14) in the default build: CPU seconds per stage, measured in one run.
+"""Cost of the inverse study in the default build: CPU seconds per stage, measured in one run.
 
-Target: the whole study (fits, sampling, misprint scans, datasets and corner plots) within 90 s of CPU, so the
-clean build keeps its 4 min budget. `--long` measures the long run (config `inverse.long: true`) instead.
+Target: the whole study (fits, sampling, identifiability profiles, conflict search, misprint scans, datasets
+and corner plots) within 90 s of CPU, so the clean build keeps its 4 min budget. `--long` measures the long
+run (config `inverse.long: true`) instead.
 
-usage: PYTHONPATH=src python benchmarks/bench_inverse.py [--long] [--out DIR]
+`--conflict-check` measures instead how much the minimal conflicting subsets depend on the optimiser's
+budget: each inconsistent figure's search is repeated with 10, 20 and 40 least-squares iterations per subset
+(fresh forward models, so no run is reused) and the sets are compared; exit 1 if they differ.
+
+usage: PYTHONPATH=src python benchmarks/bench_inverse.py [--long] [--out DIR] [--conflict-check]
 """
 
 import argparse
@@ -15,25 +20,56 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from stickslip.inverse.conflicts import minimal_conflicts
 from stickslip.inverse.forward import Forward
 from stickslip.inverse.outputs import write_study
 from stickslip.inverse.problem import build_problem, load_claim_rows
-from stickslip.inverse.study import run_study
+from stickslip.inverse.study import fit_problem, run_study, settings_of
 
 ROOT = Path(__file__).resolve().parents[1]
 BUDGET = 90.0
+
+
+def conflict_check(config, claims) -> int:
+    """Minimal conflicting subsets with 10, 20 and 40 iterations per subset fit: identical or not."""
+    settings = settings_of(config)
+    differ = 0
+    print(f"{'figure / family':28s} {'sets (nfev 10, 20, 40)':>24s} {'CPU [s]':>22s}  identical")
+    for name in config["inverse"]["figures"]:
+        for fam in config["inverse"]["families"]:
+            p = build_problem(config, claims, name, fam)
+            r = fit_problem(p, settings, settings["steps"], conflicts=False)
+            if r["fit"].consistent:
+                continue
+            seeds = [r["fit"].free_values, p.stated_free]
+            seeds += list(r["region"].samples_free) if r["region"] is not None else []
+            sets, cpu = [], []
+            for nfev in (10, 20, 40):
+                t0 = time.process_time()
+                search = minimal_conflicts(Forward(p), seeds, max_nfev=nfev)
+                cpu.append(time.process_time() - t0)
+                sets.append(sorted(c.members for c in search.conflicts) + [search.witness is not None])
+            same = sets[0] == sets[1] == sets[2]
+            differ += not same
+            counts = ", ".join(str(len(s) - 1) for s in sets)
+            print(f"{name + ' / ' + fam:28s} {counts:>24s} {', '.join(f'{c:.2f}' for c in cpu):>22s}  {same}")
+    print("identical for every figure" if not differ else f"{differ} figure(s) differ")
+    return int(differ > 0)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--long", action="store_true")
     ap.add_argument("--out", default=None)
+    ap.add_argument("--conflict-check", action="store_true")
     args = ap.parse_args()
     config = {}
     for name in ("config.yaml", "inverse.yaml"):
         config.update(yaml.safe_load((ROOT / "config" / name).read_text()))
     config["inverse"]["long"] = bool(args.long)
     claims = load_claim_rows(sorted(glob.glob(str(ROOT / "config" / "claims" / "*.yaml"))))
+    if args.conflict_check:
+        return conflict_check(config, claims)
 
     # cost of one forward evaluation (all runs of a problem), the unit everything else is made of
     rows = []

@@ -30,8 +30,12 @@
 #
 # **What can be identified at all.** Divided by M the equation of motion is
 # x'' + (C/M) x' + (K/M) x = −(μ_s N/M)(sgn v_r − σ v_r), so one figure can only ever fix K/M, C/M, μ_s N/M, σ
-# (and v_p). Every parameter set below is the one *closest to the stated set* among all sets with the same
-# motion. A sweep (Figs. 10–14) or the joint fit, where some runs fix a parameter, identifies more.
+# (and v_p). A sweep (Figs. 10–14) or the joint fit, where some runs fix a parameter, identifies more. What
+# the numbers *do* fix is measured, not assumed: χ² is profiled at the best fit along every direction (the
+# structural ones and the Jacobian's singular directions); a direction along which χ² stays within Δχ² = 1
+# (one reading precision) up to the parameter bounds is a **ridge**, and so is every direction beyond the
+# number of reported numbers. Identifiable dimensions = free parameters − ridges. A parameter that moves along
+# a ridge is given as the **range** it spans over the flat set, never as a point.
 #
 # **Verdict**: *consistent* when the best fit puts every number within its reading precision (|residual| ≤ 1).
 
@@ -46,6 +50,8 @@ from IPython.display import Image, Markdown, display
 from stickslip.io.netcdf import read_dataset
 
 summary = pd.read_csv("results/inverse/summary.csv")
+conflicts = pd.read_csv("results/inverse/conflicts.csv")
+numbers = pd.read_csv("results/inverse/numbers.csv")
 hypotheses = pd.read_csv("results/inverse/hypotheses.csv")
 ranking = pd.read_csv("results/inverse/ranking.csv")
 FIGURES = list(dict.fromkeys(summary["figure"]))
@@ -56,8 +62,9 @@ display(Markdown(f"Study run in **{settings['mode']}** mode: {settings}"))
 # %% [markdown]
 # ## 1. Per figure: are the reported numbers consistent under some parameter set?
 #
-# One row per figure and family: the best-fitting set (closest to the stated one), the stated set, the worst
-# residual (in reading-precision units) and which claim it belongs to.
+# One row per figure and family: the identifiable dimensions, the fitted parameters — a value where the
+# numbers pin it, the range `lo–hi` over the flat set where it lies on a ridge — with the stated value in
+# brackets, the worst residual (in reading-precision units) and which claim it belongs to.
 
 # %%
 params = ["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
@@ -68,8 +75,11 @@ def pairs(row):
     out = []
     for p in params:
         best, stated = row.get(f"best_{p}"), row.get(f"stated_{p}")
+        lo, hi = row.get(f"lower_{p}"), row.get(f"upper_{p}")
         if pd.notna(best):
             out.append(f"{symbols[p]} {best:.3g} ({stated:g})")
+        elif pd.notna(lo):
+            out.append(f"{symbols[p]} {lo:.3g}–{hi:.3g} ridge ({stated:g})")
     return ", ".join(out)
 
 
@@ -78,11 +88,14 @@ table = summary.assign(**{"fitted (stated)": summary.apply(pairs, axis=1)})[
         "figure",
         "family",
         "numbers",
+        "free_parameters",
         "identifiable_dimensions",
         "fitted (stated)",
         "worst_residual",
         "worst_claim",
         "verdict",
+        "residual_noise",
+        "verdict_above_noise",
     ]
 ]
 display(
@@ -94,6 +107,60 @@ display(
         axis=1,
     ).hide(axis="index")
 )
+
+# %% [markdown]
+# ### What the numbers identify: χ² profiles along every direction
+#
+# For each fit: the free parameters, the ridges by kind (*structural*: the same motion exactly;
+# *unconstrained*: beyond the number of reported numbers; *profiled*: a singular direction of the Jacobian
+# along which χ² stays within the threshold up to the bounds) and the identifiable dimensions that remain. The
+# method, as stored in every dataset:
+
+# %%
+display(Markdown(f"> {data['joint'].identifiable_dimensions.attrs['comment']}"))
+KINDS = {0: "structural", 1: "unconstrained", 2: "profiled"}
+rows = []
+for name in FIGURES:
+    ds = data[name]
+    for fam in ds.family.values:
+        sub = ds.sel(family=fam)
+        ridge = sub.direction_is_ridge.values == 1
+        kind = sub.direction_kind.values
+        flat_ranges = [
+            f"{symbols[p]} {float(sub[f'flat_lower_{p}']):.3g}–{float(sub[f'flat_upper_{p}']):.3g}"
+            for j, p in enumerate(params)
+            if int(sub.on_ridge.isel(parameter=j))
+        ]
+        rows.append(
+            {
+                "figure": name,
+                "family": str(fam),
+                "free": int(sub.free_parameters),
+                **{f"{k} ridges": int(np.sum(ridge & (kind == i))) for i, k in KINDS.items()},
+                "identifiable": sub.identifiable_dimensions.item(),
+                "largest rise on a profiled ridge": float(
+                    np.nanmax(np.where(ridge & (kind == 2), sub.profile_rise.values, np.nan), initial=np.nan)
+                )
+                if np.any(ridge & (kind == 2))
+                else np.nan,
+                "ranges over the flat set": ", ".join(flat_ranges),
+            }
+        )
+display(pd.DataFrame(rows).round(4).style.hide(axis="index"))
+
+# %% [markdown]
+# ### Which reported numbers contradict each other: minimal conflicting subsets
+#
+# For every inconsistent fit, the smallest sets of the figure's numbers that no parameter set within the
+# bounds puts within their reading precision (a set *conflicts* when the best fit to it alone still leaves a
+# residual above 1; *minimal*: none of its proper subsets conflicts). Subsets are searched by increasing size
+# up to the cap stated in each row; "worst residual" is the smallest worst |residual| any fit to the subset
+# reached, and "above_noise" whether its margin over 1 exceeds the residuals' numerical noise (their largest
+# change when the sample spacing is halved, at the figure's best fit).
+
+# %%
+display(Markdown(f"> {data['joint'].attrs['conflict_method']}"))
+display(conflicts.style.format(precision=3).hide(axis="index"))
 
 # %% [markdown]
 # ## 2. Residual of every reported number: stated parameters vs the best fit
@@ -158,7 +225,10 @@ loo.columns = [f"LOO {c}" for c in loo.columns]
 fitres = joint.residual.to_pandas().T
 fitres.columns = [f"fit {c}" for c in fitres.columns]
 frame = pd.concat([fitres, loo], axis=1)
-frame.insert(0, "reported", joint.reported.values)
+reported = numbers[(numbers.figure == "joint")].drop_duplicates("claim").set_index("claim")
+frame.insert(
+    0, "reported", [f"{reported.loc[c, 'reported']:g} {reported.loc[c, 'unit']}" for c in frame.index]
+)
 frame.insert(1, "figure", [str(f) for f in joint.claim_figure.values])
 display(frame.round(2))
 display(Markdown(f"Leave-one-out method: `{joint.loo_residual.attrs.get('comment', '')}`."))
@@ -217,11 +287,12 @@ display(Markdown("\n".join(lines)))
 # ## 5. The consistent regions (corner plots) and the sampler's diagnostics
 #
 # Samples of log10 of the free parameters (each the set closest to the stated one with its motion); red lines:
-# stated values, blue ×: best fit. The diagnostics say how far the chains can be trusted: emcee's integrated
-# autocorrelation time τ should be well below the chain length / 50 for a converged posterior. In the default
-# build the chains are short and the joint problem is not sampled at all (a cost limit; `inverse.long: true`
-# gives the long run) — there the spreads used in the ranking are the Laplace (Gauss-Newton) ones, and the
-# corner plots show where the walkers went, not a converged posterior.
+# stated values, blue ×: a best-fitting set (on a ridge, one member of it: see the ranges above). The
+# diagnostics say how far the chains can be trusted: emcee's integrated autocorrelation time τ should be well
+# below the chain length / 50 for a converged posterior. In the default build the chains are short and the
+# joint problem is not sampled at all (a cost limit; `inverse.long: true` gives the long run) — there the
+# spreads used in the ranking are the Laplace (Gauss-Newton) ones, and the corner plots show where the walkers
+# went, not a converged posterior.
 
 # %%
 rows = []
@@ -255,8 +326,13 @@ for name in settings.get("corner", []):  # the figures whose corner plots this b
 # %%
 lines = []
 for _, r in summary.iterrows():
+    sets = conflicts[
+        (conflicts.figure == r.figure) & (conflicts.family == r.family) & (conflicts["size"] > 0)
+    ]
+    clash = "; conflicting: " + " | ".join(sets.claims) if len(sets) else ""
     lines.append(
         f"* {r.figure} / {r.family}: **{r.verdict}** (worst |residual| {r.worst_residual} at "
-        f"{r.worst_claim}) — fitted {pairs(r)}"
+        f"{r.worst_claim}); {r.identifiable_dimensions} of {r.free_parameters} dimensions identifiable — "
+        f"fitted {pairs(r)}{clash}"
     )
 display(Markdown("\n".join(lines)))

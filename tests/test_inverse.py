@@ -1,4 +1,4 @@
-"""Inverse study (issue 14): forward-model equivalence with the claims' metrics, identifiability, infeasible
+"""Inverse study: forward-model equivalence with the claims' metrics, identifiability, infeasible
 runs, the mu_k extension, and recovery of known parameters from numbers the project itself generates."""
 
 from __future__ import annotations
@@ -184,3 +184,18 @@ def test_single_change_scan_finds_a_planted_misprint(config, claims):
     assert top.parameter == "stiffness" and top.reproduced >= len(p.observations) - 1
     assert 8.0 / 1.35 < top.value < 8.0 * 1.35
     assert stated_score(synthetic).reproduced < len(p.observations)
+
+
+def test_a_claim_dataset_is_looked_up_in_the_config_not_parsed(config, claims):
+    """A claim's dataset is a run only if the config's scenes or sweeps produce it: a scene dropped from
+    onedof.scenes makes its claims fail with the claim's key, not a silent guess from the path."""
+    from stickslip.inverse.problem import claim_run, runs_by_dataset
+    from stickslip.model.params import ParameterError
+
+    onedof = config["onedof"]
+    row = claims["s5_fig6_frequency"]
+    assert runs_by_dataset(onedof)[row["dataset"]] == ("scene", "fig06")
+    assert claim_run(row, onedof)[:2] == ("fig06", "frequency_peaks")
+    without = {**onedof, "scenes": {k: v for k, v in onedof["scenes"].items() if k != "fig06"}}
+    with pytest.raises(ParameterError, match=r"claim s5_fig6_frequency\.dataset: .* onedof\.scenes"):
+        claim_run(row, without)

@@ -1,4 +1,4 @@
-# Issue 14: the inverse study (a fit beside the claims table; it changes no pinned claim).
+# The inverse study (a fit beside the claims table; it changes no pinned claim).
 # `inverse.long: true` in config/inverse.yaml gives the long run (longer chains, exact leave-one-out refits).
 
 INVERSE_FIGURES = list(config["inverse"]["figures"]) + ["joint"]
@@ -14,6 +14,8 @@ rule inverse_study:
         summary="results/inverse/summary.csv",
         hypotheses="results/inverse/hypotheses.csv",
         ranking="results/inverse/ranking.csv",
+        numbers="results/inverse/numbers.csv",
+        conflicts="results/inverse/conflicts.csv",
         datasets=expand("results/inverse/{figure}.nc", figure=INVERSE_FIGURES),
         corner=expand(
             "results/inverse/corner/{figure}_{family}.png",

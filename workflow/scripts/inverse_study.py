@@ -1,4 +1,4 @@
-"""Thin wiring of rule inverse_study: run the whole inverse study (issue 14) and write results/inverse/."""
+"""Thin wiring of rule inverse_study: run the whole inverse study and write results/inverse/."""
 
 import glob
 from pathlib import Path

@@ -1,5 +1,5 @@
-"""Write the study: one netCDF per figure (atomic, with provenance), summary/hypotheses/ranking CSVs, corner
-plots of the sampled regions."""
+"""Write the study: one netCDF per figure (atomic, with provenance), summary / hypotheses / ranking / numbers
+/ conflicts CSVs, corner plots of the sampled regions."""
 
 from __future__ import annotations
 
@@ -36,14 +36,14 @@ def corner_plot(ds, family: str, path) -> Path:
     import matplotlib.pyplot as plt
 
     sub = ds.sel(family=family)
-    free = [str(p) for p in sub.parameter.values if np.isfinite(sub.best_fit.sel(parameter=p))]
-    samples = np.log10(np.column_stack([sub.samples.sel(parameter=p).values for p in free]))
+    free = [str(p) for p in sub.parameter.values if np.isfinite(sub[f"fit_point_{p}"])]
+    samples = np.log10(np.column_stack([sub[f"samples_{p}"].values for p in free]))
     samples = samples[np.all(np.isfinite(samples), axis=1)]
     labels = [f"log10 {sub.parameter_symbol.sel(parameter=p).item()}" for p in free]
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    stated = np.log10([float(sub.stated.sel(parameter=p)) for p in free])
-    best = np.log10([float(sub.best_fit.sel(parameter=p)) for p in free])
+    stated = np.log10([float(sub[f"stated_{p}"]) for p in free])
+    best = np.log10([float(sub[f"fit_point_{p}"]) for p in free])
     if len(samples) <= len(free):
         fig, ax = plt.subplots(figsize=(6, 2))
         steps = float(sub.chain_steps)
@@ -67,7 +67,7 @@ def corner_plot(ds, family: str, path) -> Path:
     verdict = "consistent" if int(sub.consistent) else "inconsistent"
     fig.suptitle(
         f"FIT {ds.attrs['figure']} / {family}: {verdict} (worst |residual| {float(sub.worst_residual):.2f})\n"
-        "red: stated, blue x: best fit",
+        "red: stated, blue x: a best-fitting set (on a ridge: one member of it)",
         fontsize=10,
     )
     fig.savefig(path, dpi=60)
@@ -85,11 +85,13 @@ def _ranges(samples, stated, best, margin=0.05):
 def write_study(out: dict, outdir) -> list[Path]:
     outdir = Path(outdir)
     written = []
-    scene = {"study": "inverse (issue 14)", "mode": out["settings"]["mode"]}
+    scene = {"study": "inverse", "mode": out["settings"]["mode"]}
     method = {
         "forward": "exact event-driven solver",
         "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
         "region": "emcee EnsembleSampler (seeded)",
+        "identifiability": "chi-square profiles along the flat and near-flat directions (identify)",
+        "conflicts": "minimal conflicting subsets by increasing size (conflicts)",
         **{k: v for k, v in out["settings"].items() if k != "mode"},
     }
     for name, ds in out["datasets"].items():
@@ -109,4 +111,6 @@ def write_study(out: dict, outdir) -> list[Path]:
     written.append(write_csv(out["summary"], outdir / "summary.csv"))
     written.append(write_csv(out["hypotheses"], outdir / "hypotheses.csv"))
     written.append(write_csv(out["ranking"], outdir / "ranking.csv"))
+    written.append(write_csv(out["numbers"], outdir / "numbers.csv"))
+    written.append(write_csv(out["conflicts"], outdir / "conflicts.csv"))
     return written

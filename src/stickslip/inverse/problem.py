@@ -19,7 +19,6 @@ all sets giving the same motion: stated + B w, with B an orthonormal basis of th
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -215,8 +214,22 @@ def _tolerance_sd(row: dict) -> tuple[float, str]:
     return sd, str(tol.get("reason", ""))
 
 
-_SCENE_PATH = re.compile(r"results/onedof/(?P<scene>[^/]+)/\{reading\}/exact\.nc$")
-_SWEEP_PATH = re.compile(r"results/onedof/sweeps/(?P<sweep>[^/]+)/\{reading\}\.nc$")
+def scene_dataset(scene: str) -> str:
+    """The dataset path a value claim names for a 1-DOF scene run by the exact solver (the pipeline's
+    ``onedof_path`` with the reading left as the claims' ``{reading}`` placeholder)."""
+    return f"results/onedof/{scene}/{{reading}}/exact.nc"
+
+
+def sweep_dataset(sweep: str) -> str:
+    """The dataset path a value claim names for a 1-DOF sweep (the pipeline's ``sweep_path``)."""
+    return f"results/onedof/sweeps/{sweep}/{{reading}}.nc"
+
+
+def runs_by_dataset(onedof: dict) -> dict[str, tuple[str, str]]:
+    """Dataset path -> ("scene" | "sweep", its name in onedof.scenes / onedof.sweeps), from the config."""
+    out = {scene_dataset(name): ("scene", name) for name in onedof["scenes"]}
+    out.update({sweep_dataset(name): ("sweep", name) for name in onedof.get("sweeps") or {}})
+    return out
 
 
 def _value_tag(value: float) -> str:
@@ -224,7 +237,8 @@ def _value_tag(value: float) -> str:
 
 
 def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
-    """(run name, metric, overrides relative to the defaults) of a value claim, from its dataset path."""
+    """(run name, metric, overrides relative to the defaults) of a value claim: its dataset looked up among
+    the datasets the config's scenes and sweeps produce (``runs_by_dataset``)."""
     where = f"claim {row['id']}"
     if row.get("kind") != "value":
         raise ParameterError(
@@ -233,19 +247,13 @@ def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
     if row.get("comparable", True) is False:
         raise ParameterError(f"{where}.comparable: false (the paper contradicts itself there); not fitted")
     path, variable = row["dataset"], row["variable"]
-    m = _SCENE_PATH.match(path)
-    if m:
-        scene = m["scene"]
-        if scene not in onedof["scenes"]:
-            raise ParameterError(f"{where}.dataset: scene {scene!r} is not in onedof.scenes")
+    kind, name = runs_by_dataset(onedof).get(path, (None, None))
+    if kind == "scene":
         if variable not in METRICS:
             raise ParameterError(f"{where}.variable: {variable!r} is not one of {METRICS}")
-        return scene, variable, dict(onedof["scenes"][scene].get("params", {}))
-    m = _SWEEP_PATH.match(path)
-    if m:
-        sweep = onedof["sweeps"].get(m["sweep"])
-        if sweep is None:
-            raise ParameterError(f"{where}.dataset: sweep {m['sweep']!r} is not in onedof.sweeps")
+        return name, variable, dict(onedof["scenes"][name].get("params", {}))
+    if kind == "sweep":
+        sweep = onedof["sweeps"][name]
         metric, _, tag = variable.rpartition("_at_")
         try:  # the paper's value is in the variable's name (0p9 = 0.9), whatever values a config sweeps
             value = float(tag.replace("p", "."))
@@ -256,8 +264,11 @@ def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
         param = sweep["parameter"]
         overrides = {param: value, **{k: f * value for k, f in (sweep.get("linked") or {}).items()}}
         base = dict(onedof["scenes"][sweep.get("scene", "fig02")].get("params", {}))
-        return f"{m['sweep']}:{param}={value:g}", metric, {**base, **overrides}
-    raise ParameterError(f"{where}.dataset: {path!r} is neither a 1-DOF scene nor a sweep dataset")
+        return f"{name}:{param}={value:g}", metric, {**base, **overrides}
+    raise ParameterError(
+        f"{where}.dataset: {path!r} is neither the exact-solver dataset of a scene in onedof.scenes "
+        f"({scene_dataset('<scene>')}) nor a sweep in onedof.sweeps ({sweep_dataset('<sweep>')})"
+    )
 
 
 def _bounds(cfg: dict) -> dict:

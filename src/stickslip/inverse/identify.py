@@ -1,0 +1,285 @@
+"""Identifiable dimensions from chi-square profiles along the flat and near-flat directions of a best fit.
+
+The numerical rank of a Jacobian says which directions change the residuals *at all*; it cannot tell a
+direction along which chi-square rises by 1e-6 over the whole physical range (a near-exact ridge) from one
+that is pinned. What the reported numbers identify is decided here by the data's own precision:
+
+1. *Directions* (unit vectors in log10 of the free parameters, at the best fit u0): the structural null
+   space of the problem (the orthogonal complement of ``Problem.identifiable_basis``: parameter sets with the
+   same motion, exact by the equation of motion) and, inside the identifiable subspace, the right-singular
+   vectors of the residual Jacobian in the identifiable coordinates (the optimiser's, else central
+   differences with step ``JACOBIAN_STEP`` in log10). Every direction is profiled, not only those of small
+   singular value.
+2. *Profile*: chi2(u0 + t d) at t = +-t1 * 2^k (t1 from the direction's slope, see ``profile``), stepping
+   out on each side until chi-square
+   exceeds the smallest value seen on the profile by ``threshold`` (default 1: one reading precision on one
+   number, the precision every residual is scaled by) or the parameter bounds are reached (config
+   ``inverse.bounds`` and the plateau constraint; the last point is evaluated on the bound). An infeasible
+   set (a number the run cannot produce) ends the profile. A direction flat by construction (structural, or
+   beyond the number of numbers) is evaluated on the bounds first and stepped only where that fails.
+3. *Ridge*: a direction whose profile stays within the threshold up to the bounds on both sides, or one
+   of zero first-order sensitivity because the figure has fewer numbers than identifiable coordinates (m
+   numbers fix at most m directions; the others lie in a valley that may curve away from a straight line,
+   so its profile alone would miss it). The number of identifiable dimensions is the number of free
+   parameters minus the number of ridges.
+
+Along the ridges a parameter is not a point: its *range* is the extent of the flat set within the bounds,
+a linear programme over the ridge directions (structural ridges free, a profiled one within its profiled
+interval; bounds and the plateau constraint sigma v_p <= 1 are linear in log10). Limits, stated where the
+results are: a profile is a straight line (a curved valley is followed along its tangent only), its grid
+doubles outward (a bump narrower than a step is not seen), and two profiled ridges are not checked jointly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import linprog
+
+from .forward import Forward
+from .problem import COMBINATIONS, Problem
+
+#: Delta chi-square of the data's precision: residuals are in reading-precision units, so 1 is one number
+#: moved by its full precision.
+PROFILE_THRESHOLD = 1.0
+#: Smallest first profile step [log10 units] (a factor 1.0116); each further step doubles it.
+PROFILE_FIRST_STEP = 0.005
+#: Central-difference step of the Jacobian in the identifiable coordinates [log10 units]: a factor 1.023,
+#: above the sampling granularity of the time-series metrics (0.01 s spacing), so steps see the slope.
+JACOBIAN_STEP = 0.01
+#: A parameter whose log10 extent over the flat set exceeds this is reported as a range, not a point.
+RANGE_MIN_WIDTH_LOG10 = 1e-6
+
+
+@dataclass(frozen=True)
+class Profile:
+    direction: np.ndarray
+    """Unit vector over the free parameters (log10)."""
+    singular_value: float
+    """Of the identifiable-coordinate Jacobian; 0 for a structural (exactly flat) direction."""
+    structural: bool
+    unconstrained: bool
+    """A direction beyond the number of reported numbers: no number constrains it to first order."""
+    t_lower: float
+    t_upper: float
+    """Interval of t [log10 units] around the best fit within the threshold (or to the bounds)."""
+    bound_lower: bool
+    bound_upper: bool
+    """True where the profile reached the parameter bounds within the threshold."""
+    rise: float
+    """Largest chi-square rise above the profile's minimum within [t_lower, t_upper]."""
+    evaluations: int
+
+    @property
+    def flat_to_bounds(self) -> bool:
+        return self.bound_lower and self.bound_upper
+
+    @property
+    def ridge(self) -> bool:
+        return self.flat_to_bounds or self.unconstrained
+
+
+@dataclass(frozen=True)
+class Identification:
+    profiles: tuple
+    threshold: float
+    free: int
+
+    @property
+    def ridges(self) -> int:
+        return sum(p.ridge for p in self.profiles)
+
+    @property
+    def dimensions(self) -> int:
+        return self.free - self.ridges
+
+    @property
+    def ridge_directions(self) -> list[Profile]:
+        return [p for p in self.profiles if p.ridge]
+
+
+def _chi2(forward: Forward, u: np.ndarray) -> float:
+    r = forward.residuals(10.0**u)
+    return float(r @ r) if np.all(np.isfinite(r)) else np.inf
+
+
+def bound_step(problem: Problem, u0: np.ndarray, d: np.ndarray, sign: float) -> float:
+    """Largest t >= 0 with u0 + sign t d within the bounds (box and, if set, sigma v_p <= 1)."""
+    lo, hi = problem.log_bounds
+    step = sign * d
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_hi = np.where(step > 0, (hi - u0) / step, np.inf)
+        t_lo = np.where(step < 0, (lo - u0) / step, np.inf)
+    t = float(max(0.0, min(np.min(t_hi), np.min(t_lo))))
+    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
+        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
+        slope, value = step[i] + step[j], u0[i] + u0[j]
+        if slope > 0:
+            t = min(t, max(0.0, -value / slope))
+    return t
+
+
+def profile(
+    forward: Forward,
+    u0: np.ndarray,
+    d: np.ndarray,
+    threshold: float,
+    chi2_0: float,
+    slope: float = 0.0,
+    ends_first: bool = False,
+) -> tuple:
+    """(t_lower, t_upper, reached lower bound, reached upper bound, largest rise, evaluations) along d.
+
+    The first step on each side is where the linearisation predicts a rise of half the threshold (sqrt(
+    threshold / 2) / slope, at least PROFILE_FIRST_STEP; without a slope an eighth of the way to the bound);
+    each further step doubles it, up to the bound. ``ends_first``: a direction already known to be flat
+    (structural, or beyond the number of reported numbers) is evaluated on each bound first; within the
+    threshold there, that side is done (no interior point), else it is stepped out as any other.
+    """
+    p = forward.problem
+    seen = [chi2_0]
+    ends, reached, evals = [], [], 0
+    points = {0.0: chi2_0}
+    for sign in (-1.0, 1.0):
+        limit = bound_step(p, u0, d, sign) * (1 - 1e-9)
+        first = np.sqrt(threshold / 2) / slope if slope > 0 and np.isfinite(slope) else limit / 8
+        first = max(PROFILE_FIRST_STEP, float(first))
+        t_in, hit = 0.0, limit <= 0.0
+        if ends_first and not hit:
+            c = _chi2(forward, u0 + sign * limit * d)
+            evals += 1
+            points[sign * limit] = c
+            if c <= min(seen) + threshold:
+                seen.append(c)
+                ends.append(sign * limit)
+                reached.append(True)
+                continue
+        k = 0
+        while not hit:
+            t = min(first * 2.0**k, limit)
+            c = _chi2(forward, u0 + sign * t * d)
+            evals += 1
+            points[sign * t] = c
+            seen.append(c)
+            if not (c <= min(seen) + threshold):
+                break
+            t_in = t
+            if t >= limit:
+                hit = True
+            k += 1
+        ends.append(sign * t_in)
+        reached.append(hit)
+    floor = min(seen)
+    inside = [c for t, c in points.items() if ends[0] <= t <= ends[1] and np.isfinite(c)]
+    rise = max(inside) - floor if inside else np.nan
+    # a later, lower minimum can leave earlier points above the threshold: the interval is then the
+    # connected run around the best fit, as stepped; ``rise`` reports how flat it was
+    return ends[0], ends[1], reached[0], reached[1], float(rise), evals
+
+
+def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None) -> list[tuple]:
+    """(unit direction, singular value, structural, unconstrained) for every direction of the free log10
+    space; unconstrained: beyond the rank the number of reported numbers allows.
+
+    ``jacobian``: d residual / d log10(free parameter) at a set with the same motion (e.g. the optimiser's);
+    without one (or with a non-finite one) it is taken by central differences here.
+    """
+    basis = problem.identifiable_basis()
+    n, k = basis.shape
+    out = []
+    if k < n:  # structural null space: the complement of the identifiable basis
+        _, _, vt = np.linalg.svd(basis.T, full_matrices=True)
+        for v in vt[k:]:
+            out.append((_signed(v), 0.0, True, False))
+    cols = []
+    for j in range(k):
+        e = basis[:, j] * JACOBIAN_STEP
+        cols.append(
+            (forward.residuals(10.0 ** (u0 + e)) - forward.residuals(10.0 ** (u0 - e))) / (2 * JACOBIAN_STEP)
+        )
+    jw = np.array(cols).T if cols else np.zeros((len(problem.observations), 0))
+    if not np.all(np.isfinite(jw)):  # a neighbour infeasible: the coordinate axes themselves are profiled
+        out += [(_signed(basis[:, j]), np.nan, False, False) for j in range(k)]
+        return out
+    _, s, vt = np.linalg.svd(jw, full_matrices=True)
+    m = len(s)  # min(numbers, k): directions m.. k-1 have no singular value at all
+    s = np.concatenate([s, np.zeros(k - m)])
+    for j in np.argsort(s, kind="stable"):  # weakest first
+        out.append((_signed(basis @ vt[j]), float(s[j]), False, bool(j >= m)))
+    return out
+
+
+def _signed(v: np.ndarray) -> np.ndarray:
+    v = np.asarray(v, dtype=float) / np.linalg.norm(v)
+    return v * np.sign(v[np.argmax(np.abs(v))])
+
+
+def identify(
+    forward: Forward, free_values, threshold: float = PROFILE_THRESHOLD, jacobian=None
+) -> Identification:
+    """Profile chi-square along every direction at ``free_values`` (a best fit); see the module text.
+    ``jacobian``: the optimiser's, if at hand (see ``directions``)."""
+    p = forward.problem
+    u0 = np.log10(np.asarray(free_values, dtype=float))
+    chi2_0 = _chi2(forward, u0)
+    if not np.isfinite(chi2_0):
+        raise ValueError(f"{p.name}/{p.family}: the best fit is infeasible; nothing to profile")
+    profiles = []
+    for d, s, structural, unconstrained in directions(p, forward, u0, jacobian):
+        known_flat = structural or unconstrained
+        t_lo, t_hi, b_lo, b_hi, rise, evals = profile(forward, u0, d, threshold, chi2_0, s, known_flat)
+        profiles.append(Profile(d, s, structural, unconstrained, t_lo, t_hi, b_lo, b_hi, rise, evals))
+    return Identification(tuple(profiles), float(threshold), len(p.free))
+
+
+def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.ndarray) -> np.ndarray:
+    """(lower, upper) log10 change of each row . u over the flat set (LP over the ridge directions).
+
+    ``rows`` are linear functionals over the free log10 parameters (a unit row: a parameter; a
+    combination's exponents: that combination). Without ridges every extent is (0, 0).
+    """
+    rows = np.atleast_2d(np.asarray(rows, dtype=float))
+    ridges = ident.ridge_directions
+    if not ridges:
+        return np.zeros((len(rows), 2))
+    u0 = np.log10(np.asarray(free_values, dtype=float))
+    d = np.column_stack([r.direction for r in ridges])
+    lo, hi = problem.log_bounds
+    a_ub, b_ub = [d, -d], [hi - u0, u0 - lo]
+    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
+        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
+        a_ub.append((d[i] + d[j])[None, :])
+        b_ub.append(np.array([-(u0[i] + u0[j])]))
+    a_ub, b_ub = np.vstack(a_ub), np.concatenate(b_ub)
+    box = [(None, None) if r.structural else (r.t_lower, r.t_upper) for r in ridges]
+    out = np.zeros((len(rows), 2))
+    for n, row in enumerate(rows):
+        c = row @ d
+        for col, sign in ((0, 1.0), (1, -1.0)):
+            res = linprog(sign * c, A_ub=a_ub, b_ub=np.maximum(b_ub, 0.0), bounds=box, method="highs")
+            out[n, col] = sign * res.fun if res.status == 0 else np.nan
+    return out
+
+
+def parameter_ranges(problem: Problem, free_values, ident: Identification) -> tuple[np.ndarray, np.ndarray]:
+    """(lower, upper) of each free parameter over the flat set (equal to the best fit where pinned)."""
+    v = np.asarray(free_values, dtype=float)
+    ext = flat_extent(problem, v, ident, np.eye(len(problem.free)))
+    return v * 10.0 ** ext[:, 0], v * 10.0 ** ext[:, 1]
+
+
+def combination_rows(problem: Problem) -> dict[str, np.ndarray]:
+    """log10 exponents of each combination over the free parameters (fixed parameters are constants)."""
+    return {
+        name: np.array([float(combo.get(p, 0)) for p in problem.free])
+        for name, combo in COMBINATIONS.items()
+        if any(p in problem.free for p in combo)
+    }
+
+
+def on_ridge(lower, upper) -> np.ndarray:
+    """True where a value moves along the flat set (reported as a range, never as a point)."""
+    lower, upper = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.log10(upper / lower) > RANGE_MIN_WIDTH_LOG10

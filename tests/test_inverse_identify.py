@@ -1,0 +1,204 @@
+"""Identifiable dimensions from chi-square profiles (exact and near-exact ridges), parameter ranges along the
+ridges, and minimal conflicting subsets of a figure's reported numbers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from stickslip.inverse.conflicts import minimal_conflicts
+from stickslip.inverse.forward import Forward
+from stickslip.inverse.identify import PROFILE_THRESHOLD, identify, on_ridge, parameter_ranges
+from stickslip.inverse.problem import build_problem, load_claim_rows
+from stickslip.inverse.study import fit_problem, settings_of
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def config():
+    cfg = {}
+    for name in ("config.yaml", "inverse.yaml"):
+        cfg.update(yaml.safe_load((ROOT / "config" / name).read_text()))
+    return cfg
+
+
+@pytest.fixture(scope="module")
+def claims():
+    return load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+
+
+@pytest.fixture(scope="module")
+def fig02(config, claims):
+    """Fig. 2 under the consistent reading, fitted as the study fits it (default settings)."""
+    problem = build_problem(config, claims, "fig02", "consistent")
+    return fit_problem(problem, settings_of(config), steps=0, conflicts=False)
+
+
+def _chi2(forward, values):
+    r = forward.residuals(values)
+    return float(r @ r)
+
+
+def test_fig02_dimensions_agree_with_a_chi2_profile_along_the_damping(fig02):
+    """Method: chi-square at the best fit is profiled along every direction (structural null space and the
+    Jacobian's singular directions); a direction within delta chi2 = 1 up to the bounds is a ridge. For Fig. 2
+    (12 numbers, 6 free parameters) that leaves 4 identifiable dimensions. The count is checked against two
+    profiles through the damping C computed here independently:
+
+    * C alone (every other parameter at the best fit) from 0.5 to 5 N s/mm: chi-square rises far above the
+      threshold, so C/M is pinned and no ridge runs along C alone;
+    * C with K, M and N scaled by the same factor (K/M, C/M, mu_s N/M unchanged) from 0.5 to 5 N s/mm:
+      chi-square is constant to round-off, an exact ridge. It is one of the two ridges the profiles find, and
+      C is reported as a range covering 0.5-5, not as a point.
+    """
+    p, forward, fit = fig02["problem"], Forward(fig02["problem"]), fig02["fit"]
+    ident = fig02["identification"]
+    assert ident.dimensions == 4 and ident.ridges == 2
+    assert all(r.structural for r in ident.ridge_directions)
+
+    best = fit.free_values
+    chi2_best = _chi2(forward, best)
+    i_c = p.free.index("damping")
+    alone = []
+    for c in np.geomspace(0.5, 5.0, 7):
+        v = best.copy()
+        v[i_c] = c
+        r = forward.residuals(v)
+        alone.append(float(r @ r) if np.all(np.isfinite(r)) else np.inf)
+    assert max(alone) - chi2_best > 100 * PROFILE_THRESHOLD
+
+    mask = np.array([q in ("damping", "stiffness", "mass", "normal_force") for q in p.free])
+    ridge = []
+    for c in np.geomspace(0.5, 5.0, 7):
+        f = c / best[i_c]
+        v = best * np.where(mask, f, 1.0)
+        assert p.in_bounds(v)
+        ridge.append(_chi2(forward, v))
+    assert np.ptp(ridge + [chi2_best]) < 1e-9 * max(chi2_best, 1.0)
+
+    # the scaling direction lies in the span of the ridges the profiles found
+    d = mask / np.linalg.norm(mask.astype(float))
+    span = np.column_stack([r.direction for r in ident.ridge_directions])
+    coef, *_ = np.linalg.lstsq(span, d, rcond=None)
+    assert np.linalg.norm(span @ coef - d) < 1e-9
+
+    lower, upper = parameter_ranges(p, best, ident)
+    flat = on_ridge(lower, upper)
+    assert flat[i_c] and lower[i_c] <= 0.5 and upper[i_c] >= 5.0
+    assert not flat[p.free.index("sigma")]  # sigma is on no ridge: a point, with lower == upper
+    assert lower[p.free.index("sigma")] == pytest.approx(best[p.free.index("sigma")], rel=1e-12)
+
+
+class Linear:
+    """A forward model stand-in: residuals linear in log10 of the free parameters, r = A (u - u*)."""
+
+    def __init__(self, problem, a, u_star):
+        self.problem, self.a, self.u_star = problem, np.asarray(a, float), np.asarray(u_star, float)
+        self.evaluations = 0
+
+    def residuals(self, values):
+        self.evaluations += 1
+        return self.a @ (np.log10(np.asarray(values, float)) - self.u_star)
+
+
+def _linear_problem(config, claims, singular_values, numbers=6, seed=0):
+    """A figure problem whose residuals have the given singular values in its identifiable coordinates."""
+    from stickslip.inverse.problem import with_observations
+
+    p = build_problem(config, claims, "fig02", "consistent")
+    p = with_observations(p, p.observations[:numbers])
+    basis = p.identifiable_basis()
+    rng = np.random.default_rng(seed)
+    q_left, _ = np.linalg.qr(rng.standard_normal((numbers, numbers)))
+    q_right, _ = np.linalg.qr(rng.standard_normal((basis.shape[1], basis.shape[1])))
+    s = np.zeros((numbers, basis.shape[1]))
+    s[np.arange(len(singular_values)), np.arange(len(singular_values))] = singular_values
+    a = q_left @ s @ q_right.T @ basis.T
+    return p, Linear(p, a, np.log10(p.stated_free))
+
+
+def test_a_near_exact_ridge_is_seen_where_the_numerical_rank_is_full(config, claims):
+    """Singular values 20, 20, 10 and 1e-4 in the 4 identifiable coordinates: the Jacobian has full numerical
+    rank 4, but chi-square rises by ~1e-8 over the bounds along the weakest direction: a ridge. With the 2
+    structural ones, 6 - 3 = 3 identifiable dimensions."""
+    p, forward = _linear_problem(config, claims, [20.0, 20.0, 10.0, 1e-4])
+    basis = p.identifiable_basis()
+    assert np.linalg.matrix_rank(forward.a @ basis) == 4
+    ident = identify(forward, p.stated_free)
+    assert ident.dimensions == 3
+    flat = [r for r in ident.ridge_directions if not r.structural]
+    assert len(flat) == 1 and flat[0].singular_value == pytest.approx(1e-4, rel=1e-3)
+    assert flat[0].rise < 1e-6
+
+
+def test_a_moderate_direction_is_identifiable(config, claims):
+    """Singular value 2 per log10 unit: a rise of 1 within half a decade, inside the bounds: pinned."""
+    p, forward = _linear_problem(config, claims, [20.0, 20.0, 10.0, 2.0])
+    ident = identify(forward, p.stated_free)
+    assert ident.dimensions == 4
+    weakest = min((r for r in ident.profiles if not r.structural), key=lambda r: r.singular_value)
+    assert not weakest.ridge and 0.2 < weakest.t_upper - weakest.t_lower < 2.0
+
+
+def test_fewer_numbers_than_identifiable_coordinates_leave_ridges(config, claims):
+    """Two numbers fix at most two directions: of the 4 identifiable coordinates two are unconstrained."""
+    p, forward = _linear_problem(config, claims, [20.0, 10.0], numbers=2)
+    ident = identify(forward, p.stated_free)
+    assert ident.dimensions == 2
+    assert sum(r.unconstrained for r in ident.profiles) == 2
+
+
+class Planted:
+    """Residuals of five numbers in log10 of sigma (index 0) and C (index 1): numbers 0 and 1 want sigma
+    two precisions apart (conflict as a pair), number 2 is 5 precisions off whatever the parameters
+    (conflicts alone), numbers 3 and 4 are satisfiable with anything else."""
+
+    def __init__(self, problem):
+        self.problem, self.evaluations = problem, 0
+        self.u0 = np.log10(problem.stated_free)
+
+    def residuals(self, values):
+        self.evaluations += 1
+        u = np.log10(np.asarray(values, float)) - self.u0
+        return np.array([u[0] / 0.01, (u[0] - 0.04) / 0.01, 5.0, u[1] / 0.05, (u[0] + u[1] - 0.01) / 0.05])
+
+
+def test_minimal_conflicts_are_the_planted_ones(config, claims):
+    from stickslip.inverse.problem import with_observations
+
+    p = build_problem(config, claims, "fig02", "consistent")
+    p = with_observations(p, p.observations[:5])
+    forward = Planted(p)
+    search = minimal_conflicts(forward, [p.stated_free], max_size=5)
+    found = sorted(c.members for c in search.conflicts)
+    assert found == [(0, 1), (2,)]
+    assert search.complete and search.witness is None
+    pair = next(c for c in search.conflicts if c.members == (0, 1))
+    assert pair.worst == pytest.approx(2.0, abs=0.05)  # the best compromise: each number 2 precisions off
+
+    capped = minimal_conflicts(Planted(p), [p.stated_free], max_size=1)
+    assert [c.members for c in capped.conflicts] == [(2,)] and not capped.complete
+
+
+class Satisfiable(Planted):
+    """Numbers 0, 3 and 4 of ``Planted`` only: one parameter set satisfies them all."""
+
+    def residuals(self, values):
+        return super().residuals(values)[[0, 3, 4]]
+
+
+def test_a_satisfiable_figure_has_no_conflict_and_a_witness(config, claims):
+    from stickslip.inverse.problem import with_observations
+
+    p = build_problem(config, claims, "fig02", "consistent")
+    p = with_observations(p, p.observations[:3])
+    forward = Satisfiable(p)
+    start = p.stated_free * np.array([1.5, 1, 1, 1, 1, 1])  # every number off by ~18 precisions
+    assert np.max(np.abs(forward.residuals(start))) > 1
+    search = minimal_conflicts(forward, [start], max_size=3)
+    assert search.conflicts == () and search.witness is not None
+    assert np.all(np.abs(forward.residuals(search.witness)) <= 1.0)

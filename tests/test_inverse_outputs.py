@@ -1,0 +1,115 @@
+"""The inverse study's files: every variable of every dataset has UDUNITS units, a parameter on a ridge is a
+range (never a point), and the minimal conflicting subsets in the datasets equal those in conflicts.csv."""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from stickslip.inverse.outputs import write_study
+from stickslip.inverse.problem import PARAMS, load_claim_rows
+from stickslip.inverse.study import run_study
+from stickslip.io.netcdf import read_dataset
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def unitless_variables(path: Path) -> list[str]:
+    """Variables of a dataset without a UDUNITS-2 ``units`` attribute (string labels are not quantities:
+    CF 3.1 asks units of numeric variables only)."""
+    from cf_units import Unit
+
+    bad = []
+    with xr.open_dataset(path) as ds:
+        for name, var in ds.variables.items():
+            if var.dtype.kind in "OSU":
+                continue
+            units = var.attrs.get("units")
+            try:
+                Unit(units)
+            except (TypeError, ValueError):
+                bad.append(f"{path.name}:{name}: {units!r}")
+            if not units:
+                bad.append(f"{path.name}:{name}: no units")
+    return bad
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    """Figs. 12-13 and the joint problem at CI size (config/test/inverse.yaml), written as the rule writes."""
+    from stickslip.config import merge
+
+    config = {}
+    for name in ("config.yaml", "inverse.yaml"):
+        config.update(yaml.safe_load((ROOT / "config" / name).read_text()))
+    test = yaml.safe_load((ROOT / "config" / "test" / "inverse.yaml").read_text())
+    config["inverse"] = merge(config["inverse"], test["inverse"])
+    config["inverse"]["settings"]["default"]["corner"] = []
+    claims = load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+    out = run_study(config, claims, figures=["fig12"], families=["consistent"])
+    target = tmp_path_factory.mktemp("inverse")
+    write_study(out, target)
+    return target
+
+
+def test_every_variable_of_every_inverse_dataset_has_units(study):
+    paths = sorted(study.glob("*.nc"))
+    assert [p.stem for p in paths] == ["fig12", "joint"]
+    assert not [b for p in paths for b in unitless_variables(p)]
+
+
+def test_a_parameter_on_a_ridge_is_a_range_never_a_point(study):
+    with read_dataset(study / "fig12.nc") as ds:
+        checked = 0
+        for fam in ds.family.values:
+            sub = ds.sel(family=fam)
+            for j, param in enumerate(PARAMS):
+                if not np.isfinite(sub[f"fit_point_{param}"]):
+                    continue  # not free in this fit
+                lo, hi = float(sub[f"flat_lower_{param}"]), float(sub[f"flat_upper_{param}"])
+                if int(sub.on_ridge.isel(parameter=j)):
+                    assert np.isnan(sub[f"best_fit_{param}"]) and lo < hi
+                    checked += 1
+                else:
+                    assert float(sub[f"best_fit_{param}"]) == pytest.approx(lo, rel=1e-9)
+        assert checked > 0  # Figs. 12-13 (two numbers) leave ridges
+    rows = list(csv.DictReader((study / "summary.csv").open()))
+    for row in rows:
+        for param in PARAMS:
+            assert not (row.get(f"best_{param}") and row.get(f"lower_{param}")), (row["figure"], param)
+
+
+def test_conflicts_csv_equals_the_datasets(study):
+    rows = [r for r in csv.DictReader((study / "conflicts.csv").open()) if int(r["size"]) > 0]
+    assert rows and all(r["above_noise"] in ("0", "1", "") and r["residual_noise"] != "" for r in rows)
+    from_csv = sorted((r["figure"], r["family"], r["claims"]) for r in rows)
+    from_ds = []
+    for path in sorted(study.glob("*.nc")):
+        with read_dataset(path) as ds:
+            for fam in ds.family.values:
+                sub = ds.sel(family=fam)
+                for k in range(sub.sizes["conflict"]):
+                    members = [
+                        str(c) for c, m in zip(ds.claim.values, sub.conflict_member.isel(conflict=k)) if m
+                    ]
+                    if members:
+                        assert len(members) == int(sub.conflict_size.isel(conflict=k))
+                        from_ds.append((path.stem, str(fam), " + ".join(members)))
+    assert from_csv == sorted(from_ds)
+    numbers = list(csv.DictReader((study / "numbers.csv").open()))
+    assert {r["unit"] for r in numbers if r["figure"] == "fig12"} == {"Hz"}
+
+
+@pytest.mark.pipeline
+def test_every_dataset_of_a_build_under_results_inverse_has_units(tmp_path_factory):
+    """The same check on the datasets a whole (small) build wrote."""
+    from project_run import shared_small_run
+
+    paths = sorted((shared_small_run(tmp_path_factory) / "results" / "inverse").glob("*.nc"))
+    assert len(paths) >= 2
+    assert not [b for p in paths for b in unitless_variables(p)]
