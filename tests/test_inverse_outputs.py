@@ -42,7 +42,7 @@ def unitless_variables(path: Path) -> list[str]:
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
     """Figs. 12-13 and the joint problem at CI size (config/test/inverse.yaml), written as the rule writes."""
-    from stickslip.config import merge
+    from stickslip.pipeline.config import merge
 
     config = {}
     for name in ("config.yaml", "inverse.yaml"):

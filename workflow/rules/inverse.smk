@@ -31,7 +31,7 @@ rule inverse_study:
         CONDA_ENV
     params:
         config={
-            "onedof": {k: ONEDOF[k] for k in ("defaults", "scenes", "sweeps")},
+            "onedof": {k: ONEDOF[k] for k in ("baseline", "defaults", "scenes", "sweeps")},
             "inverse": config["inverse"],
         },
     script:

@@ -263,7 +263,7 @@ def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
             raise ParameterError(f"{where}.variable: {variable!r} is not <metric>_at_<sweep value>")
         param = sweep["parameter"]
         overrides = {param: value, **{k: f * value for k, f in (sweep.get("linked") or {}).items()}}
-        base = dict(onedof["scenes"][sweep.get("scene", "fig02")].get("params", {}))
+        base = dict(onedof["scenes"][sweep.get("scene") or onedof["baseline"]["scene"]].get("params", {}))
         return f"{name}:{param}={value:g}", metric, {**base, **overrides}
     raise ParameterError(
         f"{where}.dataset: {path!r} is neither the exact-solver dataset of a scene in onedof.scenes "
