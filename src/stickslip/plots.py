@@ -1,7 +1,7 @@
 """Figures of the reproduced results (presentation only: reads datasets, draws).
 
 The claims-table helpers the notebooks use (``claims_frame``, ``styled_claims``, ``status_counts``,
-``reported_value``, ``claims_readings``) live in ``stickslip.notebook``; importing them from here still works.
+``reported_value``, ``claims_readings``) live in ``stickslip.notebook``.
 """
 
 from __future__ import annotations
@@ -518,15 +518,3 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
         fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     return fig
-
-
-#: Names moved to stickslip.notebook, still importable from here.
-_MOVED_TO_NOTEBOOK = ("claims_readings", "claims_frame", "styled_claims", "status_counts", "reported_value")
-
-
-def __getattr__(name):
-    if name in _MOVED_TO_NOTEBOOK:
-        from stickslip import notebook
-
-        return getattr(notebook, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
