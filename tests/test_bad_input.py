@@ -488,6 +488,32 @@ def test_claims_rows_that_contradict_the_config_or_the_pins_are_rejected(case, t
         assert word in str(info.value), f"{case}: message does not name {word!r}: {info.value}"
 
 
+def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_path):
+    from stickslip.io.netcdf import run_dataset_variables
+    from stickslip.pipeline.catalogue import onedof_catalogue
+
+    (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump([_with(VALUE_ROW, variable="max_displacment")]))
+    claims = load_claims([tmp_path / "zz_broken.yaml"])
+    catalogue = onedof_catalogue(base_config()["onedof"])
+    with pytest.raises(ClaimsError, match=r"zz_broken.yaml: claim zz_value: variable: 'max_displacment'"):
+        check_claims(
+            claims,
+            ["consistent_caption"],
+            producible=lambda path: True,
+            variables_of=lambda path: run_dataset_variables() if path in catalogue else None,
+        )
+
+
+def test_every_variable_a_run_dataset_holds_is_in_the_registry():
+    from stickslip.io.netcdf import run_dataset_variables
+    from stickslip.studies.onedof import scene_run_dataset
+    from stickslip.studies.specs import run_spec
+
+    ds = scene_run_dataset(run_spec(base_config(), "fig02", "consistent_caption", "exact"))
+    assert set(map(str, ds.data_vars)) <= run_dataset_variables()
+    assert "max_displacement" in ds and "belt_velocity" in ds
+
+
 def test_a_deleted_claims_file_names_the_ids_it_lost():
     files = sorted((ROOT / "config" / "claims").glob("*.yaml"))
     kept = [f for f in files if f.name != "section_06_deceleration.yaml"]

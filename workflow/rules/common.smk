@@ -7,6 +7,7 @@ from pathlib import Path
 
 from stickslip.pipeline.config import drop_removed, validate_config
 from stickslip.io.claims import ClaimsError, check_claims, load_claims, required_datasets
+from stickslip.io.netcdf import run_dataset_variables
 from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
 from stickslip.studies.specs import dense_map
@@ -106,7 +107,13 @@ def check_inputs_producible(rules):
     def producible(path):
         return any(o.match(path) for _, o in outputs)
 
-    check_claims(CLAIMS, config["claims"]["readings"], producible=producible)
+    run_variables = run_dataset_variables()
+    check_claims(
+        CLAIMS,
+        config["claims"]["readings"],
+        producible=producible,
+        variables_of=lambda path: run_variables if path in ONEDOF_CATALOGUE else None,
+    )
     for name in config["notebooks"]:
         for path in notebook_inputs(name):
             if not producible(path):

@@ -116,10 +116,13 @@ def load_claims(paths) -> list[dict]:
     return claims
 
 
-def check_claims(claims: list[dict], readings, known_readings=None, pinned_ids=None, producible=None) -> None:
+def check_claims(
+    claims: list[dict], readings, known_readings=None, pinned_ids=None, producible=None, variables_of=None
+) -> None:
     """What a row alone cannot show: per-reading entries name known readings; the set of claim ids is the
     pinned one (a deleted row or file is an error listing the ids it lost); every dataset a claim reads,
-    per claims reading (``readings``), is an output of some rule (``producible(path) -> bool``)."""
+    per claims reading (``readings``), is an output of some rule (``producible(path) -> bool``), and names a
+    variable that dataset holds where ``variables_of(path)`` knows them (None: not known)."""
     known = set(known_readings or ())
     for c in claims if known_readings is not None else []:
         where = f"{c['_file']}: claim {c['id']}"
@@ -149,6 +152,13 @@ def check_claims(claims: list[dict], readings, known_readings=None, pinned_ids=N
                     path = ref["dataset"].format(reading=r)
                     if not producible(path):
                         raise ClaimsError(f"{c['_file']}: claim {c['id']}: {key}: no rule writes {path!r}")
+                    known_vars = variables_of(path) if variables_of is not None else None
+                    if known_vars is not None and ref["variable"] not in known_vars:
+                        var_key = key.replace("dataset", "variable")
+                        raise ClaimsError(
+                            f"{c['_file']}: claim {c['id']}: {var_key}: {ref['variable']!r} is not a "
+                            f"variable that {path!r} holds"
+                        )
 
 
 def dataset_paths(claim: dict) -> list[str]:
