@@ -38,8 +38,8 @@ rule claims_check:
         "results/benchmarks/claims_check/all.tsv"
     conda:
         CONDA_ENV
-    shell:
-        "{PYTHON} -m stickslip.io.claims check {input} > {log} 2>&1 || (cat {log}; exit 1)"
+    script:
+        "../scripts/claims_check.py"
 
 
 ALL_TARGETS.append("results/claims/deviations.csv")

@@ -42,10 +42,6 @@ check_claims(
 )
 CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
 
-#: The interpreter of shell rules: a global of the command text, not a param, so that a moved project or
-#: another interpreter path (`python3 -m snakemake`) is no change of the job.
-PYTHON = sys.executable
-
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
 

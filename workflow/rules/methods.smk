@@ -97,5 +97,5 @@ rule methods_notebook:
         "results/benchmarks/methods_notebook/all.tsv"
     conda:
         CONDA_ENV
-    shell:
-        "{PYTHON} workflow/scripts/render_notebook.py {input.notebook} {output} > {log} 2>&1"
+    script:
+        "../scripts/methods_notebook.py"
