@@ -1,4 +1,4 @@
-"""Thin wiring: fail the build when a measured claim status differs from the one pinned in the claims files."""
+"""Thin wiring: fail the build when a measured claim status differs from the one pinned in its row."""
 
 import contextlib
 import sys
