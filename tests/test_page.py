@@ -227,9 +227,10 @@ def test_notebook_verdicts_are_the_pages(tmp_path):
 
     (tmp_path / "claims").mkdir()
     (tmp_path / "claims" / "c.yaml").write_text(
-        "- {id: a, section: '3', figure: Fig. 2, figures: [2], quote: q, kind: value, expected: reproduced}\n"
-        "- {id: b, section: '3', figure: Figs. 2-3, figures: [2, 3], quote: q, kind: value,"
-        " expected: deviates}\n"
+        "- {id: a, section: '3', figure: Fig. 2, figures: [2], quote: q, kind: trend, expected: reproduced,"
+        " dataset: d.nc, variable: v, coord: c, sign: 1}\n"
+        "- {id: b, section: '3', figure: Figs. 2-3, figures: [2, 3], quote: q, kind: trend,"
+        " expected: deviates, dataset: d.nc, variable: v, coord: c, sign: 1}\n"
     )
     header = "claim,reading,section,figure,status\n"
     (tmp_path / "deviations.csv").write_text(

@@ -5,7 +5,7 @@
 rule report_captions:
     input:
         table="results/claims/deviations.csv",
-        figures=str(Path(workflow.basedir) / "workflow" / "report" / "figures.yaml"),
+        figures="workflow/report/figures.yaml",
     output:
         REPORT_CAPTIONS,
     log:
