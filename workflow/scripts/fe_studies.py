@@ -4,6 +4,7 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.step_halving import apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
@@ -12,6 +13,7 @@ from stickslip.studies.fe import (
     scene_mapping,
     stability_dataset,
     sweep_dataset,
+    sweep_half_step,
 )
 from stickslip.studies.fe_comparison import increments_dataset
 
@@ -23,9 +25,13 @@ ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (
 for path in out.sweeps:
     name = Path(path).stem
     ds = ensemble_dataset(lambda c, name=name: sweep_dataset(c, name, friction), cfg, ensemble)
+    ds = apply_step_halving(ds, sweep_half_step(cfg, name, friction), along=cfg["sweeps"][name]["coord"])
     method = {"integrator": "central_difference", "sweep": name}
     write_dataset(ds, path, scene=dict(cfg["sweeps"][name]), interpretation=INTERPRETATION, method=method)
-    print(f"sweep {name} written", flush=True)
+    print(
+        f"sweep {name} written; not converged at half step: {ds.attrs['step_halving_not_converged']}",
+        flush=True,
+    )
 for kind, build in (("convergence", convergence_dataset), ("stability", stability_dataset)):
     spec = ensemble if kind == "stability" else None  # the convergence study is a spread measurement itself
     ds = ensemble_dataset(lambda c, build=build: build(c, friction), cfg, spec)

@@ -58,12 +58,29 @@ class ContactLaw:
     gap0: float = 0.0  #: initial gap [mm]
 
 
+def contact_omega(system: System, law: ContactLaw) -> float:
+    """Angular frequency [rad s-1] of the penalty spring on the contact point's own effective mass,
+    sqrt(k_p c_n^T M^-1 (c_n + mu_s c_t)) (the friction it transmits included); 0 for the other methods."""
+    if law.method != "penalty":
+        return 0.0
+    cn, ct = system.c_n, system.c_t
+    w = np.linalg.solve(system.M, cn + law.friction.static * ct) if system.n else cn
+    return float(math.sqrt(max(law.penalty_stiffness * float(cn @ w), 0.0)))
+
+
 def omega_max(system: System, law: ContactLaw) -> float:
-    """Highest angular frequency [rad s-1] of the assembled system including the penalty spring."""
+    """Highest angular frequency [rad s-1] for the central-difference limit. Penalty contact: the larger of
+    the assembled system's (penalty spring included) and the bound sqrt(omega_K^2 + omega_c^2) of the
+    structure plus the contact spring on its own (explicit codes add the contact's frequency to the
+    element's: the switched spring must be resolved on its own, not only inside the closed system)."""
     K = system.K
-    if law.method == "penalty":
-        K = K + law.penalty_stiffness * np.outer(system.c_n, system.c_n)
     n = K.shape[0]
+    if law.method == "penalty":
+        Kc = K + law.penalty_stiffness * np.outer(system.c_n, system.c_n)
+        w2c = sla.eigh(Kc, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
+        w2k = sla.eigh(K, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
+        w2 = max(w2c, max(w2k, 0.0) + contact_omega(system, law) ** 2)
+        return float(math.sqrt(max(w2, 0.0)))
     w2 = sla.eigh(K, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
     return float(math.sqrt(max(w2, 0.0)))
 

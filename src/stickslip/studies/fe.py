@@ -341,7 +341,28 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> 
     return ds
 
 
-def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
+def halved_step(mapping: Mapping) -> dict:
+    """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
+    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
+    return deep_merge(mapping, {"solver": {"safety_factor": 0.5 * sf}})
+
+
+def half_step_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
+    """The scene's metrics and window envelopes from a run at half its time step (the step-halving check,
+    stickslip.fe.step_halving)."""
+    r, m, _ = run_scene(halved_step(mapping), friction)
+    out = dict(m)
+    for k, y in (
+        ("horizontal_velocity", r.vx),
+        ("vertical_velocity", r.vy),
+        ("horizontal_displacement", r.x - r.x[0]),
+        ("vertical_displacement", r.y - r.y[0]),
+    ):
+        out[f"{k}_envelope"] = window_envelope(r.t, y)[1]
+    return out
+
+
+def _sweep_rows(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable, half_step: bool = False):
     sw = fe_cfg["sweeps"][sweep_name]
     base = scene_mapping(fe_cfg, sw["base"])
     path = sw["parameter"].split(".")
@@ -351,8 +372,20 @@ def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> 
         mp.setdefault(path[0], {})[path[1]] = val
         if "t_end" in sw:
             mp.setdefault("solver", {})["t_end"] = sw["t_end"]
-        _, m, _ = run_scene(mp, friction)
+        _, m, _ = run_scene(halved_step(mp) if half_step else mp, friction)
         rows.append(m)
+    return base, rows
+
+
+def sweep_half_step(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> dict:
+    """Every sweep member's scalar metrics at half its time step, as arrays along the sweep."""
+    _, rows = _sweep_rows(fe_cfg, sweep_name, friction, half_step=True)
+    return {k: np.array([r[k] for r in rows], float) for k in rows[0] if np.isscalar(rows[0][k])}
+
+
+def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
+    sw = fe_cfg["sweeps"][sweep_name]
+    base, rows = _sweep_rows(fe_cfg, sweep_name, friction)
     coord = sw["coord"]
     keys = [k for k in rows[0] if np.isscalar(rows[0][k])]
     ds = xr.Dataset(
