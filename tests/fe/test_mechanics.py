@@ -52,6 +52,23 @@ def test_hand_values():
     assert mc.drop_overshoot(3.0) == 6.0
 
 
+def test_zero_rotation_stiffness_and_sag_by_hand():
+    k0 = mc.zero_rotation_support_stiffness(EI, 100.0)
+    assert k0 == pytest.approx(0.42)  # 24 * 17500 / 1e6
+    assert mc.tip_rotation(Q, 100.0, EI, "soft", k0) == pytest.approx(0.0, abs=1e-12)
+    assert mc.propped_max_sag(Q, 100.0, EI) == pytest.approx(Q * 1e8 / (184.6 * EI), rel=1e-3)
+
+
+def test_propped_sag_matches_the_beam():
+    """The static sag off the contact (largest near x = 0.58 L, 2.4e-3 mm) is 50x the contact node's
+    horizontal offset: where the paper's vertical > horizontal can hold."""
+    sc = scene()
+    q, _ = static_state(sc.system, sc.law)
+    v = q[(sc.beam.free % 3) == 1]
+    assert abs(v.min()) == pytest.approx(mc.propped_max_sag(Q, 100.0, EI), rel=0.01)
+    assert abs(v.min()) > 40 * mc.corner_displacement(mc.tip_rotation(Q, 100.0, EI), 1.0)
+
+
 def test_soft_support_spans_free_to_propped():
     soft = [mc.tip_rotation(Q, 100.0, EI, "soft", k) for k in (1e-9, 1e9)]
     assert soft[0] == pytest.approx(mc.tip_rotation(Q, 100.0, EI, "free"), rel=1e-6)

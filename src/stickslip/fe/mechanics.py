@@ -61,6 +61,19 @@ def tip_rotation(q: float, length: float, EI: float, support: str = "propped", k
     raise ValueError(f"support: must be 'free', 'propped' or 'soft', got {support!r}")
 
 
+def zero_rotation_support_stiffness(EI: float, length: float) -> float:
+    """Tip support stiffness [N mm-1] at which the loaded tip does not rotate: 24 EI / L^3. Softer supports
+    turn the tip as a free one, stiffer ones as a propped one; a face corner's offset changes sign here."""
+    return 24.0 * EI / length**3
+
+
+def propped_max_sag(q: float, length: float, EI: float) -> float:
+    """Largest static deflection [mm] of a propped cantilever under uniform load: q L^4 / (184.6 EI), at
+    x = 0.5785 L from the clamp (the mid-span region, away from the contact)."""
+    x = (15.0 - math.sqrt(33.0)) / 16.0  # root of the slope, 0.5785
+    return q * length**4 / (48.0 * EI) * (3.0 * x**2 - 5.0 * x**3 + 2.0 * x**4)
+
+
 def corner_displacement(rotation: float, thickness: float) -> float:
     """Horizontal displacement [mm] of a face corner of the end section rotated by ``rotation``: theta h/2."""
     return rotation * thickness / 2.0
