@@ -138,6 +138,17 @@ rule fe_figures:
             for c in CLAIMS
             if c["id"] in ("s9_max_horizontal_displacement", "s9_oscillation_centre")
         },
+        # per scene: the paper's numbers in mm that its claims compare with, drawn on the scene figure
+        scene_reported={
+            s: {
+                c["variable"].replace("_", " "): c["value"]
+                for c in CLAIMS
+                if c.get("kind") == "value"
+                and c.get("unit") == "mm"
+                and str(c.get("dataset", "")).endswith(f"/{s}.nc")
+            }
+            for s in FE_SCENES
+        },
     script:
         "../scripts/fe_figures.py"
 
