@@ -204,7 +204,9 @@ def fe_convergence_figure(ds):
             ax.plot(ds.n_elements.values, ds[q].values[:, j], "o-", label=f"dt = {sf:g} dt_crit")
         ax.set_xscale("log")
         ax.set_xlabel("beam elements")
-        ax.set_title(f"{q.replace('_', ' ')}\nmax dev {float(ds[f'{q}_max_deviation']):.3g}", fontsize=9)
+        dev = ds[f"{q}_max_deviation"]
+        kind = "abs" if "absolute" in dev.attrs.get("long_name", "") else "rel"
+        ax.set_title(f"{q.replace('_', ' ')}\nlargest {kind}. deviation {float(dev):.3g}", fontsize=9)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
     fig.suptitle("Convergence in element count and time step (base scene)", fontsize=11)
