@@ -171,3 +171,20 @@ def test_stick_capacity_rules_out_long_stick():
     assert mc.slip_distance(0.6, 0.5) / cap > 1e5
     with pytest.raises(ValueError, match="reading"):
         mc.tilted_contact_normal_force(1.0, 30.0, "rotated")
+
+
+def test_setup_fit_puts_the_static_corner_at_the_target():
+    """The tip-support fit: the closed-form stiffness (0.058 N/mm for Fig. 21's -1.5e-4 mm) puts the FE
+    beam's static contact corner at the target within 2 %, on the side of the clamp."""
+    import yaml
+
+    from stickslip.studies.fe import setup_fit_mapping
+
+    with open("config/fe.yaml") as fh:
+        cfg = yaml.safe_load(fh)["fe"]
+    mp, k = setup_fit_mapping(cfg, "section11_penalty_15p2rpm", -1.5e-4)
+    assert k == pytest.approx(0.0581, rel=0.01)
+    sc = _scene_of(mp, FIG17)
+    q, n = static_state(sc.system, sc.law)
+    assert sc.system.c_x @ q == pytest.approx(-1.5e-4, rel=0.02)
+    assert 0 < n < N0  # the soft support carries less than the rigid prop's 3qL/8
