@@ -36,6 +36,7 @@
 # %%
 import pandas as pd
 import xarray as xr
+import yaml
 from IPython.display import Image, Markdown, display
 
 from stickslip.plots import claims_frame, status_counts, styled_claims
@@ -181,3 +182,32 @@ cc = pd.DataFrame(
 )
 display(cc.style.format("{:.4g}").hide(axis="index"))
 display(Markdown(f"Largest |difference|: **{100 * float(stab.crosscheck_max_relative_difference):.1f} %**."))
+
+# %% [markdown]
+# ## Verdicts: what the stated setup can produce
+#
+# Every Section 9–12 claim with the paper's number (`reported`; for a comparison the model's right-hand
+# side), the project's, its status, and the verdict with the closed-form estimate that decides it
+# (`stickslip.fe.mechanics`, each tested against the FE model): reproduced, impossible under the stated
+# setup, or reproduced under a setup the paper implies. Rows `s9_fit_*` read the tip-support fit
+# (`results/fe/setup_fit.nc`), a FIT beside the forward replication: one support stiffness reproduces
+# Section 9's magnitudes, separation and vertical motion together, and its growth claims conflict with it.
+
+# %%
+with open("config/claims/sections_09_12.yaml") as fh:
+    verdicts = {row["id"]: " ".join(str(row.get("note", "")).split()) for row in yaml.safe_load(fh)}
+default = per_reading[per_reading["reading"] == per_reading["reading"].iloc[0]]
+table = pd.DataFrame(
+    {
+        "claim": default["claim"],
+        "paper": default["reported"],
+        "project": default["measured"],
+        "status": default["status"],
+        "verdict and estimate": default["claim"].map(verdicts),
+    }
+)
+display(
+    table.style.format({"paper": "{:.4g}", "project": "{:.4g}"})
+    .hide(axis="index")
+    .set_properties(subset=["verdict and estimate"], **{"text-align": "left", "white-space": "normal"})
+)
