@@ -93,11 +93,14 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_s = fig.add_subplot(gs[4, :], sharex=ax_x)
     panels = (
         (ax_x, "horizontal_displacement", "horizontal u\nnode 1 [mm]"),
-        (ax_y, "vertical_displacement", "vertical v\nnode 1 [mm]"),
+        (ax_y, "vertical_displacement", "vertical v\nnode 1, mid-span [mm]"),
         (ax_vx, "horizontal_velocity", "horizontal du/dt\nnode 1 [mm/s]"),
-        (ax_vy, "vertical_velocity", "vertical dv/dt\nnode 1 [mm/s]"),
+        (ax_vy, "vertical_velocity", "vertical dv/dt\nnode 1, mid-span [mm/s]"),
     )
     for ax, var, ylabel in panels:
+        off = f"midspan_{var}_min"
+        if var.startswith("vertical") and off in beam and float(np.abs(beam[off]).max()) > 0:
+            _band(ax, beam, f"midspan_{var}", "beam, mid-span node (off the contact)", dict(color="C2"))
         for name, ds in models.items():
             _band(ax, ds, var, name, MODEL_STYLE[name])
         _running_envelope(ax, beam, var, MODEL_STYLE["beam"])
@@ -111,6 +114,8 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
         ax_x.annotate(f"paper: {key} {val:g} mm", (0.995, val), xycoords=where, ha="right", va="bottom",
                       color="C3", fontsize=8, bbox=box)  # fmt: skip
     ax_x.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=5, frameon=False)
+    if "midspan_vertical_displacement_min" in beam:
+        ax_y.legend(fontsize=7, loc="lower right", ncol=3)
     _state_strip(ax_s, beam)
     ax_s.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
     ax_s.set_xlabel("time [s] (beam state fractions per bin)")

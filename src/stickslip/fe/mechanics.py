@@ -67,11 +67,16 @@ def zero_rotation_support_stiffness(EI: float, length: float) -> float:
     return 24.0 * EI / length**3
 
 
+def propped_deflection(q: float, length: float, EI: float, x: float) -> float:
+    """Static deflection [mm] of a propped cantilever under uniform load at ``x`` from the clamp:
+    q x^2 (3 L^2 - 5 L x + 2 x^2) / (48 EI); a drop start rings each point about it with this amplitude."""
+    return q * x**2 * (3.0 * length**2 - 5.0 * length * x + 2.0 * x**2) / (48.0 * EI)
+
+
 def propped_max_sag(q: float, length: float, EI: float) -> float:
     """Largest static deflection [mm] of a propped cantilever under uniform load: q L^4 / (184.6 EI), at
     x = 0.5785 L from the clamp (the mid-span region, away from the contact)."""
-    x = (15.0 - math.sqrt(33.0)) / 16.0  # root of the slope, 0.5785
-    return q * length**4 / (48.0 * EI) * (3.0 * x**2 - 5.0 * x**3 + 2.0 * x**4)
+    return propped_deflection(q, length, EI, (15.0 - math.sqrt(33.0)) / 16.0 * length)
 
 
 def corner_displacement(rotation: float, thickness: float) -> float:

@@ -47,6 +47,11 @@ UNITS = {
     "vertical_amplitude": ("mm", "half peak-to-peak vertical displacement (second half)"),
     "max_abs_horizontal_velocity": ("mm s-1", "maximum absolute horizontal velocity of node 1"),
     "max_abs_vertical_velocity": ("mm s-1", "maximum absolute vertical velocity of node 1"),
+    "midspan_vertical_amplitude": ("mm", "half peak-to-peak vertical displacement of the mid-span node"),
+    "midspan_max_abs_vertical_velocity": (
+        "mm s-1",
+        "maximum absolute vertical velocity of the mid-span node",
+    ),
     "dominant_frequency": ("Hz", "dominant frequency of the horizontal displacement"),
     "vertical_dominant_frequency": ("Hz", "dominant frequency of the vertical displacement"),
     "stick_fraction": ("1", "fraction of increments in stick (second half of the run)"),
@@ -130,6 +135,18 @@ def _natural_frequencies(scene) -> np.ndarray:
     return modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, 40)[0]
 
 
+def midspan_vertical(scene, r) -> tuple[np.ndarray, np.ndarray]:
+    """Vertical displacement (from the start) and velocity of the mid-span node, a node off the contact,
+    from the recorded states (zeros where the transverse motion is held)."""
+    free = scene.beam.free
+    dof = 3 * (scene.params.beam.n_elements // 2) + 1
+    k = int(np.searchsorted(free, dof))
+    if k >= free.size or free[k] != dof or r.q_samples is None:
+        return np.zeros_like(r.t), np.zeros_like(r.t)
+    y = r.q_samples[:, k]
+    return y - y[0], r.v_samples[:, k].copy()
+
+
 def run_scene(
     mapping: Mapping,
     friction: FrictionTable,
@@ -137,10 +154,13 @@ def run_scene(
     duration: float | None = None,
     reduced: Mapping | None = None,
     progress=None,
+    midspan: bool = False,
 ):
     """Run one scene (full FE, or Craig-Bampton reduced if ``reduced`` is given).
 
-    ``progress(done, total)`` is passed to the integrator (time steps done out of total).
+    ``progress(done, total)`` is passed to the integrator (time steps done out of total). ``midspan``
+    (full model only): also record the mid-span node's vertical motion, a node off the contact
+    (``result.extra['midspan']`` and the metrics ``midspan_*``).
 
     Returns (result, metrics, scene).
     """
@@ -169,8 +189,17 @@ def run_scene(
         mass_damping=sp.mass_damping,
         stiffness_damping=sp.stiffness_damping,
         progress=progress,
+        record_state=midspan and not reduced,
     )
+    if midspan and not reduced:
+        r.extra["midspan"] = midspan_vertical(scene, r)
+        r.q_samples = r.v_samples = None  # only the mid-span series is kept
     m = trajectory_metrics(r, _natural_frequencies(scene))
+    if "midspan" in r.extra:
+        y, vy = r.extra["midspan"]
+        half = r.t >= 0.5 * r.t[-1]
+        m["midspan_vertical_amplitude"] = float(0.5 * (y[half].max() - y[half].min()))
+        m["midspan_max_abs_vertical_velocity"] = float(np.abs(vy).max())
     m["disc_surface_speed"] = p.disc.surface_speed
     _, evx = window_envelope(r.t, r.vx)
     _, evy = window_envelope(r.t, r.vy)
@@ -218,6 +247,8 @@ SERIES = {
     "normal_force": ("N", "contact normal force"),
     "friction_force": ("N", "friction force on the beam along the disc velocity"),
     "slip_velocity": ("mm s-1", "beam minus disc tangential velocity at the contact point"),
+    "midspan_vertical_displacement": ("mm", "vertical displacement of the mid-span node (off the contact)"),
+    "midspan_vertical_velocity": ("mm s-1", "vertical velocity of the mid-span node (off the contact)"),
 }
 
 
@@ -230,6 +261,8 @@ def _series(r) -> dict:
         "normal_force": r.normal_force,
         "friction_force": r.friction_force,
         "slip_velocity": r.slip_velocity,
+        "midspan_vertical_displacement": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[0],
+        "midspan_vertical_velocity": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[1],
     }
 
 
@@ -258,7 +291,14 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     edges = np.arange(0.0, t[-1] + bin_width, bin_width)
     if edges.size < 2:
         edges = np.array([0.0, t[-1]])
-    for k in ("horizontal_displacement", "vertical_displacement", "horizontal_velocity", "vertical_velocity"):
+    for k in (
+        "horizontal_displacement",
+        "vertical_displacement",
+        "horizontal_velocity",
+        "vertical_velocity",
+        "midspan_vertical_displacement",
+        "midspan_vertical_velocity",
+    ):
         u, ln = SERIES[k]
         lo, hi, mean = _binned(t, ser[k], edges)
         data[f"{k}_min"] = ("bin_time", lo, {"units": u, "long_name": f"minimum per bin of the {ln}"})
@@ -311,7 +351,7 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> 
     """Pure build of one scene's dataset from its merged config mapping (the ensemble contract:
     ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
     and ``bin_width`` [s]."""
-    r, m, scene = run_scene(mapping, friction)
+    r, m, scene = run_scene(mapping, friction, midspan=True)
     out = dict(mapping.get("output", {}) or {})
     ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
     nat = _natural_frequencies(scene)[:10]
@@ -383,7 +423,7 @@ def halved_step(mapping: Mapping) -> dict:
 def half_step_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
     """The scene's metrics and window envelopes from a run at half its time step (the step-halving check,
     stickslip.fe.step_halving)."""
-    r, m, _ = run_scene(halved_step(mapping), friction)
+    r, m, _ = run_scene(halved_step(mapping), friction, midspan=True)
     out = dict(m)
     for k, y in (
         ("horizontal_velocity", r.vx),
