@@ -135,16 +135,21 @@ def _natural_frequencies(scene) -> np.ndarray:
     return modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, 40)[0]
 
 
-def midspan_vertical(scene, r) -> tuple[np.ndarray, np.ndarray]:
-    """Vertical displacement (from the start) and velocity of the mid-span node, a node off the contact,
-    from the recorded states (zeros where the transverse motion is held)."""
+def _midspan_dofs(scene) -> np.ndarray:
+    """Index (among the free DOFs) of the mid-span node's vertical DOF; empty where it is held."""
     free = scene.beam.free
     dof = 3 * (scene.params.beam.n_elements // 2) + 1
     k = int(np.searchsorted(free, dof))
-    if k >= free.size or free[k] != dof or r.q_samples is None:
+    return np.array([k] if k < free.size and free[k] == dof else [], dtype=np.int64)
+
+
+def midspan_vertical(scene, r) -> tuple[np.ndarray, np.ndarray]:
+    """Vertical displacement (from the start) and velocity of the mid-span node, a node off the contact,
+    from the recorded states (only that DOF is recorded; zeros where the transverse motion is held)."""
+    if r.q_samples is None or r.q_samples.shape[1] == 0:
         return np.zeros_like(r.t), np.zeros_like(r.t)
-    y = r.q_samples[:, k]
-    return y - y[0], r.v_samples[:, k].copy()
+    y = r.q_samples[:, 0]
+    return y - y[0], r.v_samples[:, 0].copy()
 
 
 def run_scene(
@@ -190,6 +195,7 @@ def run_scene(
         stiffness_damping=sp.stiffness_damping,
         progress=progress,
         record_state=midspan and not reduced,
+        record_dofs=_midspan_dofs(scene) if midspan and not reduced else None,
     )
     if midspan and not reduced:
         r.extra["midspan"] = midspan_vertical(scene, r)
