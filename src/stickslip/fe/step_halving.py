@@ -57,37 +57,43 @@ def apply_step_halving(ds: xr.Dataset, half: Mapping[str, object], along: str | 
     Scalars and per-window envelopes (``window`` dimension: one failing window removes the whole
     envelope, a trend over the rest would be biased) become NaN when they fail; along a sweep dimension
     ``along`` only the failing members do. Ensemble companions (``<name>_ensemble``) are masked alike."""
-    out = ds.copy()
+    new: dict = {}  # collected and assigned at once: assigning one by one re-aligns the dataset each time
     report = []
     for name, h in half.items():
-        if name in NOT_CHECKED or name not in out:
+        if name in NOT_CHECKED or name not in ds:
             continue
-        var = out[name]
+        var = ds[name]
         unit = str(var.attrs.get("units", "1"))
-        ok = converged(var.values, np.asarray(h, dtype=float).reshape(var.shape), unit)
+        hv = np.asarray(h, dtype=float).reshape(var.shape)
+        ok = converged(var.values, hv, unit)
         if along is not None and along in var.dims:
             bad = ~ok
         else:
             bad = np.broadcast_to(~np.all(ok), var.shape)
-        out[f"{name}_half_step"] = (
+        long_name = var.attrs.get("long_name", name)
+        new[f"{name}_half_step"] = (
             var.dims,
-            np.asarray(h, dtype=float).reshape(var.shape),
-            {"units": unit, "long_name": f"{var.attrs.get('long_name', name)}, at half the time step"},
+            hv,
+            {"units": unit, "long_name": f"{long_name}, at half the time step"},
         )
         if not np.any(bad):
             continue
         full = var.values.astype(float)
-        out[f"{name}_full_step"] = (
+        new[f"{name}_full_step"] = (
             var.dims,
             full,
-            {"units": unit, "long_name": f"{var.attrs.get('long_name', name)}, not converged (full step)"},
+            {"units": unit, "long_name": f"{long_name}, not converged (full step)"},
         )
-        masked = np.where(bad, np.nan, full)
-        out[name] = (var.dims, masked, {**var.attrs, "step_halving": "not converged: " + RULE})
-        ens = out.get(f"{name}_ensemble")
+        new[name] = (
+            var.dims,
+            np.where(bad, np.nan, full),
+            {**var.attrs, "step_halving": "not converged: " + RULE},
+        )
+        ens = ds.get(f"{name}_ensemble")
         if ens is not None:
-            out[f"{name}_ensemble"] = (ens.dims, np.where(bad, np.nan, ens.values.astype(float)), ens.attrs)
+            new[f"{name}_ensemble"] = (ens.dims, np.where(bad, np.nan, ens.values.astype(float)), ens.attrs)
         report.append(name)
+    out = ds.assign(new)
     out.attrs["step_halving_rule"] = RULE
     out.attrs["step_halving_not_converged"] = ", ".join(report) if report else "none"
     return out
