@@ -36,6 +36,7 @@
 # %%
 import pandas as pd
 import xarray as xr
+import yaml
 from IPython.display import Image, Markdown, display
 
 from stickslip.notebook import claims_frame, status_counts, styled_claims
@@ -70,26 +71,34 @@ display(tab.style.format("{:,.0f}"))
 # ## Beam against the continuum strip
 #
 # Every paper scene, both models from the same scene description and the same window (the default build runs
-# 0.1 s; `snakemake --config fe_long_runs=true` runs the paper's 0.65 s). The beam is within 5 % of the
-# continuum on amplitude, centre and dominant frequency of node 1 except where the table says why.
+# 0.1 s; `snakemake --config fe_long_runs=true` runs the paper's 0.65 s). `agreement` follows the rule in
+# its `agreement_rule` column: within 5 % relatively, fractions included, unless both numbers lie inside
+# the noise floor (the beam's own change when its time step is halved), where neither is a result.
+
 
 # %%
 def _fmt(row):
-    return "background-color: #d8f0d8" if row["within_5_percent"] else "background-color: #f6d5d5"
+    return "background-color: #d8f0d8" if row["agreement"] else "background-color: #f6d5d5"
 
 
+print("agreement rule:", comparison["agreement_rule"].iloc[0])
 display(
-    comparison.style.apply(lambda r: [_fmt(r)] * len(r), axis=1)
-    .format({"continuum": "{:.4g}", "beam": "{:.4g}", "relative_difference": "{:+.1%}"})
+    comparison.drop(columns="agreement_rule")
+    .style.apply(lambda r: [_fmt(r)] * len(r), axis=1)
+    .format(
+        {"continuum": "{:.4g}", "beam": "{:.4g}", "noise_floor": "{:.2g}", "relative_difference": "{:+.1%}"}
+    )
     .hide(axis="index")
 )
 
 # %% [markdown]
 # ## Section 9 — kinematic contact, free beam (Figs. 21–25)
 #
-# Top: node 1's horizontal and vertical displacement over the whole run, drawn as the min–max band per
-# 0.1 ms bin (beam blue, continuum black), with the stick/slip/separation fractions per bin below. Middle:
-# spectrum of the last window and the contact forces there. Bottom: the first and the last 5 ms sample by
+# Top: node 1's horizontal and vertical displacement and velocity over the whole run in the paper's units
+# (mm, mm/s), drawn as the min–max band per 0.1 ms bin (beam blue, continuum black) with the running half
+# peak-to-peak per tenth of the run (dashed, what an "increases" claim is judged on) and the paper's numbers
+# (red dashed), then the stick/slip/separation fractions per bin. Middle: spectrum of the last window and
+# the contact forces there with the zero line (separation). Bottom: the first and the last 5 ms sample by
 # sample (31 samples per period of the 12.9 kHz axial mode), shaded green in stick, amber in slip, red when
 # separated. The drop excites the propped bending mode (~366 Hz), which the lower-face contact turns into a
 # horizontal motion of node 1; the falling friction law then grows the first axial mode (12.9 kHz) into
@@ -173,3 +182,32 @@ cc = pd.DataFrame(
 )
 display(cc.style.format("{:.4g}").hide(axis="index"))
 display(Markdown(f"Largest |difference|: **{100 * float(stab.crosscheck_max_relative_difference):.1f} %**."))
+
+# %% [markdown]
+# ## Verdicts: what the stated setup can produce
+#
+# Every Section 9–12 claim with the paper's number (`reported`; for a comparison the model's right-hand
+# side), the project's, its status, and the verdict with the closed-form estimate that decides it
+# (`stickslip.fe.mechanics`, each tested against the FE model): reproduced, impossible under the stated
+# setup, or reproduced under a setup the paper implies. Rows `s9_fit_*` read the tip-support fit
+# (`results/fe/setup_fit.nc`), a FIT beside the forward replication: one support stiffness reproduces
+# Section 9's magnitudes, separation and vertical motion together, and its growth claims conflict with it.
+
+# %%
+with open("config/claims/sections_09_12.yaml") as fh:
+    verdicts = {row["id"]: " ".join(str(row.get("note", "")).split()) for row in yaml.safe_load(fh)}
+default = per_reading[per_reading["reading"] == per_reading["reading"].iloc[0]]
+table = pd.DataFrame(
+    {
+        "claim": default["claim"],
+        "paper": default["reported"],
+        "project": default["measured"],
+        "status": default["status"],
+        "verdict and estimate": default["claim"].map(verdicts),
+    }
+)
+display(
+    table.style.format({"paper": "{:.4g}", "project": "{:.4g}"})
+    .hide(axis="index")
+    .set_properties(subset=["verdict and estimate"], **{"text-align": "left", "white-space": "normal"})
+)

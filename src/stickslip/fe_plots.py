@@ -12,10 +12,15 @@ import numpy as np
 
 STATE_COLOURS = {0: ("separated", "#d62728"), 1: ("stick", "#2ca02c"), 2: ("slip", "#ffbf00")}
 MODEL_STYLE = {"beam": dict(color="C0"), "continuum": dict(color="k")}
-UM = 1e3  # mm -> micrometre
+UM = 1e3  # mm -> micrometre (overview figures); the scene figures use the paper's mm and mm/s
 
 
-def _band(ax, ds, var, label, style, scale=UM):
+def _sci(ax):
+    """Scientific tick labels (the paper's displacements are 1e-4 mm)."""
+    ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3), useMathText=True)
+
+
+def _band(ax, ds, var, label, style, scale=1.0):
     t = ds.bin_time.values
     lo, hi = ds[f"{var}_min"].values * scale, ds[f"{var}_max"].values * scale
     ax.fill_between(t, lo, hi, alpha=0.35, lw=0, color=style["color"], label=f"{label} (min-max per bin)")
@@ -60,62 +65,88 @@ def _spectrum(t, y):
     return np.fft.rfftfreq(y.size, dt), spec
 
 
-def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: str = ""):
-    """One paper scene: whole-run envelopes (beam and continuum), state strip, spectra of the last
-    window, and the first and last windows sample by sample with stick/slip/separation shaded.
+def _running_envelope(ax, ds, var, style):
+    """Half peak-to-peak per window (the running envelope a growth claim is judged on), as a staircase
+    around the window mean 0 (drawn +-)."""
+    key = f"{var}_envelope"
+    if key not in ds or "window_time" not in ds.coords:
+        return
+    t, env = ds.window_time.values, ds[key].values
+    ax.step(t, env, where="mid", lw=1.2, ls="--", color=style["color"], alpha=0.9, label="running envelope")
 
-    ``reported``: optional {"max": mm, "mean": mm} from the paper, drawn as horizontal lines."""
+
+def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: str = ""):
+    """One paper scene, in the paper's units (mm, mm/s, N): whole-run envelopes of node 1's horizontal and
+    vertical displacement and velocity (beam and continuum) with the running half peak-to-peak per window
+    (what "increases" is judged on), the state strip, the spectrum and the contact forces of the last
+    window with the zero line (separation), and the first and last windows sample by sample with
+    stick/slip/separation shaded.
+
+    ``reported``: optional {label: mm} of the paper's numbers, drawn on the horizontal displacement."""
     models = {"beam": beam} | ({"continuum": continuum} if continuum is not None else {})
-    fig = plt.figure(figsize=(13, 11))
-    gs = fig.add_gridspec(5, 2, height_ratios=[3, 3, 0.8, 3, 3], hspace=0.55, wspace=0.22)
+    fig = plt.figure(figsize=(13, 15))
+    gs = fig.add_gridspec(7, 2, height_ratios=[3, 3, 3, 3, 0.8, 3, 3], hspace=0.6, wspace=0.22)
     ax_x = fig.add_subplot(gs[0, :])
     ax_y = fig.add_subplot(gs[1, :], sharex=ax_x)
-    ax_s = fig.add_subplot(gs[2, :], sharex=ax_x)
-    for name, ds in models.items():
-        _band(ax_x, ds, "horizontal_displacement", name, MODEL_STYLE[name])
-        _band(ax_y, ds, "vertical_displacement", name, MODEL_STYLE[name])
-    if reported:
-        for key, val in reported.items():
-            ax_x.axhline(val * UM, color="C3", ls="--", lw=1)
-            ax_x.annotate(f"paper {key} {val:g} mm", (ax_x.get_xlim()[0], val * UM), color="C3", fontsize=8)
-    ax_x.set_ylabel("horizontal u\nnode 1 [µm]")
-    ax_y.set_ylabel("vertical v\nnode 1 [µm]")
-    ax_x.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4, frameon=False)
+    ax_vx = fig.add_subplot(gs[2, :], sharex=ax_x)
+    ax_vy = fig.add_subplot(gs[3, :], sharex=ax_x)
+    ax_s = fig.add_subplot(gs[4, :], sharex=ax_x)
+    panels = (
+        (ax_x, "horizontal_displacement", "horizontal u\nnode 1 [mm]"),
+        (ax_y, "vertical_displacement", "vertical v\nnode 1, mid-span [mm]"),
+        (ax_vx, "horizontal_velocity", "horizontal du/dt\nnode 1 [mm/s]"),
+        (ax_vy, "vertical_velocity", "vertical dv/dt\nnode 1, mid-span [mm/s]"),
+    )
+    for ax, var, ylabel in panels:
+        off = f"midspan_{var}_min"
+        if var.startswith("vertical") and off in beam and float(np.abs(beam[off]).max()) > 0:
+            _band(ax, beam, f"midspan_{var}", "beam, mid-span node (off the contact)", dict(color="C2"))
+        for name, ds in models.items():
+            _band(ax, ds, var, name, MODEL_STYLE[name])
+        _running_envelope(ax, beam, var, MODEL_STYLE["beam"])
+        ax.set_ylabel(ylabel)
+        _sci(ax)
+        ax.grid(alpha=0.25)
+    for key, val in (reported or {}).items():
+        ax_x.axhline(val, color="C3", ls="--", lw=1)
+        box = dict(fc="white", ec="none", alpha=0.8, pad=0.5)
+        where = ("axes fraction", "data")
+        ax_x.annotate(f"paper: {key} {val:g} mm", (0.995, val), xycoords=where, ha="right", va="bottom",
+                      color="C3", fontsize=8, bbox=box)  # fmt: skip
+    ax_x.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=5, frameon=False)
+    if "midspan_vertical_displacement_min" in beam:
+        ax_y.legend(fontsize=7, loc="lower right", ncol=3)
     _state_strip(ax_s, beam)
     ax_s.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
     ax_s.set_xlabel("time [s] (beam state fractions per bin)")
     # spectra of the last full-resolution window (dominant frequency panel)
-    ax_f = fig.add_subplot(gs[3, 0])
+    ax_f = fig.add_subplot(gs[5, 0])
     for name, ds in models.items():
         m = _window(ds, -1)
         if m.sum() > 8:
             f, a = _spectrum(ds.time.values[m], ds.horizontal_displacement.values[m])
-            ax_f.loglog(f[1:], a[1:] * UM, lw=0.8, label=name, **MODEL_STYLE[name])
+            ax_f.loglog(f[1:], a[1:], lw=0.8, label=name, **MODEL_STYLE[name])
         fd = float(ds["dominant_frequency"])
         ax_f.axvline(fd, ls=":", lw=1, color=MODEL_STYLE[name]["color"])
     ax_f.set_xlabel("frequency [Hz] (horizontal u, last window; dotted: dominant over the 2nd half)")
-    ax_f.set_ylabel("amplitude [µm]")
+    ax_f.set_ylabel("amplitude [mm]")
     ax_f.legend(fontsize=7)
-    ax_n = fig.add_subplot(gs[3, 1])
+    ax_n = fig.add_subplot(gs[5, 1])
     for name, ds in models.items():
         m = _window(ds, -1)
         ax_n.plot(
-            ds.time.values[m],
-            ds.normal_force.values[m] * 1e3,
-            lw=0.7,
-            label=f"{name} normal",
-            **MODEL_STYLE[name],
+            ds.time.values[m], ds.normal_force.values[m], lw=0.7, label=f"{name} normal", **MODEL_STYLE[name]
         )
     m = _window(beam, -1)
-    ax_n.plot(
-        beam.time.values[m], beam.friction_force.values[m] * 1e3, lw=0.7, color="C1", label="beam friction"
-    )
-    ax_n.set_ylabel("contact force [mN]")
+    ax_n.plot(beam.time.values[m], beam.friction_force.values[m], lw=0.7, color="C1", label="beam friction")
+    ax_n.axhline(0.0, color="C3", lw=0.8, ls="-", label="zero (separation)")
+    ax_n.set_ylabel("contact force [N]")
+    _sci(ax_n)
     ax_n.set_xlabel("time [s] (last window)")
     ax_n.legend(fontsize=7)
     f_dom = float(beam["dominant_frequency"])
     for col, w in enumerate((0, -1)):
-        ax = fig.add_subplot(gs[4, col])
+        ax = fig.add_subplot(gs[6, col])
         t0, t1 = beam.detail_windows.values[w]
         if col == 1 and f_dom > 0 and 10 / f_dom < t1 - t0:  # the last ten periods of the dominant mode
             t0 = t1 - 10 / f_dom
@@ -123,11 +154,17 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
         _shade_states(ax, beam.time.values[mb], beam.contact_state.values[mb])
         for name, ds in models.items():
             m = _window(ds, w) & (ds.time.values >= t0)
-            u = ds.horizontal_displacement.values[m] * UM
-            ax.plot(ds.time.values[m], u, lw=0.8, label=name, **MODEL_STYLE[name])
+            ax.plot(
+                ds.time.values[m],
+                ds.horizontal_displacement.values[m],
+                lw=0.8,
+                label=name,
+                **MODEL_STYLE[name],
+            )
         what = "first window" if col == 0 else f"last {t1 - t0:.3g} s"
         ax.set_xlabel(f"time [s]: {what}, every sample (shading: beam state)")
-        ax.set_ylabel("horizontal u [µm]")
+        ax.set_ylabel("horizontal u [mm]")
+        _sci(ax)
         ax.legend(fontsize=7, loc="upper right")
     fig.suptitle(title or beam.attrs.get("title", ""), fontsize=11)
     return fig
@@ -172,7 +209,9 @@ def fe_convergence_figure(ds):
             ax.plot(ds.n_elements.values, ds[q].values[:, j], "o-", label=f"dt = {sf:g} dt_crit")
         ax.set_xscale("log")
         ax.set_xlabel("beam elements")
-        ax.set_title(f"{q.replace('_', ' ')}\nmax dev {float(ds[f'{q}_max_deviation']):.3g}", fontsize=9)
+        dev = ds[f"{q}_max_deviation"]
+        kind = "abs" if "absolute" in dev.attrs.get("long_name", "") else "rel"
+        ax.set_title(f"{q.replace('_', ' ')}\nlargest {kind}. deviation {float(dev):.3g}", fontsize=9)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
     fig.suptitle("Convergence in element count and time step (base scene)", fontsize=11)

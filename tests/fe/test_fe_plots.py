@@ -45,7 +45,9 @@ def test_binned_envelope_bounds_the_samples(ds):
 
 def test_scene_and_readings_figures_draw(ds):
     fig = fe_scene_figure(ds, ds, reported={"max": 2.9e-4})
-    assert len(fig.axes) == 7
+    assert len(fig.axes) == 9  # u, v, du/dt, dv/dt, states, spectrum, forces, two windows
+    assert any(np.allclose(line.get_ydata(), 2.9e-4) for line in fig.axes[0].get_lines())  # paper, in mm
+    assert "[mm/s]" in fig.axes[2].get_ylabel() and "[mm]" in fig.axes[0].get_ylabel()
     fig2 = fe_readings_figure({("a", "tiny"): ds, ("b", "tiny"): ds}, ["tiny"], ["a", "b"])
     assert len(fig2.axes) == 5
 

@@ -66,3 +66,16 @@ def test_unknown_backend_is_rejected():
     s = _scene({"method": "kinematic"}, 0.5)
     with pytest.raises(ValueError, match="backend"):
         integrate(s.system, s.law, 1e-4, backend="fortran")
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_recording_chosen_dofs_equals_the_full_recording(case):
+    contact, speed, start = CASES[case]
+    s = _scene(contact, speed)
+    kw = dict(safety_factor=0.9, output_interval=1e-5, initial_state=start, record_state=True)
+    full = integrate(s.system, s.law, 2e-3, **kw)
+    dofs = np.array([s.system.n - 1, 1, 4])
+    some = integrate(s.system, s.law, 2e-3, record_dofs=dofs, **kw)
+    assert some.q_samples.shape == (full.q_samples.shape[0], 3)
+    np.testing.assert_array_equal(some.q_samples, full.q_samples[:, dofs])
+    np.testing.assert_array_equal(some.v_samples, full.v_samples[:, dofs])

@@ -46,6 +46,7 @@ rule fe_studies:
         convergence="results/fe/convergence.nc",
         stability="results/fe/stability.nc",
         increments="results/fe/continuum_increments.nc",
+        setup_fit="results/fe/setup_fit.nc",
     log:
         "results/logs/fe_studies/studies.log",
     benchmark:
@@ -56,6 +57,11 @@ rule fe_studies:
     params:
         config=FE_CONFIG,
         ensemble=ENSEMBLE,
+        # FIT of the tip support to the paper's Fig. 21 centre (the claims row's value), on the penalty scene
+        fit={
+            "base": "section11_penalty_15p2rpm",
+            "centre": next(c["value"] for c in CLAIMS if c["id"] == "s9_oscillation_centre"),
+        },
     script:
         "../scripts/fe_studies.py"
 
@@ -88,7 +94,7 @@ rule fe_readings_claims:
         data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
         + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
         + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
-        + ["results/fe/continuum_increments.nc"],
+        + ["results/fe/continuum_increments.nc", "results/fe/setup_fit.nc"],
     output:
         "results/fe/readings_claims.csv",
     log:
@@ -138,6 +144,17 @@ rule fe_figures:
             for c in CLAIMS
             if c["id"] in ("s9_max_horizontal_displacement", "s9_oscillation_centre")
         },
+        # per scene: the paper's numbers in mm that its claims compare with, drawn on the scene figure
+        scene_reported={
+            s: {
+                c["variable"].replace("_", " "): c["value"]
+                for c in CLAIMS
+                if c.get("kind") == "value"
+                and c.get("unit") == "mm"
+                and str(c.get("dataset", "")).endswith(f"/{s}.nc")
+            }
+            for s in FE_SCENES
+        },
     script:
         "../scripts/fe_figures.py"
 
@@ -149,6 +166,7 @@ FE_DATASETS = (
     + [
         "results/fe/model_comparison.csv",
         "results/fe/continuum_increments.nc",
+        "results/fe/setup_fit.nc",
         "results/fe/readings_claims.csv",
     ]
 )

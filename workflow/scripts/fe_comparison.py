@@ -12,13 +12,15 @@ from stickslip.studies.fe_comparison import (
     comparison_dataset,
     comparison_rows,
     continuum_dataset,
+    halved_step_mapping,
+    noise_floors,
 )
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
-cont, beam = {}, {}
+cont, beam, floors = {}, {}, {}
 for path in snakemake.output.continuum:  # noqa: F821
     name = Path(path).stem
     mapping = comparison_mapping(cfg, name)
@@ -26,8 +28,9 @@ for path in snakemake.output.continuum:  # noqa: F821
     cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
     write_dataset(cont[name], path, scene=mapping, interpretation=INTERPRETATION, method={"mesh": [nx, ny]})
     beam[name] = beam_metrics(mapping, friction)
+    floors[name] = noise_floors(beam[name], beam_metrics(halved_step_mapping(mapping), friction))
     print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
-rows = comparison_rows(cont, beam, cmp.get("notes", {}))
+rows = comparison_rows(cont, beam, cmp.get("notes", {}), floors)
 with open(snakemake.output.table, "w", newline="") as f:  # noqa: F821
     w = csv.DictWriter(f, fieldnames=list(rows[0]))
     w.writeheader()

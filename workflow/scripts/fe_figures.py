@@ -25,7 +25,8 @@ for beam_path, cont_path, png in zip(inp.beam, inp.continuum, out.scenes):
         f"{Path(png).stem} (FE reading {beam.attrs.get('fe_reading', '')}): beam 20 elements (blue) and "
         f"continuum 100x1 (black), {float(beam.time[-1]):.3g} s"
     )
-    fe_scene_figure(beam, cont, title=title).savefig(png, dpi=100)
+    reported = par.scene_reported.get(Path(png).stem, {})
+    fe_scene_figure(beam, cont, reported=reported, title=title).savefig(png, dpi=100)
     plt.close("all")
 dss = {(Path(p).parent.name, Path(p).stem): xr.load_dataset(p) for p in inp.readings}
 fe_readings_figure(dss, par.scenes, par.readings, par.reported).savefig(out.readings, dpi=100)

@@ -5,12 +5,14 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.step_halving import apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
     cross_scene_dataset,
     effective_fe_config,
+    half_step_metrics,
     scene_dataset,
     scene_mapping,
 )
@@ -25,8 +27,13 @@ for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
     mappings[name] = scene_mapping(cfg, name, reading)
     ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mappings[name], spec)
+    ds = apply_step_halving(ds, half_step_metrics(mappings[name], friction))
     ds.attrs["fe_reading"] = reading
-    print(f"{reading}/{name}: {ds.attrs['method']}, cpu={float(ds['cpu_time']):.2f} s", flush=True)
+    print(
+        f"{reading}/{name}: {ds.attrs['method']}, cpu={float(ds['cpu_time']):.2f} s, "
+        f"not converged at half step: {ds.attrs['step_halving_not_converged']}",
+        flush=True,
+    )
     built[name] = ds
 cross = cross_scene_dataset(built, cfg["cross_scene"])
 # Written only once every scene is computed: a job killed while integrating leaves no dataset behind.

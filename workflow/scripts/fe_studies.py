@@ -4,14 +4,19 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.step_halving import apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
     convergence_dataset,
+    half_step_metrics,
     scene_mapping,
+    setup_fit_dataset,
+    setup_fit_mapping,
     stability_dataset,
     sweep_dataset,
+    sweep_half_step,
 )
 from stickslip.studies.fe_comparison import increments_dataset
 
@@ -23,9 +28,13 @@ ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (
 for path in out.sweeps:
     name = Path(path).stem
     ds = ensemble_dataset(lambda c, name=name: sweep_dataset(c, name, friction), cfg, ensemble)
+    ds = apply_step_halving(ds, sweep_half_step(cfg, name, friction), along=cfg["sweeps"][name]["coord"])
     method = {"integrator": "central_difference", "sweep": name}
     write_dataset(ds, path, scene=dict(cfg["sweeps"][name]), interpretation=INTERPRETATION, method=method)
-    print(f"sweep {name} written", flush=True)
+    print(
+        f"sweep {name} written; not converged at half step: {ds.attrs['step_halving_not_converged']}",
+        flush=True,
+    )
 for kind, build in (("convergence", convergence_dataset), ("stability", stability_dataset)):
     spec = ensemble if kind == "stability" else None  # the convergence study is a spread measurement itself
     ds = ensemble_dataset(lambda c, build=build: build(c, friction), cfg, spec)
@@ -40,3 +49,13 @@ ds = ensemble_dataset(
     ensemble,
 )
 write_dataset(ds, out.increments, scene=dict(inc), interpretation=INTERPRETATION, method={"kind": "eigen"})
+fit, k = setup_fit_mapping(cfg, snakemake.params.fit["base"], snakemake.params.fit["centre"])  # noqa: F821
+ds = ensemble_dataset(lambda mp: setup_fit_dataset(mp, friction, k), fit, ensemble)
+ds = apply_step_halving(ds, half_step_metrics(fit, friction))
+write_dataset(
+    ds, out.setup_fit, scene=fit, interpretation=ds.attrs["model_interpretation"], method={"kind": "fit"}
+)
+print(
+    f"setup fit: tip support {k:.4g} N/mm; not converged at half step: "
+    f"{ds.attrs['step_halving_not_converged']}"
+)

@@ -58,12 +58,29 @@ class ContactLaw:
     gap0: float = 0.0  #: initial gap [mm]
 
 
+def contact_omega(system: System, law: ContactLaw) -> float:
+    """Angular frequency [rad s-1] of the penalty spring on the contact point's own effective mass,
+    sqrt(k_p c_n^T M^-1 (c_n + mu_s c_t)) (the friction it transmits included); 0 for the other methods."""
+    if law.method != "penalty":
+        return 0.0
+    cn, ct = system.c_n, system.c_t
+    w = np.linalg.solve(system.M, cn + law.friction.static * ct) if system.n else cn
+    return float(math.sqrt(max(law.penalty_stiffness * float(cn @ w), 0.0)))
+
+
 def omega_max(system: System, law: ContactLaw) -> float:
-    """Highest angular frequency [rad s-1] of the assembled system including the penalty spring."""
+    """Highest angular frequency [rad s-1] for the central-difference limit. Penalty contact: the larger of
+    the assembled system's (penalty spring included) and the bound sqrt(omega_K^2 + omega_c^2) of the
+    structure plus the contact spring on its own (explicit codes add the contact's frequency to the
+    element's: the switched spring must be resolved on its own, not only inside the closed system)."""
     K = system.K
-    if law.method == "penalty":
-        K = K + law.penalty_stiffness * np.outer(system.c_n, system.c_n)
     n = K.shape[0]
+    if law.method == "penalty":
+        Kc = K + law.penalty_stiffness * np.outer(system.c_n, system.c_n)
+        w2c = sla.eigh(Kc, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
+        w2k = sla.eigh(K, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
+        w2 = max(w2c, max(w2k, 0.0) + contact_omega(system, law) ** 2)
+        return float(math.sqrt(max(w2, 0.0)))
     w2 = sla.eigh(K, system.M, eigvals_only=True, subset_by_index=[n - 1, n - 1])[0]
     return float(math.sqrt(max(w2, 0.0)))
 
@@ -231,7 +248,7 @@ def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitRe
     return res
 
 
-def _record0(pr, system, law, out, st, qs, vs):
+def _record0(pr, system, law, out, st, qs, vs, rec=None):
     u, v = pr.u, pr.v
     out[:, 0] = (
         0.0,
@@ -245,7 +262,7 @@ def _record0(pr, system, law, out, st, qs, vs):
     )
     st[0] = STICK if pr.N_stat > 0 else SEPARATED
     if qs is not None:
-        qs[0], vs[0] = u, v
+        qs[0], vs[0] = (u, v) if rec is None else (u[rec], v[rec])
 
 
 def integrate(
@@ -266,6 +283,7 @@ def integrate(
     progress=None,
     backend: str = "compiled",
     chunk: int = 200_000,
+    record_dofs: np.ndarray | None = None,
 ) -> ExplicitResult:
     """Integrate ``duration`` seconds. ``dt`` defaults to safety_factor * dt_crit.
 
@@ -275,6 +293,9 @@ def integrate(
     ``backend``: ``compiled`` (numba kernels of :mod:`stickslip.fe.kernel`) or ``python`` (the reference
     loop, same algorithm step for step). ``progress(done, total)``, if given, is called between chunks of
     ``chunk`` steps (compiled) or every 10 000 steps (python).
+
+    ``record_state`` keeps q and v at every output sample: all DOFs, or only ``record_dofs`` (compiled
+    backend; the columns of ``q_samples`` / ``v_samples`` are then those DOFs in that order).
 
     Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
     """
@@ -312,9 +333,11 @@ def integrate(
     data = G.data.astype(np.float64)
     out = np.zeros((8, pr.n_out))
     st = np.zeros(pr.n_out, dtype=np.int8)
-    qs = np.zeros((pr.n_out, system.n)) if record_state else np.zeros((1, 1))
-    vs = np.zeros((pr.n_out, system.n)) if record_state else np.zeros((1, 1))
-    _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None)
+    rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
+    rec = rec.astype(np.int64)
+    qs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
+    vs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
+    _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None, rec)
     counts = np.zeros(3, dtype=np.int64)
     fs = np.asarray(law.friction.speeds, float)
     fm = np.asarray(law.friction.mu, float)
@@ -349,7 +372,23 @@ def integrate(
         if n0 <= n_half < n1:  # a chunk ends at the half-way step, to count the second half's states
             n1 = n_half
         j, n_done, diverged, _ = fn(
-            n0, n1, pr.every, j, u, v, *common, *args, pr.dt, blowup, out, st, counts, record_state, qs, vs
+            n0,
+            n1,
+            pr.every,
+            j,
+            u,
+            v,
+            *common,
+            *args,
+            pr.dt,
+            blowup,
+            out,
+            st,
+            counts,
+            record_state,
+            qs,
+            vs,
+            rec,
         )
         if n1 == n_half:
             first_half = counts.copy()

@@ -64,7 +64,7 @@ def _structure_step(u, v, w, indptr, indices, data, af, c1, c2, beta):
 
 
 @njit(cache=True)
-def _record(j, t, u, v, state, Pn, Pt, dt, V, cx, cy, ci, ct, out, st, record_state, qs, vs):
+def _record(j, t, u, v, state, Pn, Pt, dt, V, cx, cy, ci, ct, out, st, record_state, qs, vs, rec):
     out[0, j] = t
     out[1, j] = _dot(cx, u)
     out[2, j] = _dot(cy, u)
@@ -74,20 +74,23 @@ def _record(j, t, u, v, state, Pn, Pt, dt, V, cx, cy, ci, ct, out, st, record_st
     out[6, j] = Pt / dt
     out[7, j] = _sdot(ci, ct, v) - V
     st[j] = state
-    if record_state:
-        qs[j, :] = u
-        vs[j, :] = v
+    if record_state:  # the DOFs listed in rec only
+        for k in range(rec.size):
+            qs[j, k] = u[rec[k]]
+            vs[j, k] = v[rec[k]]
 
 
 @njit(cache=True)
-def _finish_step(n, every, j, n_out, u, v, dt, blowup, state, Pn, Pt, V, cx, cy, ci, ct, out, st, rs, qs, vs):
+def _finish_step(
+    n, every, j, n_out, u, v, dt, blowup, state, Pn, Pt, V, cx, cy, ci, ct, out, st, rs, qs, vs, rec
+):
     """u <- u + dt v; record if due; returns (j, diverged)."""
     big = 0.0
     for i in range(u.size):
         u[i] += dt * v[i]
     if n % every == 0:
         if j < n_out:
-            _record(j, n * dt, u, v, state, Pn, Pt, dt, V, cx, cy, ci, ct, out, st, rs, qs, vs)
+            _record(j, n * dt, u, v, state, Pn, Pt, dt, V, cx, cy, ci, ct, out, st, rs, qs, vs, rec)
             j += 1
         for i in range(u.size):
             a = abs(u[i])
@@ -101,7 +104,7 @@ def _finish_step(n, every, j, n_out, u, v, dt, blowup, state, Pn, Pt, V, cx, cy,
 def run_kinematic(
     n0, n1, every, j, u, v, indptr, indices, data, af, c1, c2, beta,
     ci, cn, ct, cx, cy, mi, Mcn, Mct, Wnn, Wnt, Wtt, mu_s, f_speeds, f_mu, V, g0, dt, blowup,
-    out, st, counts, record_state, qs, vs,
+    out, st, counts, record_state, qs, vs, rec,
 ):  # fmt: skip
     """Kinematic contact: exact non-penetration and exact stick by a 2x2 Delassus impulse solve."""
     det = Wnn * Wtt - Wnt * Wnt
@@ -158,6 +161,7 @@ def run_kinematic(
             record_state,
             qs,
             vs,
+            rec,
         )
         if bad:
             return j, n, True, state
@@ -182,7 +186,7 @@ def _tangential(v, Pn, ci, ct, mi, Mct, Wtt, mu_s, f_speeds, f_mu, V):
 def run_penalty(
     n0, n1, every, j, u, v, indptr, indices, data, af, c1, c2, beta,
     ci, cn, ct, cx, cy, mi, Mcn, Mct, Wtt, mu_s, f_speeds, f_mu, V, g0, kp, dt, blowup,
-    out, st, counts, record_state, qs, vs,
+    out, st, counts, record_state, qs, vs, rec,
 ):  # fmt: skip
     """Penalty contact: normal impulse kp * penetration(u_n) * dt, then the same stick/slip treatment."""
     w = np.empty_like(u)
@@ -222,6 +226,7 @@ def run_penalty(
             record_state,
             qs,
             vs,
+            rec,
         )
         if bad:
             return j, n, True, state
@@ -232,7 +237,7 @@ def run_penalty(
 def run_fixed_normal(
     n0, n1, every, j, u, v, indptr, indices, data, af, c1, c2, beta,
     ci, cn, ct, cx, cy, mi, Mcn, Mct, Wtt, mu_s, f_speeds, f_mu, V, N_fixed, dt, blowup,
-    out, st, counts, record_state, qs, vs,
+    out, st, counts, record_state, qs, vs, rec,
 ):  # fmt: skip
     """Prescribed normal force (Section 10: no separation possible), same stick/slip treatment."""
     w = np.empty_like(u)
@@ -271,6 +276,7 @@ def run_fixed_normal(
             record_state,
             qs,
             vs,
+            rec,
         )
         if bad:
             return j, n, True, state

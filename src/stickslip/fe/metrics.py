@@ -75,6 +75,7 @@ def trajectory_metrics(r: ExplicitResult, natural_frequencies: np.ndarray | None
     m = {
         "max_horizontal_displacement": float(x.max()),
         "min_horizontal_displacement": float(x.min()),
+        "max_abs_horizontal_displacement": float(np.abs(x).max()),
         "mean_horizontal_displacement": float(x[half].mean()),
         "abs_mean_horizontal_displacement": float(abs(x[half].mean())),
         "horizontal_amplitude": float(0.5 * (x[half].max() - x[half].min())),

@@ -39,6 +39,7 @@ INTERPRETATION = (
 UNITS = {
     "max_horizontal_displacement": ("mm", "maximum horizontal displacement of node 1"),
     "min_horizontal_displacement": ("mm", "minimum horizontal displacement of node 1"),
+    "max_abs_horizontal_displacement": ("mm", "largest absolute horizontal displacement of node 1"),
     "mean_horizontal_displacement": ("mm", "mean horizontal displacement of node 1 (second half)"),
     "abs_mean_horizontal_displacement": ("mm", "absolute mean horizontal displacement (second half)"),
     "horizontal_amplitude": ("mm", "half peak-to-peak horizontal displacement (second half)"),
@@ -46,6 +47,11 @@ UNITS = {
     "vertical_amplitude": ("mm", "half peak-to-peak vertical displacement (second half)"),
     "max_abs_horizontal_velocity": ("mm s-1", "maximum absolute horizontal velocity of node 1"),
     "max_abs_vertical_velocity": ("mm s-1", "maximum absolute vertical velocity of node 1"),
+    "midspan_vertical_amplitude": ("mm", "half peak-to-peak vertical displacement of the mid-span node"),
+    "midspan_max_abs_vertical_velocity": (
+        "mm s-1",
+        "maximum absolute vertical velocity of the mid-span node",
+    ),
     "dominant_frequency": ("Hz", "dominant frequency of the horizontal displacement"),
     "vertical_dominant_frequency": ("Hz", "dominant frequency of the vertical displacement"),
     "stick_fraction": ("1", "fraction of increments in stick (second half of the run)"),
@@ -129,6 +135,23 @@ def _natural_frequencies(scene) -> np.ndarray:
     return modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, 40)[0]
 
 
+def _midspan_dofs(scene) -> np.ndarray:
+    """Index (among the free DOFs) of the mid-span node's vertical DOF; empty where it is held."""
+    free = scene.beam.free
+    dof = 3 * (scene.params.beam.n_elements // 2) + 1
+    k = int(np.searchsorted(free, dof))
+    return np.array([k] if k < free.size and free[k] == dof else [], dtype=np.int64)
+
+
+def midspan_vertical(scene, r) -> tuple[np.ndarray, np.ndarray]:
+    """Vertical displacement (from the start) and velocity of the mid-span node, a node off the contact,
+    from the recorded states (only that DOF is recorded; zeros where the transverse motion is held)."""
+    if r.q_samples is None or r.q_samples.shape[1] == 0:
+        return np.zeros_like(r.t), np.zeros_like(r.t)
+    y = r.q_samples[:, 0]
+    return y - y[0], r.v_samples[:, 0].copy()
+
+
 def run_scene(
     mapping: Mapping,
     friction: FrictionTable,
@@ -136,10 +159,13 @@ def run_scene(
     duration: float | None = None,
     reduced: Mapping | None = None,
     progress=None,
+    midspan: bool = False,
 ):
     """Run one scene (full FE, or Craig-Bampton reduced if ``reduced`` is given).
 
-    ``progress(done, total)`` is passed to the integrator (time steps done out of total).
+    ``progress(done, total)`` is passed to the integrator (time steps done out of total). ``midspan``
+    (full model only): also record the mid-span node's vertical motion, a node off the contact
+    (``result.extra['midspan']`` and the metrics ``midspan_*``).
 
     Returns (result, metrics, scene).
     """
@@ -168,8 +194,18 @@ def run_scene(
         mass_damping=sp.mass_damping,
         stiffness_damping=sp.stiffness_damping,
         progress=progress,
+        record_state=midspan and not reduced,
+        record_dofs=_midspan_dofs(scene) if midspan and not reduced else None,
     )
+    if midspan and not reduced:
+        r.extra["midspan"] = midspan_vertical(scene, r)
+        r.q_samples = r.v_samples = None  # only the mid-span series is kept
     m = trajectory_metrics(r, _natural_frequencies(scene))
+    if "midspan" in r.extra:
+        y, vy = r.extra["midspan"]
+        half = r.t >= 0.5 * r.t[-1]
+        m["midspan_vertical_amplitude"] = float(0.5 * (y[half].max() - y[half].min()))
+        m["midspan_max_abs_vertical_velocity"] = float(np.abs(vy).max())
     m["disc_surface_speed"] = p.disc.surface_speed
     _, evx = window_envelope(r.t, r.vx)
     _, evy = window_envelope(r.t, r.vy)
@@ -217,6 +253,8 @@ SERIES = {
     "normal_force": ("N", "contact normal force"),
     "friction_force": ("N", "friction force on the beam along the disc velocity"),
     "slip_velocity": ("mm s-1", "beam minus disc tangential velocity at the contact point"),
+    "midspan_vertical_displacement": ("mm", "vertical displacement of the mid-span node (off the contact)"),
+    "midspan_vertical_velocity": ("mm s-1", "vertical velocity of the mid-span node (off the contact)"),
 }
 
 
@@ -229,6 +267,8 @@ def _series(r) -> dict:
         "normal_force": r.normal_force,
         "friction_force": r.friction_force,
         "slip_velocity": r.slip_velocity,
+        "midspan_vertical_displacement": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[0],
+        "midspan_vertical_velocity": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[1],
     }
 
 
@@ -257,7 +297,14 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     edges = np.arange(0.0, t[-1] + bin_width, bin_width)
     if edges.size < 2:
         edges = np.array([0.0, t[-1]])
-    for k in ("horizontal_displacement", "vertical_displacement", "horizontal_velocity", "vertical_velocity"):
+    for k in (
+        "horizontal_displacement",
+        "vertical_displacement",
+        "horizontal_velocity",
+        "vertical_velocity",
+        "midspan_vertical_displacement",
+        "midspan_vertical_velocity",
+    ):
         u, ln = SERIES[k]
         lo, hi, mean = _binned(t, ser[k], edges)
         data[f"{k}_min"] = ("bin_time", lo, {"units": u, "long_name": f"minimum per bin of the {ln}"})
@@ -310,7 +357,7 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> 
     """Pure build of one scene's dataset from its merged config mapping (the ensemble contract:
     ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
     and ``bin_width`` [s]."""
-    r, m, scene = run_scene(mapping, friction)
+    r, m, scene = run_scene(mapping, friction, midspan=True)
     out = dict(mapping.get("output", {}) or {})
     ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
     nat = _natural_frequencies(scene)[:10]
@@ -341,7 +388,60 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> 
     return ds
 
 
-def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
+FIT_LABEL = (
+    "FIT, not the stated setup: the tip rests on a soft support (penalty contact) whose stiffness the closed "
+    "form stickslip.fe.mechanics.soft_support_for_corner_displacement sets so that the static contact-corner "
+    "offset equals the paper's Fig. 21 centre; everything else as the base scene"
+)
+
+
+def setup_fit_mapping(fe_cfg: Mapping, base: str, centre: float) -> tuple[dict, float]:
+    """(scene mapping, support stiffness [N mm-1]) of the tip-support fit to Fig. 21's centre [mm]."""
+    from ..fe import mechanics as mc
+    from ..fe.params import BeamParams
+
+    mp = scene_mapping(fe_cfg, base)
+    b = BeamParams.from_mapping(mp.get("beam", {}))
+    q = mc.distributed_weight(b.rho, b.area, b.g)
+    k = mc.soft_support_for_corner_displacement(abs(centre), q, b.length, b.E * b.inertia, b.thickness)
+    return deep_merge(mp, {"contact": {"method": "penalty", "penalty_stiffness": k}}), k
+
+
+def setup_fit_dataset(mapping: Mapping, friction: FrictionTable, stiffness: float) -> xr.Dataset:
+    """The fitted setup's scene dataset, labelled as a fit."""
+    ds = scene_dataset(mapping, friction, "setup_fit")
+    ds["tip_support_stiffness"] = (
+        (),
+        stiffness,
+        {"units": "N mm-1", "long_name": "fitted tip support stiffness"},
+    )
+    ds.attrs["title"] = "Beam on rotating rigid disc: FIT of the tip support to Fig. 21"
+    ds.attrs["model_interpretation"] = FIT_LABEL + ". " + INTERPRETATION
+    return ds
+
+
+def halved_step(mapping: Mapping) -> dict:
+    """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
+    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
+    return deep_merge(mapping, {"solver": {"safety_factor": 0.5 * sf}})
+
+
+def half_step_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
+    """The scene's metrics and window envelopes from a run at half its time step (the step-halving check,
+    stickslip.fe.step_halving)."""
+    r, m, _ = run_scene(halved_step(mapping), friction, midspan=True)
+    out = dict(m)
+    for k, y in (
+        ("horizontal_velocity", r.vx),
+        ("vertical_velocity", r.vy),
+        ("horizontal_displacement", r.x - r.x[0]),
+        ("vertical_displacement", r.y - r.y[0]),
+    ):
+        out[f"{k}_envelope"] = window_envelope(r.t, y)[1]
+    return out
+
+
+def _sweep_rows(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable, half_step: bool = False):
     sw = fe_cfg["sweeps"][sweep_name]
     base = scene_mapping(fe_cfg, sw["base"])
     path = sw["parameter"].split(".")
@@ -351,8 +451,20 @@ def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> 
         mp.setdefault(path[0], {})[path[1]] = val
         if "t_end" in sw:
             mp.setdefault("solver", {})["t_end"] = sw["t_end"]
-        _, m, _ = run_scene(mp, friction)
+        _, m, _ = run_scene(halved_step(mp) if half_step else mp, friction)
         rows.append(m)
+    return base, rows
+
+
+def sweep_half_step(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> dict:
+    """Every sweep member's scalar metrics at half its time step, as arrays along the sweep."""
+    _, rows = _sweep_rows(fe_cfg, sweep_name, friction, half_step=True)
+    return {k: np.array([r[k] for r in rows], float) for k in rows[0] if np.isscalar(rows[0][k])}
+
+
+def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
+    sw = fe_cfg["sweeps"][sweep_name]
+    base, rows = _sweep_rows(fe_cfg, sweep_name, friction)
     coord = sw["coord"]
     keys = [k for k in rows[0] if np.isscalar(rows[0][k])]
     ds = xr.Dataset(

@@ -16,7 +16,7 @@ import xarray as xr
 from ..fe.metrics import trajectory_metrics
 from ..fe.params import FrictionTable
 from ..fe.scene import SceneParams
-from .fe import INTERPRETATION, result_dataset, run_scene
+from .fe import INTERPRETATION, deep_merge, result_dataset, run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -26,9 +26,14 @@ QUANTITIES = (
     "stick_fraction",
     "separation_fraction",
 )
-#: relative differences of fractions below this absolute difference count as agreement (a fraction of
-#: 0.001 vs 0.002 is "no separation" in both)
-FRACTION_FLOOR = 0.01
+#: largest |relative difference| that counts as agreement
+AGREEMENT_REL = 0.05
+#: the rule of the agreement column, printed beside it in every table row
+AGREEMENT_RULE = (
+    f"|beam - continuum| / |continuum| <= {AGREEMENT_REL:g}, or |continuum| and |beam| both <= noise_floor "
+    "(the beam's own change of the quantity when its time step is halved); dominant_frequency also needs "
+    "horizontal_amplitude to agree (a frequency of two motions of different size is not one result)"
+)
 
 
 def _params(mapping: Mapping) -> SceneParams:
@@ -104,6 +109,17 @@ def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
     return m
 
 
+def halved_step_mapping(mapping: Mapping) -> dict:
+    """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
+    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
+    return deep_merge(mapping, {"solver": {"safety_factor": 0.5 * sf}})
+
+
+def noise_floors(metrics: Mapping, metrics_half_step: Mapping) -> dict:
+    """Per quantity: |m(dt/2) - m(dt)|, the change of the beam's own number when its step is halved."""
+    return {q: abs(float(metrics_half_step[q]) - float(metrics[q])) for q in QUANTITIES}
+
+
 def relative_difference(continuum: float, beam: float) -> float:
     """(beam - continuum) / |continuum| (0 when both are 0, inf when only the continuum is 0)."""
     if continuum == 0:
@@ -111,25 +127,34 @@ def relative_difference(continuum: float, beam: float) -> float:
     return (beam - continuum) / abs(continuum)
 
 
-def agrees(continuum: float, beam: float, quantity: str, rel: float = 0.05) -> bool:
-    """Within ``rel``; fractions also when they differ by less than FRACTION_FLOOR (0.001 vs 0.002 is "no
-    separation" in both)."""
-    if quantity.endswith("_fraction") and abs(beam - continuum) < FRACTION_FLOOR:
+def agrees(continuum: float, beam: float, noise_floor: float = 0.0, rel: float = AGREEMENT_REL) -> bool:
+    """AGREEMENT_RULE: within ``rel`` relatively (fractions too), or both values inside the measured noise
+    floor (then neither number is a result, and they cannot disagree)."""
+    if max(abs(continuum), abs(beam)) <= noise_floor:
         return True
     return bool(abs(relative_difference(continuum, beam)) <= rel)
 
 
 def comparison_rows(
-    continuum: Mapping[str, xr.Dataset], beam: Mapping[str, Mapping], notes: Mapping[str, str] | None = None
+    continuum: Mapping[str, xr.Dataset],
+    beam: Mapping[str, Mapping],
+    notes: Mapping[str, str] | None = None,
+    floors: Mapping[str, Mapping] | None = None,
 ) -> list[dict]:
-    """One row per (scene, quantity): continuum, beam, relative difference, within 5 %, and the config's
-    note for the scene (or the quantity) where they do not agree."""
+    """One row per (scene, quantity): continuum, beam, relative difference, the noise floor (``floors``
+    [scene][quantity], 0 when not measured), the agreement flag and its rule, and the config's note for
+    the scene (or the quantity) where they do not agree."""
     notes = notes or {}
+    floors = floors or {}
     rows = []
     for scene, ds in continuum.items():
+        ok_of = {}
         for q in QUANTITIES:
             c, b = float(ds[q]), float(beam[scene][q])
-            ok = agrees(c, b, q)
+            floor = float(floors.get(scene, {}).get(q, 0.0))
+            ok = ok_of[q] = agrees(c, b, floor)
+            if q == "dominant_frequency":
+                ok = ok and ok_of.get("horizontal_amplitude", True)
             rows.append(
                 {
                     "scene": scene,
@@ -137,7 +162,9 @@ def comparison_rows(
                     "continuum": c,
                     "beam": b,
                     "relative_difference": relative_difference(c, b),
-                    "within_5_percent": ok,
+                    "noise_floor": floor,
+                    "agreement": ok,
+                    "agreement_rule": AGREEMENT_RULE,
                     "note": ""
                     if ok
                     else " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes),
@@ -150,11 +177,12 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
     """The comparison table as a dataset (scene x quantity), with the CPU times of both models."""
     scenes = list(continuum)
     qs = list(QUANTITIES)
-    arr = {k: np.full((len(scenes), len(qs)), np.nan) for k in ("continuum", "beam", "relative_difference")}
+    keys = ("continuum", "beam", "relative_difference", "noise_floor", "agreement")
+    arr = {k: np.full((len(scenes), len(qs)), np.nan) for k in keys}
     for r in rows:
         i, j = scenes.index(r["scene"]), qs.index(r["quantity"])
         for k in arr:
-            arr[k][i, j] = r[k]
+            arr[k][i, j] = float(r[k])
     dims = ("scene", "quantity")
     ds = xr.Dataset(
         {
@@ -164,6 +192,19 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
                 dims,
                 arr["relative_difference"],
                 {"units": "1", "long_name": "(beam - continuum) / |continuum|"},
+            ),
+            "noise_floor": (
+                dims,
+                arr["noise_floor"],
+                {
+                    "units": "1",
+                    "long_name": "beam's change of the quantity at half the time step (quantity's units)",
+                },
+            ),
+            "agreement": (
+                dims,
+                arr["agreement"].astype("i1"),
+                {"units": "1", "long_name": "beam and continuum agree", "rule": AGREEMENT_RULE},
             ),
             "continuum_cpu_time": (
                 "scene",
