@@ -6,15 +6,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import xarray as xr  # noqa: E402
 
+from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
 
 sm = snakemake  # noqa: F821
 for nc, png in zip(sm.input.work_precision, sm.output.work_precision):
-    with xr.open_dataset(nc) as ds:
-        fig = work_precision_figure(ds.load(), os.path.basename(nc).replace("_work_precision.nc", ""))
+    fig = work_precision_figure(read_dataset(nc), os.path.basename(nc).replace("_work_precision.nc", ""))
     os.makedirs(os.path.dirname(png), exist_ok=True)
     fig.savefig(png, dpi=110, bbox_inches="tight")  # long method labels: nothing clipped
-with xr.open_dataset(sm.input.failure_map) as ds:
-    failure_map_figure(ds.load()).savefig(sm.output.failure_map, dpi=110, bbox_inches="tight")
+failure_map_figure(read_dataset(sm.input.failure_map)).savefig(
+    sm.output.failure_map, dpi=110, bbox_inches="tight"
+)
