@@ -42,12 +42,21 @@ def kind_of(names, swept: str = "") -> tuple:
     return tuple(sorted(folded)), any(n.endswith("_ensemble") for n in names)
 
 
+#: FE readings' folders: a scene's dataset is written by the same code under every reading (the reading only
+#: sets the geometry's numbers), so one reading's datasets stand for all.
+FE_FOLDERS = re.compile(r"^fe/(?!continuum/)[^/]+/(?P<name>[^/]+\.nc)$")
+
+
 def one_per_kind(run, paths):
-    """The first dataset of each kind (``kind_of``)."""
+    """The first dataset of each kind (``kind_of``); an FE scene's datasets under the readings are one kind."""
     import xarray as xr
 
     kinds = {}
     for p in paths:
+        fe = FE_FOLDERS.match(str(p))
+        if fe:
+            kinds.setdefault(("fe scene", fe["name"]), p)
+            continue
         with xr.open_dataset(run / "results" / p, decode_times=False) as ds:
             kinds.setdefault(kind_of(map(str, ds.variables), ds.attrs.get("sweep_parameter", "")), p)
     return sorted(kinds.values())
