@@ -48,7 +48,7 @@ FE_FOLDERS = re.compile(r"^fe/(?!continuum/)[^/]+/(?P<name>[^/]+\.nc)$")
 
 
 def one_per_kind(run, paths):
-    """The first dataset of each kind (``kind_of``); an FE scene's datasets under all readings are one kind."""
+    """The first dataset of each kind (``kind_of``); an FE scene under all readings is one kind."""
     import xarray as xr
 
     kinds = {}
