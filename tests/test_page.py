@@ -258,6 +258,24 @@ def test_notebook_verdicts_are_the_pages(tmp_path):
     ]
 
 
+def test_a_fitted_setups_checks_never_count_in_a_figure_verdict(tmp_path):
+    from stickslip.notebook import figure_verdicts
+
+    (tmp_path / "claims").mkdir()
+    row = "section: '9', figures: [21], quote: q, kind: trend, dataset: d.nc, variable: v, coord: c, sign: 1"
+    (tmp_path / "claims" / "c.yaml").write_text(
+        f"- {{id: forward, figure: Fig. 21, {row}, expected: deviates}}\n"
+        f"- {{id: fitted, figure: Fig. 21 (fit), fit: true, {row}, expected: reproduced}}\n"
+    )
+    (tmp_path / "deviations.csv").write_text(
+        "claim,reading,section,figure,status\n"
+        "forward,,9,Fig. 21,deviates\nfitted,,9,Fig. 21 (fit),reproduced\n"
+    )
+    frame = figure_verdicts([21], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
+    assert frame.to_dict("records")[0]["verdict"] == "deviating"
+    assert frame.to_dict("records")[0]["reproduced"] == 0
+
+
 def test_rendered_notebook_lets_wide_tables_scroll():
     import nbformat
 

@@ -101,6 +101,11 @@ class ClaimRow(_Strict):
     coord: Text | None = None
     sign: Literal[-1, 0, 1] | None = None
     comparable: bool | None = None
+    fit: bool | None = Field(
+        None,
+        description="checks a setup fitted to the paper's numbers, not the stated one: shown beside the "
+        "figure's forward verdict, never counted in it",
+    )
     coord_scale: Literal["log"] | None = None
     min_relative_change: NonNegative | None = None
 

@@ -199,10 +199,14 @@ class PageBuilder:
         self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
         self.figures_of = claim_figures(self.claims)
         self.claim = {c["id"]: c for c in self.claims}
+        #: Claims that check a fitted setup: listed on their figure's card, never counted in a verdict.
+        self.fitted = {c["id"] for c in self.claims if c.get("fit")}
         self.rows = read_table(self.results / "claims" / "deviations.csv")
         self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
         self.order = [r["reading"] for r in self.ranking]
-        self.fe_rows = read_csv(self.results / "fe" / "readings_claims.csv")
+        self.fe_rows = [
+            r for r in read_csv(self.results / "fe" / "readings_claims.csv") if r["claim"] not in self.fitted
+        ]
         self.fe_default = fe_default_reading
         self.friction_table = friction_table
         self.inverse_figures = inverse_figures
@@ -329,7 +333,9 @@ class PageBuilder:
     def card(self, entry: dict) -> dict:
         number = entry.get("number")
         fe = entry.get("half") == "fe"
-        rows = self.rows_about(number, entry.get("section"))
+        everything = self.rows_about(number, entry.get("section"))
+        rows = [r for r in everything if r["claim"] not in self.fitted]  # the forward replication
+        fitted = [r for r in everything if r["claim"] in self.fitted]
         reading = best_reading(rows, self.order)
         judged = rows_in_reading(rows, reading) if reading else rows
         verdict = figure_verdict(r["status"] for r in judged)
@@ -391,6 +397,7 @@ class PageBuilder:
             "counts": counts,
             "n_rows": len(judged),
             "claims": [self.claim_row(r) for r in judged],
+            "fitted": [self.claim_row(r) for r in fitted],
             "per_reading": self.per_reading(rows, fe) if rows else [],
             "images": images,
             "thumb": thumb,
