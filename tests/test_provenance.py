@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from test_bad_input import VALUE_ROW
 
 from project_run import copy_project, run_snakemake, shared_small_run, small_config_args, snakemake_command
 
@@ -89,20 +90,7 @@ def test_a_config_comment_and_a_rewrite_with_the_same_values_schedule_nothing(bu
 
 @pytest.mark.pipeline
 def test_a_new_claims_row_reruns_the_claims_table_and_what_reads_it_only(built_copy):
-    row = {
-        "id": "zz_new_row",
-        "section": "3",
-        "figure": "Fig. 2",
-        "figures": [2],
-        "quote": "Figure 2 showed that the mass maximum displacement is 1.5 mm.",
-        "kind": "value",
-        "dataset": "results/onedof/fig02/{reading}/exact.nc",
-        "variable": "max_displacement",
-        "value": 1.5,
-        "unit": "mm",
-        "tolerance": {"rel": 0.1, "reason": "read off a plotted curve"},
-        "expected": "deviates",
-    }
+    row = {**VALUE_ROW, "id": "zz_new_row"}  # a complete, valid row of the bad-input matrix
     (built_copy / "config" / "claims" / "zz_new.yaml").write_text(yaml.safe_dump([row]))
     ids = built_copy / "config" / "claims" / "ids.txt"
     ids.write_text(ids.read_text() + "zz_new_row\n")
