@@ -35,28 +35,23 @@ def run(tmp_path_factory):
 
 def kind_of(names, swept: str = "") -> tuple:
     """A dataset's kind: its variable names with the swept parameter's name, the swept value of
-    ``<metric>_at_<value>`` scalars and the ``_ensemble`` suffix folded (the same writer code, other
-    numbers), plus whether it has an ensemble."""
-    folded = {re.sub(r"_at_[0-9a-z.+-]+$", "_at_VALUE", n.removesuffix("_ensemble")) for n in names}
+    ``<metric>_at_<value>`` scalars and the ``_ensemble`` and ``_full_step`` suffixes folded (the same writer
+    code, other numbers: an FE metric that moved at half the time step is kept as ``<metric>_full_step``),
+    plus whether it has an ensemble and whether it keeps full-step values."""
+    names = list(names)
+    bare = (n.removesuffix("_ensemble").removesuffix("_full_step") for n in names)
+    folded = {re.sub(r"_at_[0-9a-z.+-]+$", "_at_VALUE", n) for n in bare}
     folded = {"SWEPT" if n == swept else n for n in folded}
-    return tuple(sorted(folded)), any(n.endswith("_ensemble") for n in names)
-
-
-#: FE readings' folders: a scene's dataset is written by the same code under every reading (the reading only
-#: sets the geometry's numbers), so one reading's datasets stand for all.
-FE_FOLDERS = re.compile(r"^fe/(?!continuum/)[^/]+/(?P<name>[^/]+\.nc)$")
+    flags = (any(n.endswith("_ensemble") for n in names), any(n.endswith("_full_step") for n in names))
+    return tuple(sorted(folded)), flags
 
 
 def one_per_kind(run, paths):
-    """The first dataset of each kind (``kind_of``); an FE scene under all readings is one kind."""
+    """The first dataset of each kind (``kind_of``)."""
     import xarray as xr
 
     kinds = {}
     for p in paths:
-        fe = FE_FOLDERS.match(str(p))
-        if fe:
-            kinds.setdefault(("fe scene", fe["name"]), p)
-            continue
         with xr.open_dataset(run / "results" / p, decode_times=False) as ds:
             kinds.setdefault(kind_of(map(str, ds.variables), ds.attrs.get("sweep_parameter", "")), p)
     return sorted(kinds.values())
