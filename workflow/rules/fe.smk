@@ -151,7 +151,7 @@ rule fe_figures:
                 for c in CLAIMS
                 if c.get("kind") == "value"
                 and c.get("unit") == "mm"
-                and str(c.get("dataset", "")).endswith(f"/{s}.nc")
+                and Path(str(c.get("dataset", ""))).stem == s
             }
             for s in FE_SCENES
         },
