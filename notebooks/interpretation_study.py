@@ -38,7 +38,7 @@ from IPython.display import Markdown, display
 
 from stickslip.io.claims import STATUSES
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import (
+from stickslip.presentation.notebook import (
     claims_frame,
     claims_readings,
     scorecard,
@@ -46,7 +46,7 @@ from stickslip.notebook import (
     styled_claims,
     verdicts,
 )
-from stickslip.plots import STATUS_COLOUR, reading_colours
+from stickslip.presentation.plots import STATUS_COLOUR, reading_colours
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)

@@ -29,8 +29,8 @@ import pandas as pd
 import xarray as xr
 from IPython.display import HTML, Image, Markdown, display
 
-from stickslip.notebook import SUMMARY_STYLE
-from stickslip.plots import STATUS_COLOUR
+from stickslip.presentation.notebook import SUMMARY_STYLE
+from stickslip.presentation.plots import STATUS_COLOUR
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
 ROOT = os.getcwd() if os.path.isdir("results") else os.path.abspath(os.path.join(HERE, ".."))

@@ -33,8 +33,8 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, scorecard, verdicts
-from stickslip.plots import mark_reported
+from stickslip.presentation.notebook import claims_frame, scorecard, verdicts
+from stickslip.presentation.plots import mark_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 FIG2 = PARAMS.get("figures", {}).get(

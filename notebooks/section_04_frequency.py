@@ -32,8 +32,8 @@ import numpy as np
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, claims_readings, scorecard, verdicts
-from stickslip.plots import eq6_figure, reading_colours, run_failed, scalars_vs_reported
+from stickslip.presentation.notebook import claims_frame, claims_readings, scorecard, verdicts
+from stickslip.presentation.plots import eq6_figure, reading_colours, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)

@@ -38,8 +38,8 @@
 from IPython.display import Image, Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, reported_value, scorecard, styled_claims, verdicts
-from stickslip.plots import (
+from stickslip.presentation.notebook import claims_frame, reported_value, scorecard, styled_claims, verdicts
+from stickslip.presentation.plots import (
     metric_units,
     readings_grid,
     run_failed,

@@ -30,8 +30,8 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, scorecard, verdicts
-from stickslip.plots import readings_grid, run_failed, scalars_vs_reported
+from stickslip.presentation.notebook import claims_frame, scorecard, verdicts
+from stickslip.presentation.plots import readings_grid, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 _DEFAULT_R = ["consistent_caption", "consistent_text", "plateau_caption", "plateau_text"]

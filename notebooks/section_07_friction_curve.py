@@ -36,8 +36,8 @@ import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
 from stickslip.io.netcdf import read_dataset
-from stickslip.notebook import claims_frame, claims_readings, reported_value, scorecard, verdicts
-from stickslip.plots import mark_reported, run_failed, scalars_vs_reported
+from stickslip.presentation.notebook import claims_frame, claims_readings, reported_value, scorecard, verdicts
+from stickslip.presentation.plots import mark_reported, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)

@@ -39,7 +39,7 @@ import xarray as xr
 import yaml
 from IPython.display import Image, Markdown, display
 
-from stickslip.notebook import claims_frame, status_counts, styled_claims
+from stickslip.presentation.notebook import claims_frame, status_counts, styled_claims
 
 claims = claims_frame("results/claims/deviations.csv", sections=["9", "10", "11", "12"])
 per_reading = pd.read_csv("results/fe/readings_claims.csv", dtype={"section": str})

@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 
 from stickslip.io.claims import STATUSES
-from stickslip.notebook import (
+from stickslip.presentation.notebook import (
     PARAMETERS_TAG,
     claims_frame,
     reader_notebook,
@@ -19,7 +19,7 @@ from stickslip.notebook import (
     styled_claims,
     to_html,
 )
-from stickslip.plots import STATUS_COLOUR
+from stickslip.presentation.plots import STATUS_COLOUR
 
 COLUMNS = ["claim", "reading", "section", "figure", "kind", "quantity", "reported", "unit", "measured"]
 COLUMNS += ["deviation", "margin", "spread", "status", "expected", "matches_expected", "reason", "quote"]

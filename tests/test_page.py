@@ -223,7 +223,7 @@ def check_page(chrome, run):
 
 
 def test_notebook_verdicts_are_the_pages(tmp_path):
-    from stickslip.notebook import figure_verdicts
+    from stickslip.presentation.notebook import figure_verdicts
 
     (tmp_path / "claims").mkdir()
     (tmp_path / "claims" / "c.yaml").write_text(
@@ -259,7 +259,7 @@ def test_notebook_verdicts_are_the_pages(tmp_path):
 
 
 def test_a_fitted_setups_checks_never_count_in_a_figure_verdict(tmp_path):
-    from stickslip.notebook import figure_verdicts
+    from stickslip.presentation.notebook import figure_verdicts
 
     (tmp_path / "claims").mkdir()
     row = "section: '9', figures: [21], quote: q, kind: trend, dataset: d.nc, variable: v, coord: c, sign: 1"
@@ -279,7 +279,7 @@ def test_a_fitted_setups_checks_never_count_in_a_figure_verdict(tmp_path):
 def test_rendered_notebook_lets_wide_tables_scroll():
     import nbformat
 
-    from stickslip.notebook import READER_CSS, to_html
+    from stickslip.presentation.notebook import READER_CSS, to_html
 
     nb = nbformat.v4.new_notebook()
     cell = nbformat.v4.new_code_cell("wide")

@@ -22,7 +22,7 @@ def test_onedof_figure_draws_the_datasets_samples():
     matplotlib.use("Agg")
     import numpy as np
 
-    from stickslip.plots import onedof_figure
+    from stickslip.presentation.plots import onedof_figure
 
     ds = _run_dataset()
     fig = onedof_figure({"exact": ds}, {"title": "t", "plot": "timeseries"}, reading="consistent_caption")
@@ -41,7 +41,7 @@ def test_a_failed_run_is_written_out_not_drawn():
 
     matplotlib.use("Agg")
 
-    from stickslip.plots import onedof_figure
+    from stickslip.presentation.plots import onedof_figure
 
     ds = _run_dataset()
     failed = ds.copy()

@@ -7,7 +7,7 @@ import pytest
 matplotlib.use("Agg")
 
 from stickslip.fe.params import FrictionTable  # noqa: E402
-from stickslip.fe_plots import fe_readings_figure, fe_scene_figure  # noqa: E402
+from stickslip.presentation.fe_plots import fe_readings_figure, fe_scene_figure  # noqa: E402
 from stickslip.studies.fe import result_dataset, scene_dataset  # noqa: E402
 
 MAPPING = {

@@ -7,7 +7,7 @@ import numpy as np  # noqa: E402
 import xarray as xr  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset, write_dataset  # noqa: E402
-from stickslip.plots import critical_speed_figure  # noqa: E402
+from stickslip.presentation.plots import critical_speed_figure  # noqa: E402
 
 readings = list(snakemake.params.readings)
 data = {r: read_dataset(p) for r, p in zip(readings, snakemake.input)}

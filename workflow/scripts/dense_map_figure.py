@@ -6,7 +6,7 @@ matplotlib.use("Agg")
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.io.progress import log_to_file  # noqa: E402
-from stickslip.plots import dense_map_figure  # noqa: E402
+from stickslip.presentation.plots import dense_map_figure  # noqa: E402
 
 log_to_file(snakemake.log[0])  # noqa: F821
 ds = read_dataset(snakemake.input[0])  # noqa: F821

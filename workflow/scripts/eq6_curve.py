@@ -6,7 +6,7 @@ matplotlib.use("Agg")
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
-from stickslip.plots import eq6_figure  # noqa: E402
+from stickslip.presentation.plots import eq6_figure  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
 from stickslip.studies.specs import baseline_spec  # noqa: E402
 

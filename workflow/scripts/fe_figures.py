@@ -8,14 +8,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from stickslip.fe_plots import (  # noqa: E402
+from stickslip.io.netcdf import read_dataset  # noqa: E402
+from stickslip.io.progress import log_to_file  # noqa: E402
+from stickslip.presentation.fe_plots import (  # noqa: E402
     fe_convergence_figure,
     fe_readings_figure,
     fe_scene_figure,
     fe_stability_figure,
 )
-from stickslip.io.netcdf import read_dataset  # noqa: E402
-from stickslip.io.progress import log_to_file  # noqa: E402
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 inp, out, par = snakemake.input, snakemake.output, snakemake.params  # noqa: F821

@@ -8,7 +8,7 @@ matplotlib.use("Agg")
 
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
-from stickslip.methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
+from stickslip.presentation.methods_plots import failure_map_figure, work_precision_figure  # noqa: E402
 
 sm = snakemake  # noqa: F821
 for nc, png in zip(sm.input.work_precision, sm.output.work_precision):

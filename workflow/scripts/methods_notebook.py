@@ -1,9 +1,9 @@
-"""Thin wiring: render the methods notebook (stickslip.notebook.render), its output in the rule's log."""
+"""Thin wiring: render the methods notebook (presentation.notebook.render), its output in the log."""
 
 import contextlib
 from pathlib import Path
 
-from stickslip.notebook import render
+from stickslip.presentation.notebook import render
 
 log = open(snakemake.log[0], "w")  # noqa: F821 (injected by Snakemake)
 with log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):

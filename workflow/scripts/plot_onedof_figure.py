@@ -7,7 +7,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
-from stickslip.plots import onedof_figure  # noqa: E402
+from stickslip.presentation.plots import onedof_figure  # noqa: E402
 
 for reading, out in zip(snakemake.params.figure["readings"], snakemake.output):
     datasets = {m: read_dataset(p) for m, p in snakemake.params.datasets[reading].items()}

@@ -7,7 +7,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
-from stickslip.plots import sweep_figure  # noqa: E402
+from stickslip.presentation.plots import sweep_figure  # noqa: E402
 
 for reading, out in zip(snakemake.params.readings, snakemake.output):
     paper, dense = (read_dataset(p) for p in snakemake.params.datasets[reading])

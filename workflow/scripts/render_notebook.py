@@ -4,7 +4,7 @@ usage: python workflow/scripts/render_notebook.py notebooks/NAME.py results/note
 
 PARAMS (optional JSON text) is set as ``PARAMS`` in a cell before the notebook's first code cell; the HTML
 shows neither that cell nor any code (each cell's code is in a collapsed block, the source linked at the
-top; see stickslip.notebook.render). The executed notebook, parameters included, is written next to the
+top; see presentation.notebook.render). The executed notebook, parameters included, is written next to the
 HTML (.ipynb). Runs in the current directory (the repo root under Snakemake); exits non-zero if a cell fails.
 """
 
@@ -12,7 +12,7 @@ import json
 import sys
 from pathlib import Path
 
-from stickslip.notebook import render
+from stickslip.presentation.notebook import render
 
 if __name__ == "__main__":
     if len(sys.argv) not in (3, 4):

@@ -1,9 +1,9 @@
 """Thin wiring: every comparison notebook of the config in one job, ``threads`` kernels at a time
-(stickslip.notebook.render_all); exits non-zero naming each notebook that failed (its log has why)."""
+(presentation.notebook.render_all); exits non-zero naming each notebook that failed (its log has why)."""
 
 import sys
 
-from stickslip.notebook import render_all
+from stickslip.presentation.notebook import render_all
 
 params = snakemake.params.nb_params  # noqa: F821 - {name: PARAMS}, in the order of the outputs
 jobs = [

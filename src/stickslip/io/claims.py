@@ -79,7 +79,7 @@ class ClaimResult:
 
 
 def _row_errors(exc) -> str:
-    from ..pipeline.errors import typed_errors  # the config's format of a pydantic error: ``key: message``
+    from .typed_errors import typed_errors  # the config's format of a pydantic error: ``key: message``
 
     return typed_errors(exc).replace("\n", "; ")
 
@@ -90,8 +90,8 @@ def load_claims(paths) -> list[dict]:
     read them by key) with the file they came from in ``_file``."""
     from pydantic import ValidationError
 
-    from ..pipeline.yaml_files import YamlFileError, load_yaml
     from .claim_rows import ClaimRow
+    from .yaml_files import YamlFileError, load_yaml
 
     claims, seen = [], {}
     for path in sorted(Path(p) for p in paths):

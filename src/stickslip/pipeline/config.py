@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
+from ..io.typed_errors import typed_errors
+from ..io.yaml_files import YamlFileError, load_yaml
 from ..model.params import ParameterError
-from .errors import typed_errors
-from .yaml_files import YamlFileError, load_yaml
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 

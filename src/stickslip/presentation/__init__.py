@@ -1,1 +1,3 @@
-"""Presentation of a run: the replication page (``results/index.html``) and its verdict rule."""
+"""Presentation of a run: figures drawn from datasets (``plots``, ``fe_plots``, ``methods_plots``), the
+notebooks' helpers (``notebook``) and the replication page (``page``, ``verdicts``, ``sources``). Nothing in
+the science imports this package."""

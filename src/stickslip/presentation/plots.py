@@ -1,7 +1,7 @@
 """Figures of the reproduced results (presentation only: reads datasets, draws).
 
 The claims-table helpers the notebooks use (``claims_frame``, ``styled_claims``, ``status_counts``,
-``reported_value``, ``claims_readings``) live in ``stickslip.notebook``.
+``reported_value``, ``claims_readings``) live in ``stickslip.presentation.notebook``.
 """
 
 from __future__ import annotations
@@ -286,7 +286,7 @@ def dense_map_figure(ds, names, title: str):
 
 def metric_units(name: str) -> str:
     """A registered metric's units as a reader writes them (mm/s for the UDUNITS mm s-1)."""
-    from .analysis.metrics import METRICS
+    from ..analysis.metrics import METRICS
 
     return METRICS[name].units.replace(" s-1", "/s") if name in METRICS else ""
 

@@ -2,7 +2,7 @@
 
 The notebooks in ``notebooks/`` are a paper's supplement: they read the pipeline's results and show them
 next to what the paper reports. This module holds what they share that is not a figure (figures are in
-``stickslip.plots``): reading the deviations table, the per-section *scorecard* (status counts per reading,
+``presentation.plots``): reading the deviations table, the per-section *scorecard* (status counts per reading,
 then the colour-coded claims table with each claim's margin to its threshold and its ensemble spread), and
 ``render``, which executes a jupytext notebook and writes HTML for a reader: no code cells (each cell's code
 a click away in a collapsed block, the notebook's source linked at the top) and no injected parameters.
@@ -16,7 +16,7 @@ import os
 from pathlib import Path
 
 from stickslip.io.claims import STATUSES
-from stickslip.plots import STATUS_COLOUR
+from stickslip.presentation.plots import STATUS_COLOUR
 
 #: Columns of the claims table a notebook shows, in order (the status early, so it is on screen).
 CLAIM_COLUMNS = (
