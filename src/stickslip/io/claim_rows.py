@@ -127,20 +127,3 @@ class ClaimRow(_Strict):
         if len(set(self.figures)) != len(self.figures):
             raise ValueError("figures: a figure is listed twice")
         return self
-
-    def per_reading_keys(self) -> dict[str, list[str]]:
-        """key -> reading names used by its per-reading mapping (``default`` excluded)."""
-        out = {}
-        for key in ("expected", "note"):
-            value = getattr(self, key)
-            if isinstance(value, dict):
-                out[key] = [k for k in value if k != "default"]
-        return out
-
-    def datasets(self) -> list[tuple[str, str]]:
-        """(key, dataset path template) of every dataset the row reads."""
-        refs = [("dataset", self.dataset)]
-        refs += [
-            (f"{side}.dataset", getattr(self, side).dataset) for side in ("lhs", "rhs") if getattr(self, side)
-        ]
-        return [(k, p) for k, p in refs if p is not None]

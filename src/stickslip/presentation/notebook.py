@@ -212,11 +212,11 @@ def figure_verdicts(figures, csv_path="results/claims/deviations.csv", claims_gl
 
     from stickslip.io.claims import load_claims, read_table
     from stickslip.presentation.page import claim_figures
-    from stickslip.presentation.verdicts import best_reading, figure_verdict, rows_in_reading
+    from stickslip.presentation.verdicts import best_reading, figure_verdict, fitted_claims, rows_in_reading
     from stickslip.studies.ranking import rank_readings
 
     claims = load_claims(sorted(glob(claims_glob)))
-    fitted = {c["id"] for c in claims if c.get("fit")}  # a fitted setup's checks never count in a verdict
+    fitted = fitted_claims(claims)
     rows = [r for r in read_table(csv_path) if r["claim"] not in fitted]
     figs_of = claim_figures(claims)
     order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]

@@ -26,6 +26,7 @@ from .verdicts import (
     VERDICTS,
     best_reading,
     figure_verdict,
+    fitted_claims,
     readings_by_preference,
     rows_in_reading,
     status_counts,
@@ -200,7 +201,7 @@ class PageBuilder:
         self.figures_of = claim_figures(self.claims)
         self.claim = {c["id"]: c for c in self.claims}
         #: Claims that check a fitted setup: listed on their figure's card, never counted in a verdict.
-        self.fitted = {c["id"] for c in self.claims if c.get("fit")}
+        self.fitted = fitted_claims(self.claims)
         self.rows = read_table(self.results / "claims" / "deviations.csv")
         self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
         self.order = [r["reading"] for r in self.ranking]

@@ -24,6 +24,12 @@ VERDICT_RULE = {
 }
 
 
+def fitted_claims(claims: list[dict]) -> set[str]:
+    """Ids of the claims that check a setup fitted to the paper's numbers (``fit: true``): shown beside a
+    figure's forward verdict, never counted in it."""
+    return {c["id"] for c in claims if c.get("fit")}
+
+
 def figure_verdict(statuses) -> str:
     """``reproduced`` if every decided status is reproduced, ``partly`` if some are, ``deviating`` if none
     is, ``not comparable`` if no status is decided. ``statuses`` are claim statuses of one reading."""

@@ -22,7 +22,6 @@ from .events import (
     EventDrivenSolver,
     Segment,
     StickMotion,
-    _check_t_end,
     sample_segments,
     trajectory_from_segments,
 )
@@ -35,7 +34,6 @@ __all__ = [
     "first_exit_root",
     "sample_segments",
     "trajectory_from_segments",
-    "_check_t_end",
 ]
 
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
