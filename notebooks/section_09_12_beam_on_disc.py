@@ -39,7 +39,7 @@ import xarray as xr
 import yaml
 from IPython.display import Image, Markdown, display
 
-from stickslip.presentation.notebook import claims_frame, status_counts, styled_claims
+from stickslip.presentation.notebook import claims_frame, status_counts, styled_claims, verdicts
 
 claims = claims_frame("results/claims/deviations.csv", sections=["9", "10", "11", "12"])
 per_reading = pd.read_csv("results/fe/readings_claims.csv", dtype={"section": str})
@@ -51,6 +51,45 @@ stab = xr.load_dataset("results/fe/stability.nc")
 
 def scene_claims(prefix):
     return styled_claims(claims[claims["claim"].str.startswith(prefix)])
+
+
+# %% [markdown]
+# ## Verdicts per paper figure
+#
+# Each figure judged from its claims in the FE reading the claims table checks, as on the replication page
+# (checks of the fitted setup are not counted).
+
+# %%
+display(verdicts(list(range(19, 37))))
+
+# %% [markdown]
+# ## Verdicts: what the stated setup can produce
+#
+# Every Section 9–12 claim with the paper's number (`reported`; for a comparison the model's right-hand
+# side), the project's, its status, and the verdict with the closed-form estimate that decides it
+# (`stickslip.fe.mechanics`, each tested against the FE model): reproduced, impossible under the stated
+# setup, or reproduced under a setup the paper implies. Rows `s9_fit_*` read the tip-support fit
+# (`results/fe/setup_fit.nc`), a FIT beside the forward replication: one support stiffness reproduces
+# Section 9's magnitudes, separation and vertical motion together, and its growth claims conflict with it.
+
+# %%
+with open("config/claims/sections_09_12.yaml") as fh:
+    verdicts = {row["id"]: " ".join(str(row.get("note", "")).split()) for row in yaml.safe_load(fh)}
+default = per_reading[per_reading["reading"] == per_reading["reading"].iloc[0]]
+table = pd.DataFrame(
+    {
+        "claim": default["claim"],
+        "paper": default["reported"],
+        "project": default["measured"],
+        "status": default["status"],
+        "verdict and estimate": default["claim"].map(verdicts),
+    }
+)
+display(
+    table.style.format({"paper": "{:.4g}", "project": "{:.4g}"})
+    .hide(axis="index")
+    .set_properties(subset=["verdict and estimate"], **{"text-align": "left", "white-space": "normal"})
+)
 
 
 # %% [markdown]
@@ -182,32 +221,3 @@ cc = pd.DataFrame(
 )
 display(cc.style.format("{:.4g}").hide(axis="index"))
 display(Markdown(f"Largest |difference|: **{100 * float(stab.crosscheck_max_relative_difference):.1f} %**."))
-
-# %% [markdown]
-# ## Verdicts: what the stated setup can produce
-#
-# Every Section 9–12 claim with the paper's number (`reported`; for a comparison the model's right-hand
-# side), the project's, its status, and the verdict with the closed-form estimate that decides it
-# (`stickslip.fe.mechanics`, each tested against the FE model): reproduced, impossible under the stated
-# setup, or reproduced under a setup the paper implies. Rows `s9_fit_*` read the tip-support fit
-# (`results/fe/setup_fit.nc`), a FIT beside the forward replication: one support stiffness reproduces
-# Section 9's magnitudes, separation and vertical motion together, and its growth claims conflict with it.
-
-# %%
-with open("config/claims/sections_09_12.yaml") as fh:
-    verdicts = {row["id"]: " ".join(str(row.get("note", "")).split()) for row in yaml.safe_load(fh)}
-default = per_reading[per_reading["reading"] == per_reading["reading"].iloc[0]]
-table = pd.DataFrame(
-    {
-        "claim": default["claim"],
-        "paper": default["reported"],
-        "project": default["measured"],
-        "status": default["status"],
-        "verdict and estimate": default["claim"].map(verdicts),
-    }
-)
-display(
-    table.style.format({"paper": "{:.4g}", "project": "{:.4g}"})
-    .hide(axis="index")
-    .set_properties(subset=["verdict and estimate"], **{"text-align": "left", "white-space": "normal"})
-)
