@@ -69,6 +69,14 @@ CASES = {
     "ensemble_step_factor_above_one": ({"ensemble": {"step_factor": 1.5}}, ["ensemble.step_factor"]),
     # unknown or misspelt keys, in every config file's sections
     "top_level_typo": ({"onedoff": {}}, ["onedoff"]),
+    "baseline_unknown_scene": (
+        {"onedof": {"baseline": {"scene": "fig99"}}},
+        ["onedof.baseline.scene", "fig99"],
+    ),
+    "baseline_unknown_method": (
+        {"onedof": {"baseline": {"method": "rk99"}}},
+        ["onedof.baseline.method", "rk99"],
+    ),
     "onedof_defaults_typo": ({"onedof": {"defaults": {"t_ende": 1.0}}}, ["onedof.defaults.t_ende"]),
     "figure_plot_key_typo": ({"onedof": {"figures": {"fig03": {"plott": "phase"}}}}, ["fig03.plott"]),
     "figure_plot_value_typo": ({"onedof": {"figures": {"fig03": {"plot": "phse"}}}}, ["fig03.plot"]),
@@ -370,6 +378,7 @@ BAD_CLAIMS.update(
         "claims_value_without_unit": ([_without(VALUE_ROW, "unit")], ["zz_value", "unit"]),
         "claims_value_with_a_relation": ([_with(VALUE_ROW, relation=">")], ["zz_value", "relation"]),
         "claims_unknown_key": ([_with(VALUE_ROW, comparble=False)], ["zz_value", "comparble"]),
+        "claims_fit_flag_as_text": ([_with(VALUE_ROW, fit="yes")], ["zz_value", "fit"]),
         "claims_figure_not_in_the_paper": ([_with(VALUE_ROW, figures=[99])], ["zz_value", "figures", "99"]),
         "claims_figures_as_text": ([_with(VALUE_ROW, figures="2")], ["zz_value", "figures"]),
         "claims_figures_missing": ([_without(VALUE_ROW, "figures")], ["zz_value", "figures"]),
