@@ -11,7 +11,7 @@ mapping and on perturbed copies of it:
 * ``blas-threads-<n>``: the base mapping run with the BLAS limited to ``n`` threads (a different summation
   order in every BLAS call).
 
-Every data variable that has no ``time`` dimension (the metrics) gets a companion ``<name>_ensemble`` with a
+Every data variable on no time axis (the metrics) gets a companion ``<name>_ensemble`` with a
 leading ``ensemble_member`` dimension holding the value of every member (the base run first). The claims
 table takes its ``spread`` from these: a claim whose margin to its threshold is within 3 spreads is
 ``indistinguishable`` - never reproduced or deviating by luck.
@@ -113,12 +113,29 @@ def _run(build: Callable[[dict], xr.Dataset], mapping: dict, threads: int | None
 
 
 def metric_names(ds: xr.Dataset) -> list[str]:
-    """Data variables measured once per run (no time dimension, numeric)."""
+    """Data variables measured once per run: numeric, on no time axis (neither ``time`` nor a binned time
+    axis such as ``bin_time``: a series is drawn, not claimed, and would multiply the file by the members)."""
     return [
         name
         for name, var in ds.data_vars.items()
-        if "time" not in var.dims and np.issubdtype(var.dtype, np.number) and not name.endswith(SUFFIX)
+        if not any("time" in str(d) for d in var.dims)
+        and np.issubdtype(var.dtype, np.number)
+        and not name.endswith(SUFFIX)
     ]
+
+
+def step_member_values(ds: xr.Dataset) -> dict[str, np.ndarray]:
+    """Every metric's value in the ``step`` member (the run at the second step size); empty when the
+    ensemble has no such member. With ``step_factor`` 0.5 on a safety factor this is the step-halving run."""
+    labels = ds.coords.get(f"{MEMBER_DIM}_label")
+    if labels is None or "step" not in list(labels.values):
+        return {}
+    k = list(labels.values).index("step")
+    return {
+        name[: -len(SUFFIX)]: np.asarray(var.values[k], dtype=float)
+        for name, var in ds.data_vars.items()
+        if name.endswith(SUFFIX)
+    }
 
 
 def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:

@@ -17,6 +17,8 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+#: the step-halving factor of the time step (on the explicit safety factor)
+HALF_STEP = 0.5
 #: largest relative change under step halving that still counts as converged
 REL_TOL = 0.05
 #: absolute change per unit that always counts as converged (1e-4 of the smallest FE number the paper

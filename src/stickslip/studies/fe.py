@@ -14,13 +14,19 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.beam import cantilever_axial_frequencies, cantilever_bending_frequencies, modal_analysis
+from ..fe.beam import (
+    cantilever_axial_frequencies,
+    cantilever_bending_frequencies,
+    modal_analysis,
+    node_coordinates,
+)
 from ..fe.explicit import integrate, static_state
 from ..fe.metrics import trajectory_metrics, trend_sign, window_envelope
 from ..fe.params import FrictionTable
 from ..fe.reduced import contact_boundary, craig_bampton
 from ..fe.scene import SceneParams, build_scene
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
+from ..fe.step_halving import HALF_STEP
 
 INTERPRETATION = (
     "2-D frame elements (axial bar + Euler-Bernoulli bending stiffness, Rayleigh rotary inertia rho*I), "
@@ -109,12 +115,16 @@ def scene_mapping(fe_cfg: Mapping, name: str, reading: str | None = None) -> dic
 
 def effective_fe_config(config: Mapping) -> dict:
     """The ``fe`` config with the long-run switch applied: top-level ``fe_long_runs: true`` runs the scenes
-    for ``fe.long_runs.scene_t_end`` (the paper's 1 s) and the model comparison for
-    ``fe.long_runs.comparison_t_end`` (the paper's 0.65 s); the default build runs short windows."""
+    of every reading for ``fe.long_runs.scene_t_end`` (the paper's 1 s; by default only the first reading
+    does) and the model comparison for ``fe.long_runs.comparison_t_end`` (the paper's 0.65 s)."""
     fe = copy.deepcopy(dict(config["fe"]))
     if config.get("fe_long_runs", False):
         lr = fe.get("long_runs", {})
-        fe.setdefault("defaults", {}).setdefault("solver", {})["t_end"] = float(lr["scene_t_end"])
+        t_end = float(lr["scene_t_end"])
+        fe.setdefault("defaults", {}).setdefault("solver", {})["t_end"] = t_end
+        for reading in (fe.get("readings") or {}).values():  # the control readings' short windows too
+            if "t_end" in ((reading or {}).get("solver") or {}):
+                reading["solver"]["t_end"] = t_end
         fe.setdefault("comparison", {})["t_end"] = float(lr["comparison_t_end"])
     return fe
 
@@ -124,32 +134,62 @@ def comparison_mapping(fe_cfg: Mapping, name: str) -> dict:
     return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"t_end": fe_cfg["comparison"]["t_end"]}})
 
 
-def _natural_frequencies(scene) -> np.ndarray:
-    """Natural frequencies [Hz] of the beam with the contact held (bilateral normal constraint)."""
+def contact_held_modes(scene, n_modes: int = 40) -> tuple[np.ndarray, np.ndarray]:
+    """Natural frequencies [Hz] and mode shapes (free-DOF columns) of the beam with the contact held
+    (bilateral normal constraint)."""
     s = scene.system
     if scene.law.method == "fixed_normal" or not np.any(s.c_n):
-        return modal_analysis(s.K, s.M, 40)[0]
+        return modal_analysis(s.K, s.M, n_modes)
     from ..fe.stability import _null
 
     Z = _null(s.c_n)
-    return modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, 40)[0]
+    freq, phi = modal_analysis(Z.T @ s.K @ Z, Z.T @ s.M @ Z, n_modes)
+    return freq, Z @ phi
+
+
+def _natural_frequencies(scene) -> np.ndarray:
+    """Natural frequencies [Hz] of the beam with the contact held (bilateral normal constraint)."""
+    return contact_held_modes(scene)[0]
+
+
+def nodal_field(scene, q: np.ndarray, component: int) -> np.ndarray:
+    """Per-node values of one DOF component (0 axial, 1 vertical, 2 rotation) of a free-DOF vector q;
+    zero at constrained DOFs (the clamp, the held transverse motion of Section 10)."""
+    full = np.zeros(3 * scene.beam.n_nodes)
+    full[scene.beam.free] = q
+    return full[component::3].copy()
+
+
+#: recorded mid-span components: (name, DOF component), in the order of the recorded columns
+MIDSPAN_COMPONENTS = (("horizontal", 0), ("vertical", 1))
 
 
 def _midspan_dofs(scene) -> np.ndarray:
-    """Index (among the free DOFs) of the mid-span node's vertical DOF; empty where it is held."""
+    """Indices (among the free DOFs) of the mid-span node's axial and vertical DOFs, in the order of
+    MIDSPAN_COMPONENTS; -1 for a held DOF (its series is then zero)."""
     free = scene.beam.free
-    dof = 3 * (scene.params.beam.n_elements // 2) + 1
-    k = int(np.searchsorted(free, dof))
-    return np.array([k] if k < free.size and free[k] == dof else [], dtype=np.int64)
+    node = scene.params.beam.n_elements // 2
+    out = []
+    for _, comp in MIDSPAN_COMPONENTS:
+        dof = 3 * node + comp
+        k = int(np.searchsorted(free, dof))
+        out.append(k if k < free.size and free[k] == dof else -1)
+    return np.array(out, dtype=np.int64)
 
 
-def midspan_vertical(scene, r) -> tuple[np.ndarray, np.ndarray]:
-    """Vertical displacement (from the start) and velocity of the mid-span node, a node off the contact,
-    from the recorded states (only that DOF is recorded; zeros where the transverse motion is held)."""
-    if r.q_samples is None or r.q_samples.shape[1] == 0:
-        return np.zeros_like(r.t), np.zeros_like(r.t)
-    y = r.q_samples[:, 0]
-    return y - y[0], r.v_samples[:, 0].copy()
+def midspan_motion(scene, r, dofs: np.ndarray) -> dict:
+    """Displacement (from the start) and velocity of the mid-span node, a node off the contact, per
+    component: {'horizontal': (x, v), 'vertical': (y, v)}; zeros where that DOF is held."""
+    out = {}
+    col = 0
+    for (name, _), k in zip(MIDSPAN_COMPONENTS, dofs, strict=True):
+        if k < 0 or r.q_samples is None:
+            out[name] = (np.zeros_like(r.t), np.zeros_like(r.t))
+            continue
+        q = r.q_samples[:, col]
+        out[name] = (q - q[0], r.v_samples[:, col].copy())
+        col += 1
+    return out
 
 
 def run_scene(
@@ -184,6 +224,7 @@ def run_scene(
             int(reduced.get("n_axial_modes", 1)),
         )
     sp = p.solver
+    mid = _midspan_dofs(scene) if midspan and not reduced else np.zeros(0, np.int64)
     r = integrate(
         system,
         scene.law,
@@ -195,14 +236,14 @@ def run_scene(
         stiffness_damping=sp.stiffness_damping,
         progress=progress,
         record_state=midspan and not reduced,
-        record_dofs=_midspan_dofs(scene) if midspan and not reduced else None,
+        record_dofs=mid[mid >= 0] if midspan and not reduced else None,
     )
     if midspan and not reduced:
-        r.extra["midspan"] = midspan_vertical(scene, r)
-        r.q_samples = r.v_samples = None  # only the mid-span series is kept
+        r.extra["midspan"] = midspan_motion(scene, r, mid)
+        r.q_samples = r.v_samples = None  # only the mid-span series are kept
     m = trajectory_metrics(r, _natural_frequencies(scene))
     if "midspan" in r.extra:
-        y, vy = r.extra["midspan"]
+        y, vy = r.extra["midspan"]["vertical"]
         half = r.t >= 0.5 * r.t[-1]
         m["midspan_vertical_amplitude"] = float(0.5 * (y[half].max() - y[half].min()))
         m["midspan_max_abs_vertical_velocity"] = float(np.abs(vy).max())
@@ -253,13 +294,34 @@ SERIES = {
     "normal_force": ("N", "contact normal force"),
     "friction_force": ("N", "friction force on the beam along the disc velocity"),
     "slip_velocity": ("mm s-1", "beam minus disc tangential velocity at the contact point"),
-    "midspan_vertical_displacement": ("mm", "vertical displacement of the mid-span node (off the contact)"),
+    "midspan_horizontal_displacement": (
+        "mm",
+        "horizontal displacement of the mid-span node (off the contact) from its initial position",
+    ),
+    "midspan_horizontal_velocity": ("mm s-1", "horizontal velocity of the mid-span node (off the contact)"),
+    "midspan_vertical_displacement": (
+        "mm",
+        "vertical displacement of the mid-span node (off the contact) from its initial position",
+    ),
     "midspan_vertical_velocity": ("mm s-1", "vertical velocity of the mid-span node (off the contact)"),
 }
 
+#: series stored per time bin (min, max, mean) over the whole run
+BINNED = (
+    "horizontal_displacement",
+    "vertical_displacement",
+    "horizontal_velocity",
+    "vertical_velocity",
+    "midspan_horizontal_displacement",
+    "midspan_horizontal_velocity",
+    "midspan_vertical_displacement",
+    "midspan_vertical_velocity",
+    "normal_force",
+)
+
 
 def _series(r) -> dict:
-    return {
+    out = {
         "horizontal_displacement": r.x - r.x[0],
         "vertical_displacement": r.y - r.y[0],
         "horizontal_velocity": r.vx,
@@ -267,9 +329,13 @@ def _series(r) -> dict:
         "normal_force": r.normal_force,
         "friction_force": r.friction_force,
         "slip_velocity": r.slip_velocity,
-        "midspan_vertical_displacement": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[0],
-        "midspan_vertical_velocity": r.extra.get("midspan", (np.zeros_like(r.t),) * 2)[1],
     }
+    zeros = (np.zeros_like(r.t), np.zeros_like(r.t))
+    for comp in ("horizontal", "vertical"):
+        x, v = r.extra.get("midspan", {}).get(comp, zeros)
+        out[f"midspan_{comp}_displacement"] = x
+        out[f"midspan_{comp}_velocity"] = v
+    return out
 
 
 def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> xr.Dataset:
@@ -297,14 +363,7 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     edges = np.arange(0.0, t[-1] + bin_width, bin_width)
     if edges.size < 2:
         edges = np.array([0.0, t[-1]])
-    for k in (
-        "horizontal_displacement",
-        "vertical_displacement",
-        "horizontal_velocity",
-        "vertical_velocity",
-        "midspan_vertical_displacement",
-        "midspan_vertical_velocity",
-    ):
+    for k in BINNED:
         u, ln = SERIES[k]
         lo, hi, mean = _binned(t, ser[k], edges)
         data[f"{k}_min"] = ("bin_time", lo, {"units": u, "long_name": f"minimum per bin of the {ln}"})
@@ -353,6 +412,49 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     )
 
 
+#: modes whose frequency and shape a scene dataset keeps
+N_SHAPE_MODES = 10
+
+
+def shape_variables(scene, q_static: np.ndarray) -> dict:
+    """Along the beam (``node_position``): the static deflection in contact and the first modes with the
+    contact held (shapes scaled so that their largest nodal displacement is +1), for
+    the paper's Figs. 22 and 31 (mode shape, deflected beam)."""
+    freq, phi = contact_held_modes(scene, N_SHAPE_MODES)
+    x = node_coordinates(scene.params.beam.length, scene.params.beam.n_elements)
+    shapes = {
+        c: np.array([nodal_field(scene, phi[:, k], i) for k in range(freq.size)])
+        for c, i in (("horizontal", 0), ("vertical", 1))
+    }
+    scale = np.maximum(np.abs(shapes["horizontal"]).max(axis=1), np.abs(shapes["vertical"]).max(axis=1))
+    both = np.concatenate([shapes["horizontal"], shapes["vertical"]], axis=1)
+    sign = np.sign(both[np.arange(freq.size), np.abs(both).argmax(axis=1)])
+    pos = {"units": "mm", "long_name": "position of the node along the beam from the clamp"}
+    out = {
+        "node_position": ("node_position", x, pos),
+        "natural_frequency": (
+            "mode",
+            freq,
+            {"units": "Hz", "long_name": "natural frequencies with contact held"},
+        ),
+    }
+    for c in ("horizontal", "vertical"):
+        out[f"static_deflection_{c}"] = (
+            "node_position",
+            nodal_field(scene, q_static, 0 if c == "horizontal" else 1),
+            {
+                "units": "mm",
+                "long_name": f"{c} displacement of the beam axis in the static equilibrium in contact",
+            },
+        )
+        out[f"mode_shape_{c}"] = (
+            ("mode", "node_position"),
+            shapes[c] * (sign / np.where(scale > 0, scale, 1.0))[:, None],
+            {"units": "1", "long_name": f"{c} component of the mode shape with contact held (largest = 1)"},
+        )
+    return out
+
+
 def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> xr.Dataset:
     """Pure build of one scene's dataset from its merged config mapping (the ensemble contract:
     ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
@@ -360,12 +462,7 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> 
     r, m, scene = run_scene(mapping, friction, midspan=True)
     out = dict(mapping.get("output", {}) or {})
     ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
-    nat = _natural_frequencies(scene)[:10]
-    ds["natural_frequency"] = (
-        "mode",
-        nat,
-        {"units": "Hz", "long_name": "natural frequencies with contact held"},
-    )
+    ds = ds.assign(shape_variables(scene, r.q_static))
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",
@@ -423,7 +520,7 @@ def setup_fit_dataset(mapping: Mapping, friction: FrictionTable, stiffness: floa
 def halved_step(mapping: Mapping) -> dict:
     """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
     sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
-    return deep_merge(mapping, {"solver": {"safety_factor": 0.5 * sf}})
+    return deep_merge(mapping, {"solver": {"safety_factor": HALF_STEP * sf}})
 
 
 def half_step_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
