@@ -83,3 +83,33 @@ def test_friction_table_semantics(tmp_path):
     assert t.slope(1.0) == 0.0
     with pytest.raises(ValueError, match="speeds"):
         FrictionTable((0.1, 0.2), (0.5, 0.4))
+
+
+def test_mode_amplitude_recovers_a_growing_mode_under_fast_chatter():
+    """Complex demodulation: a 366 Hz component growing at 0.4 1/s under a 12.9 kHz chatter of twice its
+    size and an offset comes out at its own amplitude, and its log-slope is the growth rate."""
+    from stickslip.fe.metrics import leading_growth_rate, mode_amplitude
+
+    t = np.arange(0.0, 1.0, 2.5e-6)
+    x = 3e-5 + 1e-5 * np.exp(0.4 * t) * np.sin(2 * np.pi * 366.0 * t) + 2e-5 * np.sin(2 * np.pi * 12900 * t)
+    tc, amp = mode_amplitude(t, x, 366.0, 0.05)
+    np.testing.assert_allclose(amp, 1e-5 * np.exp(0.4 * tc), rtol=2e-3)
+    rate, end = leading_growth_rate(tc, amp)
+    assert rate == pytest.approx(0.4, rel=1e-2) and end == pytest.approx(tc[-1])
+
+
+def test_leading_growth_rate_stops_at_a_collapse_and_keeps_a_decay_whole():
+    t = np.linspace(0.0, 1.0, 21)
+    grow = np.exp(0.5 * t)
+    collapsed = np.where(t < 0.42, grow, 0.8 * grow)  # a burst ends the growth at 0.42 s
+    rate, end = leading_growth_rate_of(t, collapsed)
+    assert rate == pytest.approx(0.5, rel=1e-9) and end == pytest.approx(0.4)
+    decay = np.exp(-16.5 * t)  # falls below 95 % at once but never grew: fitted over every sample
+    assert leading_growth_rate_of(t, decay) == (pytest.approx(-16.5, rel=1e-9), pytest.approx(1.0))
+    assert np.isnan(leading_growth_rate_of(t[:2], grow[:2])[0])
+
+
+def leading_growth_rate_of(t, a):
+    from stickslip.fe.metrics import leading_growth_rate
+
+    return leading_growth_rate(t, a)

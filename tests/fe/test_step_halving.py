@@ -28,6 +28,25 @@ def test_rule_relative_and_floor():
     assert list(converged([1.0, 1.0], [1.01, 2.0], "mm")) == [True, False]
 
 
+def test_a_growth_rate_is_checked_by_its_sign_and_its_change_is_kept():
+    """A growth rate is claimed by its sign only: 0.56 -> 0.53 1/s (5.3 %, the 0.5 mm/s bending mode) stays,
+    with the change in its attribute; a sign flip or a vanishing rate is not converged; other metrics keep
+    the 5 % rule."""
+    ds = xr.Dataset(
+        {
+            "first_mode_growth_rate": ((), 0.5645, {"units": "s-1"}),
+            "horizontal_amplitude": ((), 0.5645, {"units": "mm"}),
+        }
+    )
+    out = apply_step_halving(ds, {"first_mode_growth_rate": 0.5355, "horizontal_amplitude": 0.5355})
+    assert float(out["first_mode_growth_rate"]) == 0.5645
+    assert "sign converged, value moves 5.1 %" in out["first_mode_growth_rate"].attrs["step_halving"]
+    assert np.isnan(float(out["horizontal_amplitude"]))
+    flipped = apply_step_halving(ds, {"first_mode_growth_rate": -0.01})
+    assert np.isnan(float(flipped["first_mode_growth_rate"]))
+    assert out.attrs["step_halving_not_converged"] == "horizontal_amplitude"
+
+
 def test_masks_scalars_windows_and_sweep_members():
     ds = xr.Dataset(
         {

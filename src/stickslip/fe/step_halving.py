@@ -36,10 +36,23 @@ NOT_CHECKED = (
     "vertical_velocity_trend",
     "horizontal_displacement_trend",
 )
+#: metrics whose claims read only their sign (a growth rate: does the mode grow or decay): converged when
+#: both steps give the same non-zero sign; a value that moves beyond REL_TOL keeps that change in its
+#: ``step_halving`` attribute (the claims table's ensemble, which holds the half-step run, decides whether
+#: the sign is beyond the noise)
+SIGN_ONLY = ("first_mode_growth_rate",)
 RULE = (
     f"converged when |m(dt/2) - m(dt)| <= {REL_TOL:g} max(|m(dt)|, |m(dt/2)|) or <= the unit's floor "
     + ", ".join(f"{v:g} {k}" for k, v in ABS_FLOOR.items())
 )
+
+
+def same_sign(full, half) -> np.ndarray:
+    """Element-wise: both finite, non-zero and of one sign."""
+    a = np.asarray(full, dtype=float)
+    b = np.asarray(half, dtype=float)
+    with np.errstate(invalid="ignore"):
+        return np.isfinite(a) & np.isfinite(b) & (np.sign(a) == np.sign(b)) & (a != 0)
 
 
 def converged(full, half, unit: str) -> np.ndarray:
@@ -68,6 +81,12 @@ def apply_step_halving(ds: xr.Dataset, half: Mapping[str, object], along: str | 
         unit = str(var.attrs.get("units", "1"))
         hv = np.asarray(h, dtype=float).reshape(var.shape)
         ok = converged(var.values, hv, unit)
+        sign_only = name in SIGN_ONLY and not np.all(ok) and np.all(same_sign(var.values, hv))
+        if sign_only:
+            change = float(np.max(np.abs(hv - var.values) / np.abs(var.values)))
+            note = f"sign converged, value moves {100 * change:.1f} % at half step"
+            new[name] = (var.dims, var.values, {**var.attrs, "step_halving": note})
+            ok = np.ones_like(ok)
         if along is not None and along in var.dims:
             bad = ~ok
         else:

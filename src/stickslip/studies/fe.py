@@ -21,7 +21,13 @@ from ..fe.beam import (
     node_coordinates,
 )
 from ..fe.explicit import integrate, static_state
-from ..fe.metrics import trajectory_metrics, trend_sign, window_envelope
+from ..fe.metrics import (
+    leading_growth_rate,
+    mode_amplitude,
+    trajectory_metrics,
+    trend_sign,
+    window_envelope,
+)
 from ..fe.params import FrictionTable
 from ..fe.reduced import contact_boundary, craig_bampton
 from ..fe.scene import SceneParams, build_scene
@@ -79,6 +85,16 @@ UNITS = {
     "horizontal_nearest_mode_ratio": ("1", "horizontal dominant frequency over nearest natural frequency"),
     "vertical_nearest_mode_ratio": ("1", "vertical dominant frequency over nearest natural frequency"),
     "disc_surface_speed": ("mm s-1", "disc surface speed at the contact"),
+    "first_mode_growth_rate": (
+        "s-1",
+        "growth rate of the first contact-held mode's horizontal amplitude at node 1 (leading segment)",
+    ),
+    "first_mode_growth_end": ("s", "end of the leading segment the first-mode growth rate is fitted over"),
+    "first_mode_growth_rate_linear": (
+        "s-1",
+        "linearised sliding system's growth rate of the first contact-held mode (eigen-analysis, mu'(V))",
+    ),
+    "first_mode_frequency": ("Hz", "first natural frequency with contact held"),
     "horizontal_velocity_trend": ("1", "sign of the trend of the horizontal velocity envelope"),
     "vertical_velocity_trend": ("1", "sign of the trend of the vertical velocity envelope"),
     "horizontal_displacement_trend": ("1", "sign of the trend of the horizontal displacement envelope"),
@@ -192,6 +208,53 @@ def midspan_motion(scene, r, dofs: np.ndarray) -> dict:
     return out
 
 
+#: demodulation window of the first-mode amplitude [s] (18 periods of the 366 Hz bending mode)
+MODE_WINDOW = 0.05
+
+
+def linear_growth_rate(scene, frequency: float, solver) -> float:
+    """Re(lambda) [s-1] of the linearised sliding system's eigenvalue nearest ``frequency`` [Hz]: the
+    mode's negative-damping growth rate from mu'(V) at the disc speed, with the scene's Rayleigh damping
+    (stickslip.fe.stability; the closed form -N mu' a^2/2 - beta w^2/2 of the propped bending mode agrees
+    with it to 1 %). Section 10 (normal force held, transverse motion held): the closed form for the first
+    axial mode, whose tangential amplitude at the tip is sqrt(2/(rho A L)) at unit modal mass."""
+    if scene.law.method == "fixed_normal":
+        from ..fe import mechanics as mc
+
+        b = scene.params.beam
+        return (
+            mc.negative_damping_growth_rate(
+                scene.law.fixed_normal_force,
+                scene.law.friction.slope(scene.law.disc_speed),
+                mc.axial_mode_tip_amplitude(b.rho * b.area, b.length),
+                2 * np.pi * frequency,
+                solver.stiffness_damping,
+            )
+            - 0.5 * solver.mass_damping
+        )
+    lam = sliding_eigenvalues(
+        scene.system,
+        scene.law,
+        mass_damping=solver.mass_damping,
+        stiffness_damping=solver.stiffness_damping,
+    )
+    return float(lam[np.argmin(np.abs(np.abs(lam.imag) / (2 * np.pi) - frequency))].real)
+
+
+def first_mode_growth(scene, r, frequency: float, solver) -> tuple[dict, tuple]:
+    """The first contact-held mode's growth at node 1: metrics (the growth rate fitted to the leading
+    segment of its horizontal amplitude, stickslip.fe.metrics, and the linear estimate of that rate,
+    linear_growth_rate) and the amplitude series (window centres [s], amplitudes [mm]) per MODE_WINDOW."""
+    tc, amp = mode_amplitude(r.t, r.x - r.x[0], frequency, MODE_WINDOW)
+    rate, end = leading_growth_rate(tc, amp)
+    return {
+        "first_mode_growth_rate": rate,
+        "first_mode_growth_end": end,
+        "first_mode_growth_rate_linear": linear_growth_rate(scene, frequency, solver),
+        "first_mode_frequency": float(frequency),
+    }, (tc, amp)
+
+
 def run_scene(
     mapping: Mapping,
     friction: FrictionTable,
@@ -241,7 +304,10 @@ def run_scene(
     if midspan and not reduced:
         r.extra["midspan"] = midspan_motion(scene, r, mid)
         r.q_samples = r.v_samples = None  # only the mid-span series are kept
-    m = trajectory_metrics(r, _natural_frequencies(scene))
+    nat = _natural_frequencies(scene)
+    m = trajectory_metrics(r, nat)
+    growth, r.extra["first_mode_amplitude"] = first_mode_growth(scene, r, nat[0], sp)
+    m.update(growth)
     if "midspan" in r.extra:
         y, vy = r.extra["midspan"]["vertical"]
         half = r.t >= 0.5 * r.t[-1]
@@ -388,6 +454,16 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
             window_envelope(t, y)[1],
             {"units": u, "long_name": f"half peak-to-peak {k.replace('_', ' ')} per window"},
         )
+    if "first_mode_amplitude" in r.extra:
+        tc, amp = r.extra["first_mode_amplitude"]
+        data["first_mode_amplitude"] = (
+            "mode_window",
+            amp,
+            {"units": "mm", "long_name": "horizontal amplitude of the first contact-held mode at node 1"},
+        )
+        mode_window_time = tc
+    else:
+        mode_window_time = np.zeros(0)
     data["detail_windows"] = (
         ("detail_window", "bound"),
         np.array(windows, float),
@@ -408,6 +484,11 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
                 {"units": "s", "long_name": "bin centre"},
             ),
             "window_time": ("window", tw, {"units": "s", "long_name": "window centre time"}),
+            "mode_window_time": (
+                "mode_window",
+                mode_window_time,
+                {"units": "s", "long_name": "centre of the first-mode demodulation window"},
+            ),
         },
     )
 
