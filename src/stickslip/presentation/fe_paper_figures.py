@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, Rectangle
 
-from .fe_plots import STATE_COLOURS, band_columns, scaled_ylabel
+from .fe_plots import band_columns, grouped, scaled_ylabel, shade_states, state_legend_handles
 
 #: the running mean drawn over the band averages this many seconds (several periods of the 366 Hz mode)
 MEAN_SPAN = 0.01
@@ -85,6 +85,12 @@ TIME_SERIES = {
 #: the other paper figures: which section's scenes each one draws
 OTHER = {22: 9, 26: 10, 31: 11, 34: 12}
 PAPER_FIGURE_NUMBERS = tuple(range(21, 37))
+#: how the sketches name each contact method (stickslip.fe.params.ContactParams.method)
+METHOD_NOTE = {
+    "kinematic": "kinematic contact (exact\nnon-penetration, may separate)",
+    "penalty": "penalty contact",
+    "fixed_normal": "normal force held at the\nstatic value (no separation)",
+}
 
 
 def section_of(number: int) -> int:
@@ -124,10 +130,9 @@ def _running_mean(ds, var, span=MEAN_SPAN):
     t = ds.bin_time.values
     dt = float(np.median(np.diff(t))) if t.size > 1 else span
     k = max(1, int(round(_mean_span(ds, span) / dt)))
-    m = t.size // k * k
-    if m == 0:
+    if k == 1 or t.size == 0:
         return t, ds[f"{var}_mean"].values
-    return t[:m].reshape(-1, k).mean(axis=1), ds[f"{var}_mean"].values[:m].reshape(-1, k).mean(axis=1)
+    return grouped(t, k, np.nanmean), grouped(ds[f"{var}_mean"].values, k, np.nanmean)
 
 
 def _sci(ax):
@@ -184,25 +189,6 @@ def _envelope(ax, ds, var, colour):
     edges = np.concatenate([tw - w / 2, [tw[-1] + w / 2]])
     for sgn, label in ((1, f"running envelope: ± half peak-to-peak per {w:.2g} s"), (-1, None)):
         ax.stairs(centre + sgn * env, edges, baseline=None, color=colour, lw=1.6, ls="--", label=label)
-
-
-def _shade_states(ax, t, state):
-    """Contact state behind a full-resolution window: one collection per state, no per-run patches."""
-    for code, (name, colour) in STATE_COLOURS.items():
-        on = state == code
-        if on.any():
-            ax.fill_between(
-                t,
-                0,
-                1,
-                where=on,
-                step="post",
-                color=colour,
-                alpha=0.2,
-                lw=0,
-                transform=ax.get_xaxis_transform(),
-                label=name,
-            )
 
 
 def _paper_lines(ax, rows, unit):
@@ -286,7 +272,8 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         ax.set_title(f"{scene}: {_speed_label(ds)}", fontsize=9, pad=30 if spec.envelope else 19)
         _legend_above(ax, ncol=2 if spec.envelope else 3)
         _band(axes["midspan"], ds, f"midspan_{spec.variable}", "C2", "mid-span node (off the contact)")
-        _legend_above(axes["midspan"], ncol=2)
+        if j == 0:  # the rows below node 1 draw the same things in every column: one legend per row
+            _legend_above(axes["midspan"], ncol=2)
         if "normal" in axes:
             ax = axes["normal"]
             _band(ax, ds, "normal_force", "C4", "normal force", mean=False)
@@ -295,7 +282,8 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 ax.axhline(
                     float(ds["static_normal_force"]), color="0.2", ls=":", lw=1.2, label="static N (weight)"
                 )
-            _legend_above(ax, ncol=3)
+            if j == 0:
+                _legend_above(ax, ncol=3)
         for r, label, u in (
             ("node1", f"{short}\nnode 1", ulab),
             ("midspan", f"{short}\nmid-span", ulab),
@@ -311,7 +299,6 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         t0, t1 = ds.detail_windows.values[-1]
         m = (ds.time.values >= t0) & (ds.time.values <= t1)
         t = ds.time.values[m]
-        _shade_states(ax, t, ds.contact_state.values[m])
         y = ds[spec.variable].values[m]
         base, label = 0.0, f"{short}\nnode 1"
         # a ripple on a large offset (the held section 10 scene): draw the ripple about a rounded mean
@@ -319,11 +306,11 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
             base = float(f"{np.mean(y):.3g}")
             label = f"{short} node 1\n− {base:g} {ulab}"
         ax.plot(t, y - base, color="C0", lw=0.7, label="node 1, every sample")
-        if y.size and float(np.nanmax(np.abs(y))) < 1e-9:
+        if y.size and float(np.nanmax(np.abs(y))) < 1e-13:  # round-off: the node is held by the contact
             ax.text(
                 0.5,
                 0.03,
-                "round-off only: node 1 is held on the disc",
+                "round-off level only: node 1 is held on the disc",
                 transform=ax.transAxes,
                 ha="center",
                 fontsize=8,
@@ -331,12 +318,22 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
             )
         ax.set_xlim(t0, t1)
+        shade_states(ax, t, ds.contact_state.values[m], alpha=0.2)
         ax.set_xlabel(
             f"time [s]: last full-resolution window, {t0:.4g}-{t1:.4g} s (shading: contact state)", fontsize=8
         )
         ax.tick_params(labelsize=8)
         scaled_ylabel(ax, label, ulab)
-        _legend_above(ax, ncol=4)
+        if j == 0:
+            ax.legend(
+                handles=ax.get_lines()[:1] + state_legend_handles(alpha=0.2),
+                fontsize=7,
+                loc="lower left",
+                bbox_to_anchor=(0.0, 1.0),
+                ncol=4,
+                frameon=False,
+                borderaxespad=0.1,
+            )
     other = [r for r in reported if r["unit"] != unit]
     if other:
         text = "; ".join(f"{r['label']} {r['value']:g} {UNIT_LABEL[r['unit']]}" for r in other)
@@ -398,7 +395,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
     fig.suptitle(
         _title(22, "Beam on disc mode shape, at system frequency 15.2 rev/min", [scene], reading), fontsize=11
     )
-    fig.tight_layout()
+    fig.subplots_adjust(left=0.09, right=0.98, top=0.9, bottom=0.08, hspace=0.25)
     return fig
 
 
@@ -476,11 +473,11 @@ def paper_deflection_figure(
     a1.set_ylabel("normal force / static N")
     a1.grid(alpha=0.25)
     a1.legend(fontsize=8, loc="upper right", ncol=2)
-    a1.set_xlim(0, None)
+    a1.set_xlim(0, max(float(ds.bin_time.values[-1]) for ds in datasets.values()))
     fig.suptitle(
         _title(31, "Beam on rotating disc deflection with penalty contact", names, reading), fontsize=11
     )
-    fig.tight_layout()
+    fig.subplots_adjust(left=0.08, right=0.98, top=0.9, bottom=0.07, hspace=0.3)
     return fig
 
 
@@ -497,7 +494,7 @@ def paper_boundary_sketch(ds, number: int, scene: str = ""):
     n = np.array([-np.sin(a), np.cos(a)])  # outward disc normal at the contact (as stickslip.fe.contact)
     corner = np.array([L, -h / 2])
     centre = corner - R * n
-    fig, ax = plt.subplots(figsize=(11, 4.2))
+    fig, ax = plt.subplots(figsize=(11, 3.6))
     ax.add_patch(Rectangle((-6, -10), 6, 20, fill=False, hatch="////", lw=0, ec="0.3"))
     ax.plot([0, 0], [-10, 10], color="k", lw=1.5)
     ax.add_patch(Rectangle((0, -h / 2), L, h, fc="0.55", ec="k", lw=0.8))
@@ -557,18 +554,18 @@ def paper_boundary_sketch(ds, number: int, scene: str = ""):
     speed = p["disc"].get("speed_rev_per_min")
     surf = float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
     speed_txt = (
-        f"{speed:g} rev/min ({surf:.3g} mm/s at the surface)" if speed else f"{surf:.3g} mm/s at the surface"
+        f"{speed:g} rev/min\n({surf:.3g} mm/s at the surface)" if speed else f"{surf:.3g} mm/s at the surface"
     )
     ax.text(
         centre[0] + R + 2,
         centre[1],
-        f"D = {2 * R:g} mm\n{speed_txt}\n{con.get('method')} contact",
+        f"D = {2 * R:g} mm\n{speed_txt}\n{METHOD_NOTE.get(con.get('method'), con.get('method'))}",
         fontsize=8,
         va="center",
     )
     ax.set_aspect("equal")
     ax.set_xlim(-10, centre[0] + R + 38)
-    ax.set_ylim(centre[1] - R - 2, h / 2 + 12)
+    ax.set_ylim(centre[1] - R - 2, h / 2 + 14)
     ax.set_xlabel("x [mm] (to scale)")
     ax.set_ylabel("y [mm]")
     captions = {
@@ -576,7 +573,7 @@ def paper_boundary_sketch(ds, number: int, scene: str = ""):
         34: "Beam on rotating disc with kinematic contact method, the angle of the contact is 30 degrees",
     }
     fig.suptitle(f"Fig. {number}: {captions.get(number, 'boundary condition')} — {scene}", fontsize=11)
-    fig.tight_layout()
+    fig.subplots_adjust(left=0.07, right=0.98, top=0.9, bottom=0.12)
     return fig
 
 

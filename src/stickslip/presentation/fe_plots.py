@@ -7,8 +7,12 @@ sample by sample, so that a 12.9 kHz oscillation is never drawn from too few poi
 
 from __future__ import annotations
 
+import warnings
+
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter
 
 STATE_COLOURS = {0: ("separated", "#d62728"), 1: ("stick", "#2ca02c"), 2: ("slip", "#ffbf00")}
@@ -39,11 +43,18 @@ def band_columns(ds, var, n=N_COLUMNS, t_max=None):
     dt = float(np.median(np.diff(t))) if t.size > 1 else 0.0
     if np.isfinite(f) and f > 0 and dt > 0 and 1.0 / f < 8 * k * dt:
         k = max(k, int(np.ceil(2.0 / (f * dt))))
-    m = t.size // k * k
-    if m == 0 or k == 1:
+    if k == 1 or t.size == 0:
         return t, lo, hi
-    cols = (-1, k)
-    return t[:m].reshape(cols).mean(1), np.nanmin(lo[:m].reshape(cols), 1), np.nanmax(hi[:m].reshape(cols), 1)
+    return grouped(t, k, np.nanmean), grouped(lo, k, np.nanmin), grouped(hi, k, np.nanmax)
+
+
+def grouped(x, k, reduce):
+    """``reduce`` over consecutive groups of ``k`` values (the last group may be shorter)."""
+    pad = -x.size % k
+    x = np.concatenate([x.astype(float), np.full(pad, np.nan)]) if pad else x
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # an all-NaN group stays NaN (a gap, not an error)
+        return reduce(x.reshape(-1, k), axis=1)
 
 
 def scaled_ylabel(ax, text: str, unit: str, fontsize=8):
@@ -77,22 +88,24 @@ def _state_strip(ax, ds, t_max=None):
     ax.set_ylabel("state\nfraction", fontsize=8)
 
 
-def _shade_states(ax, t, state):
-    """Contact state behind a full-resolution window: one collection per state (no patch per run)."""
-    for code, (_, colour) in STATE_COLOURS.items():
-        on = state == code
-        if t.size > 1 and on.any():
-            ax.fill_between(
-                t,
-                0,
-                1,
-                where=on,
-                step="post",
-                color=colour,
-                alpha=0.18,
-                lw=0,
-                transform=ax.get_xaxis_transform(),
-            )
+def shade_states(ax, t, state, alpha=0.18):
+    """Contact state behind a full-resolution window, as one image strip over the axes' height (one artist
+    however often the state switches: the 12.9 kHz chatter switches hundreds of times in 5 ms). Call after
+    the data are drawn: the axes' limits are kept."""
+    if t.size < 2:
+        return
+    lims = ax.get_xlim(), ax.get_ylim()
+    cmap = ListedColormap([STATE_COLOURS[k][1] for k in sorted(STATE_COLOURS)])
+    ax.imshow(state[None, :].astype(float), extent=(t[0], t[-1], 0, 1), transform=ax.get_xaxis_transform(),
+              aspect="auto", cmap=cmap, vmin=-0.5, vmax=len(STATE_COLOURS) - 0.5, alpha=alpha,
+              interpolation="nearest", zorder=0)  # fmt: skip
+    ax.set_xlim(*lims[0])
+    ax.set_ylim(*lims[1])
+
+
+def state_legend_handles(alpha=0.18):
+    """Legend entries of the three contact states (drawn whether or not a window shows each)."""
+    return [Patch(color=c, alpha=alpha, label=name) for name, c in STATE_COLOURS.values()]
 
 
 def _window(ds, w):
@@ -250,8 +263,6 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ref = continuum if continuum is not None else beam
     for col, (t0, t1) in enumerate(((0.0, 0.005), w_end)):
         ax = fig.add_subplot(gs[6, col])
-        m = (ref.time.values >= t0 - 1e-9) & (ref.time.values <= t1 + 1e-9)
-        _shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
         for name, ds in models.items():
             m = (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
             if m.sum() > 1:
@@ -276,6 +287,8 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
                     **MODEL_STYLE[name],
                 )
         ax.set_xlim(t0, t1)
+        m = (ref.time.values >= t0 - 1e-9) & (ref.time.values <= t1 + 1e-9)
+        shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
         shade = "continuum" if continuum is not None else "beam"
         ax.set_xlabel(f"time [s]: {t0:.4g}-{t1:.4g} s, every sample (shading: {shade} state)")
         scaled_ylabel(ax, "horizontal u", "mm", fontsize=10)
