@@ -130,9 +130,10 @@ def _running_mean(ds, var, span=MEAN_SPAN):
     t = ds.bin_time.values
     dt = float(np.median(np.diff(t))) if t.size > 1 else span
     k = max(1, int(round(_mean_span(ds, span) / dt)))
-    if k == 1 or t.size == 0:
+    m = t.size // k * k  # whole groups only: a last group of a few bins would show its ripple
+    if k == 1 or m == 0:
         return t, ds[f"{var}_mean"].values
-    return grouped(t, k, np.nanmean), grouped(ds[f"{var}_mean"].values, k, np.nanmean)
+    return grouped(t[:m], k, np.nanmean), grouped(ds[f"{var}_mean"].values[:m], k, np.nanmean)
 
 
 def _sci(ax):
