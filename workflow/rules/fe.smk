@@ -111,8 +111,9 @@ rule fe_readings_claims:
 
 
 rule fe_figures:
-    """Every FE figure in one job (a figure takes ~0.5 s, a job's start-up ~5 s): the paper scenes (default
-    reading, continuum overlaid), the readings overview, convergence and stability."""
+    """Every FE figure in one job (a figure takes ~0.5 s, a job's start-up ~5 s): one per paper figure 21-36
+    (default reading, both disc speeds side by side), the paper scenes (default reading, continuum overlaid
+    over its window), the readings overview, convergence and stability."""
     input:
         beam=expand(f"results/fe/{FE_DEFAULT_READING}/{{scene}}.nc", scene=FE_SCENES),
         continuum=expand("results/fe/continuum/{scene}.nc", scene=FE_SCENES),
@@ -124,6 +125,12 @@ rule fe_figures:
             expand("results/figures/fe/{scene}.png", scene=FE_SCENES),
             caption=REPORT_CAPTION_FILE,
             category="Beam on rotating disc (Sections 9-12)",
+        ),
+        paper=report(
+            expand("results/figures/fe/fig{number}.png", number=range(21, 37)),
+            caption=REPORT_CAPTION_FILE,
+            category="Beam on rotating disc (Sections 9-12)",
+            subcategory="One per paper figure",
         ),
         readings="results/figures/fe/readings.png",
         convergence="results/figures/fe/convergence.png",
@@ -155,6 +162,22 @@ rule fe_figures:
             }
             for s in FE_SCENES
         },
+        default_reading=FE_DEFAULT_READING,
+        # per paper figure 21-36: the paper's numbers in mm or mm/s its claims rows name, drawn as lines
+        paper_reported={
+            n: [
+                {"label": c["variable"].replace("_", " "), "value": c["value"], "unit": c["unit"]}
+                for c in CLAIMS
+                if n in (c.get("figures") or [])
+                and c.get("unit") in ("mm", "mm s-1")
+                and isinstance(c.get("value"), (int, float))
+            ]
+            for n in range(21, 37)
+        },
+        # Fig. 31: the "several times the initial normal force" the claims row compares with
+        paper_normal_force_ratio=next(
+            (c["rhs"]["value"] for c in CLAIMS if c["id"] == "s11_normal_force_several_times"), None
+        ),
     script:
         "../scripts/fe_figures.py"
 
@@ -170,11 +193,15 @@ FE_DATASETS = (
         "results/fe/readings_claims.csv",
     ]
 )
-FE_FIGURES = [f"results/figures/fe/{s}.png" for s in FE_SCENES] + [
-    "results/figures/fe/readings.png",
-    "results/figures/fe/convergence.png",
-    "results/figures/fe/stability.png",
-]
+FE_FIGURES = (
+    [f"results/figures/fe/{s}.png" for s in FE_SCENES]
+    + [f"results/figures/fe/fig{n}.png" for n in range(21, 37)]
+    + [
+        "results/figures/fe/readings.png",
+        "results/figures/fe/convergence.png",
+        "results/figures/fe/stability.png",
+    ]
+)
 
 ALL_TARGETS.extend(FE_DATASETS)
 ALL_TARGETS.extend(FE_FIGURES)

@@ -1,5 +1,5 @@
-"""Thin wiring: every FE figure (paper scenes with the continuum overlaid, readings, convergence,
-stability)."""
+"""Thin wiring: every FE figure (one per paper figure 21-36, the paper scenes with the continuum overlaid,
+readings, convergence, stability)."""
 
 from pathlib import Path
 
@@ -10,6 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.io.progress import log_to_file  # noqa: E402
+from stickslip.presentation.fe_paper_figures import paper_figure, scenes_for  # noqa: E402
 from stickslip.presentation.fe_plots import (  # noqa: E402
     fe_convergence_figure,
     fe_readings_figure,
@@ -19,16 +20,32 @@ from stickslip.presentation.fe_plots import (  # noqa: E402
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 inp, out, par = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
-for beam_path, cont_path, png in zip(inp.beam, inp.continuum, out.scenes):
-    beam, cont = read_dataset(beam_path), read_dataset(cont_path)
+beams = {Path(p).stem: read_dataset(p) for p in inp.beam}
+for (scene, beam), cont_path, png in zip(beams.items(), inp.continuum, out.scenes):
+    cont = read_dataset(cont_path) if Path(cont_path).exists() else None  # only when run by hand
     title = (
-        f"{Path(png).stem} (FE reading {beam.attrs.get('fe_reading', '')}): beam 20 elements (blue) and "
-        f"continuum 100x1 (black), {float(beam.time[-1]):.3g} s"
+        f"{scene} (FE reading {beam.attrs.get('fe_reading', '')}): beam 20 elements (blue) and "
+        f"continuum 100x1 (black)"
     )
-    reported = par.scene_reported.get(Path(png).stem, {})
+    reported = par.scene_reported.get(scene, {})
     fe_scene_figure(beam, cont, reported=reported, title=title).savefig(png, dpi=100)
     plt.close("all")
-dss = {(Path(p).parent.name, Path(p).stem): read_dataset(p) for p in inp.readings}
+for png in out.paper:
+    number = int(Path(png).stem.removeprefix("fig"))
+    fig = paper_figure(
+        number,
+        {s: beams[s] for s in scenes_for(number, par.scenes)},
+        par.paper_reported.get(number, []),
+        reading=par.default_reading,
+        several_times=par.paper_normal_force_ratio,
+    )
+    fig.savefig(png, dpi=100)
+    plt.close("all")
+default = {(par.default_reading, scene): ds for scene, ds in beams.items()}  # read once, drawn twice
+dss = {}
+for p in inp.readings:
+    key = (Path(p).parent.name, Path(p).stem)
+    dss[key] = default[key] if key in default else read_dataset(p)
 fe_readings_figure(dss, par.scenes, par.readings, par.reported).savefig(out.readings, dpi=100)
 fe_convergence_figure(read_dataset(inp.convergence)).savefig(out.convergence, dpi=100)
 fe_stability_figure(read_dataset(inp.stability)).savefig(out.stability, dpi=100)

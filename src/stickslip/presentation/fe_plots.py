@@ -7,8 +7,13 @@ sample by sample, so that a 12.9 kHz oscillation is never drawn from too few poi
 
 from __future__ import annotations
 
+import warnings
+
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.patches import Patch
+from matplotlib.ticker import FuncFormatter
 
 STATE_COLOURS = {0: ("separated", "#d62728"), 1: ("stick", "#2ca02c"), 2: ("slip", "#ffbf00")}
 MODEL_STYLE = {"beam": dict(color="C0"), "continuum": dict(color="k")}
@@ -20,36 +25,87 @@ def _sci(ax):
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3), useMathText=True)
 
 
-def _band(ax, ds, var, label, style, scale=1.0):
+#: pixel columns a whole-run band is reduced to (a 13-inch panel at dpi 100 has < 1000): no moire
+N_COLUMNS = 800
+
+
+def band_columns(ds, var, n=N_COLUMNS, t_max=None):
+    """Per-bin min/max of ``var`` (bins up to ``t_max``) reduced to at most ``n`` columns: (t, min, max).
+
+    Where a period of the dominant frequency spans fewer than 8 columns the waveform cannot be drawn, and
+    columns shorter than a period would alias it into a false beat: the columns are then widened to two
+    periods, so the band is the envelope."""
     t = ds.bin_time.values
-    lo, hi = ds[f"{var}_min"].values * scale, ds[f"{var}_max"].values * scale
-    ax.fill_between(t, lo, hi, alpha=0.35, lw=0, color=style["color"], label=f"{label} (min-max per bin)")
-    ax.plot(t, ds[f"{var}_mean"].values * scale, lw=0.8, color=style["color"], label=f"{label} (bin mean)")
+    keep = slice(None) if t_max is None else t <= t_max
+    t, lo, hi = t[keep], ds[f"{var}_min"].values[keep], ds[f"{var}_max"].values[keep]
+    k = max(1, int(np.ceil(t.size / n)))
+    f = float(ds["dominant_frequency"]) if "dominant_frequency" in ds else float("nan")
+    dt = float(np.median(np.diff(t))) if t.size > 1 else 0.0
+    if np.isfinite(f) and f > 0 and dt > 0 and 1.0 / f < 8 * k * dt:
+        k = max(k, int(np.ceil(2.0 / (f * dt))))
+    if k == 1 or t.size == 0:
+        return t, lo, hi
+    return grouped(t, k, np.nanmean), grouped(lo, k, np.nanmin), grouped(hi, k, np.nanmax)
 
 
-def _state_strip(ax, ds):
+def grouped(x, k, reduce):
+    """``reduce`` over consecutive groups of ``k`` values (the last group may be shorter)."""
+    pad = -x.size % k
+    x = np.concatenate([x.astype(float), np.full(pad, np.nan)]) if pad else x
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # an all-NaN group stays NaN (a gap, not an error)
+        return reduce(x.reshape(-1, k), axis=1)
+
+
+def scaled_ylabel(ax, text: str, unit: str, fontsize=8):
+    """Y label with the unit and the power of ten of the tick labels in it ("[10^-4 mm]"), instead of an
+    offset text that a legend above the panel would cover."""
+    top = max(abs(v) for v in ax.get_ylim())
+    e = int(np.floor(np.log10(top))) if top > 0 else 0
+    if -2 <= e <= 2:
+        ax.set_ylabel(f"{text} [{unit}]", fontsize=fontsize)
+        return
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v / 10.0**e:g}"))
+    ax.set_ylabel(f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
+
+
+def _band(ax, ds, var, label, style, t_max=None):
+    t, lo, hi = band_columns(ds, var, t_max=t_max)
+    ax.fill_between(t, lo, hi, alpha=0.35, lw=0, color=style["color"], label=f"{label} (min-max)")
+
+
+def _state_strip(ax, ds, t_max=None):
     """Per-bin stick / slip / separation fractions as a stacked strip."""
     t = ds.bin_time.values
+    keep = slice(None) if t_max is None else t <= t_max
+    t = t[keep]
     base = np.zeros_like(t)
     for code, name in ((1, "stick"), (2, "slip"), (0, "separation")):
-        frac = np.nan_to_num(ds[f"{name}_fraction_per_bin"].values)
+        frac = np.nan_to_num(ds[f"{name}_fraction_per_bin"].values[keep])
         ax.fill_between(t, base, base + frac, step="mid", color=STATE_COLOURS[code][1], lw=0, label=name)
         base = base + frac
     ax.set_ylim(0, 1)
     ax.set_ylabel("state\nfraction", fontsize=8)
 
 
-def _shade_states(ax, t, state):
-    """Shade contiguous runs of each contact state behind a full-resolution window."""
+def shade_states(ax, t, state, alpha=0.18):
+    """Contact state behind a full-resolution window, as one image strip over the axes' height (one artist
+    however often the state switches: the 12.9 kHz chatter switches hundreds of times in 5 ms). Call after
+    the data are drawn: the axes' limits are kept."""
     if t.size < 2:
         return
-    edges = np.flatnonzero(np.diff(state)) + 1
-    starts = np.concatenate([[0], edges])
-    ends = np.concatenate([edges, [t.size]])
-    for a, b in zip(starts, ends):
-        code = int(state[a])
-        t1 = t[b] if b < t.size else t[-1]
-        ax.axvspan(t[a], t1, color=STATE_COLOURS[code][1], alpha=0.18, lw=0)
+    lims = ax.get_xlim(), ax.get_ylim()
+    cmap = ListedColormap([STATE_COLOURS[k][1] for k in sorted(STATE_COLOURS)])
+    ax.imshow(state[None, :].astype(float), extent=(t[0], t[-1], 0, 1), transform=ax.get_xaxis_transform(),
+              aspect="auto", cmap=cmap, vmin=-0.5, vmax=len(STATE_COLOURS) - 0.5, alpha=alpha,
+              interpolation="nearest", zorder=0)  # fmt: skip
+    ax.set_xlim(*lims[0])
+    ax.set_ylim(*lims[1])
+
+
+def state_legend_handles(alpha=0.18):
+    """Legend entries of the three contact states (drawn whether or not a window shows each)."""
+    return [Patch(color=c, alpha=alpha, label=name) for name, c in STATE_COLOURS.values()]
 
 
 def _window(ds, w):
@@ -65,27 +121,48 @@ def _spectrum(t, y):
     return np.fft.rfftfreq(y.size, dt), spec
 
 
-def _running_envelope(ax, ds, var, style):
-    """Half peak-to-peak per window (the running envelope a growth claim is judged on), as a staircase
-    around the window mean 0 (drawn +-)."""
+def _running_envelope(ax, ds, var, style, t_max=None):
+    """Half peak-to-peak per window (the running envelope a growth claim is judged on), as a staircase."""
     key = f"{var}_envelope"
     if key not in ds or "window_time" not in ds.coords:
         return
     t, env = ds.window_time.values, ds[key].values
-    ax.step(t, env, where="mid", lw=1.2, ls="--", color=style["color"], alpha=0.9, label="running envelope")
+    if t.size == 0:
+        return
+    w = float(np.median(np.diff(t))) if t.size > 1 else 2 * float(t[0])
+    keep = t - w / 2 < (np.inf if t_max is None else t_max - 1e-12)
+    edges = np.concatenate([t[keep] - w / 2, [t[keep][-1] + w / 2]])
+    ax.stairs(
+        env[keep],
+        edges,
+        baseline=None,
+        lw=1.2,
+        ls="--",
+        color=style["color"],
+        alpha=0.9,
+        label="running half peak-to-peak",
+    )
 
 
 def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: str = ""):
-    """One paper scene, in the paper's units (mm, mm/s, N): whole-run envelopes of node 1's horizontal and
-    vertical displacement and velocity (beam and continuum) with the running half peak-to-peak per window
-    (what "increases" is judged on), the state strip, the spectrum and the contact forces of the last
-    window with the zero line (separation), and the first and last windows sample by sample with
-    stick/slip/separation shaded.
+    """One paper scene, beam against the continuum strip, in the paper's units (mm, mm/s, N), over the
+    window both models ran (the continuum's, the model-comparison window; the beam alone when no continuum
+    is given): node 1's horizontal and vertical displacement and velocity as min-max bands (the beam's
+    running half peak-to-peak per window dashed, the mid-span node where the vertical motion lives), the
+    beam's state strip, the spectra of the first window (both models sample by sample at the same time),
+    the contact forces over the last 5 ms of the window with the zero line (separation), and the first and
+    last 5 ms with the contact state shaded. The beam's samples are kept only in its own detail windows, so
+    where they are missing the beam is drawn as its per-bin band.
 
     ``reported``: optional {label: mm} of the paper's numbers, drawn on the horizontal displacement."""
     models = {"beam": beam} | ({"continuum": continuum} if continuum is not None else {})
-    fig = plt.figure(figsize=(13, 15))
-    gs = fig.add_gridspec(7, 2, height_ratios=[3, 3, 3, 3, 0.8, 3, 3], hspace=0.6, wspace=0.22)
+    t_run = float(beam.time.values[-1])
+    t_cmp = float(continuum.time.values[-1]) if continuum is not None else t_run
+    t_max = t_cmp * (1 + 1e-9) + 0.5 * float(np.median(np.diff(beam.bin_time.values)))
+    fig = plt.figure(figsize=(13, 16.5))
+    gs = fig.add_gridspec(
+        7, 2, height_ratios=[3, 3, 3, 3, 0.8, 3, 3], hspace=0.75, wspace=0.22, top=0.91, bottom=0.04
+    )
     ax_x = fig.add_subplot(gs[0, :])
     ax_y = fig.add_subplot(gs[1, :], sharex=ax_x)
     ax_vx = fig.add_subplot(gs[2, :], sharex=ax_x)
@@ -100,73 +177,128 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     for ax, var, ylabel in panels:
         off = f"midspan_{var}_min"
         if var.startswith("vertical") and off in beam and float(np.abs(beam[off]).max()) > 0:
-            _band(ax, beam, f"midspan_{var}", "beam, mid-span node (off the contact)", dict(color="C2"))
+            _band(
+                ax, beam, f"midspan_{var}", "beam, mid-span node (off the contact)", dict(color="C2"), t_max
+            )
         for name, ds in models.items():
-            _band(ax, ds, var, name, MODEL_STYLE[name])
-        _running_envelope(ax, beam, var, MODEL_STYLE["beam"])
+            _band(ax, ds, var, name, MODEL_STYLE[name], t_max)
+        _running_envelope(ax, beam, var, MODEL_STYLE["beam"], t_max)
         ax.set_ylabel(ylabel)
         _sci(ax)
         ax.grid(alpha=0.25)
+    ax_x.set_xlim(0.0, t_max)
     for key, val in (reported or {}).items():
         ax_x.axhline(val, color="C3", ls="--", lw=1)
         box = dict(fc="white", ec="none", alpha=0.8, pad=0.5)
         where = ("axes fraction", "data")
         ax_x.annotate(f"paper: {key} {val:g} mm", (0.995, val), xycoords=where, ha="right", va="bottom",
                       color="C3", fontsize=8, bbox=box)  # fmt: skip
-    ax_x.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=5, frameon=False)
-    if "midspan_vertical_displacement_min" in beam:
-        ax_y.legend(fontsize=7, loc="lower right", ncol=3)
-    _state_strip(ax_s, beam)
+    # one legend for the four whole-run panels, above them (a legend inside would cover a band)
+    handles = {}
+    for ax in (ax_x, ax_y):
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lab, h)
+    fig.legend(
+        handles.values(),
+        handles.keys(),
+        fontsize=8,
+        loc="lower center",
+        ncol=3,
+        frameon=False,
+        bbox_to_anchor=(0.5, ax_x.get_position().y1 + 0.004),
+    )
+    _state_strip(ax_s, beam, t_max)
     ax_s.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
     ax_s.set_xlabel("time [s] (beam state fractions per bin)")
-    # spectra of the last full-resolution window (dominant frequency panel)
+    # spectra of the first window: both models sample by sample over the same 5 ms
     ax_f = fig.add_subplot(gs[5, 0])
     for name, ds in models.items():
-        m = _window(ds, -1)
+        m = _window(ds, 0)
         if m.sum() > 8:
             f, a = _spectrum(ds.time.values[m], ds.horizontal_displacement.values[m])
             ax_f.loglog(f[1:], a[1:], lw=0.8, label=name, **MODEL_STYLE[name])
-        fd = float(ds["dominant_frequency"])
-        ax_f.axvline(fd, ls=":", lw=1, color=MODEL_STYLE[name]["color"])
-    ax_f.set_xlabel("frequency [Hz] (horizontal u, last window; dotted: dominant over the 2nd half)")
+        ax_f.axvline(float(ds["dominant_frequency"]), ls=":", lw=1, color=MODEL_STYLE[name]["color"])
+    ax_f.set_xlabel("frequency [Hz] (horizontal u, first window; dotted: dominant over the 2nd half)")
     ax_f.set_ylabel("amplitude [mm]")
     ax_f.legend(fontsize=7)
+    # the last 5 ms of the comparison window: full-resolution samples where a model kept them, else its bins
+    w_end = (t_cmp - 0.005, t_cmp)
+    last = {
+        name: (ds.time.values >= w_end[0] - 1e-9) & (ds.time.values <= w_end[1] + 1e-9)
+        for name, ds in models.items()
+    }
     ax_n = fig.add_subplot(gs[5, 1])
     for name, ds in models.items():
-        m = _window(ds, -1)
-        ax_n.plot(
-            ds.time.values[m], ds.normal_force.values[m], lw=0.7, label=f"{name} normal", **MODEL_STYLE[name]
-        )
-    m = _window(beam, -1)
-    ax_n.plot(beam.time.values[m], beam.friction_force.values[m], lw=0.7, color="C1", label="beam friction")
-    ax_n.axhline(0.0, color="C3", lw=0.8, ls="-", label="zero (separation)")
-    ax_n.set_ylabel("contact force [N]")
-    _sci(ax_n)
-    ax_n.set_xlabel("time [s] (last window)")
-    ax_n.legend(fontsize=7)
-    f_dom = float(beam["dominant_frequency"])
-    for col, w in enumerate((0, -1)):
-        ax = fig.add_subplot(gs[6, col])
-        t0, t1 = beam.detail_windows.values[w]
-        if col == 1 and f_dom > 0 and 10 / f_dom < t1 - t0:  # the last ten periods of the dominant mode
-            t0 = t1 - 10 / f_dom
-        mb = _window(beam, w) & (beam.time.values >= t0)
-        _shade_states(ax, beam.time.values[mb], beam.contact_state.values[mb])
-        for name, ds in models.items():
-            m = _window(ds, w) & (ds.time.values >= t0)
-            ax.plot(
-                ds.time.values[m],
-                ds.horizontal_displacement.values[m],
-                lw=0.8,
-                label=name,
+        if last[name].sum() > 1:
+            ax_n.plot(
+                ds.time.values[last[name]],
+                ds.normal_force.values[last[name]],
+                lw=0.7,
+                label=f"{name} normal",
                 **MODEL_STYLE[name],
             )
-        what = "first window" if col == 0 else f"last {t1 - t0:.3g} s"
-        ax.set_xlabel(f"time [s]: {what}, every sample (shading: beam state)")
-        ax.set_ylabel("horizontal u [mm]")
-        _sci(ax)
-        ax.legend(fontsize=7, loc="upper right")
-    fig.suptitle(title or beam.attrs.get("title", ""), fontsize=11)
+        elif "normal_force_min" in ds:
+            t, lo, hi = band_columns(ds, "normal_force", t_max=t_max)
+            keep = t >= w_end[0]
+            ax_n.fill_between(
+                t[keep],
+                lo[keep],
+                hi[keep],
+                alpha=0.35,
+                lw=0,
+                step="mid",
+                label=f"{name} normal (min-max per bin)",
+                **MODEL_STYLE[name],
+            )
+    if last["beam"].sum() > 1:
+        m = last["beam"]
+        ax_n.plot(
+            beam.time.values[m], beam.friction_force.values[m], lw=0.7, color="C1", label="beam friction"
+        )
+    ax_n.axhline(0.0, color="C3", lw=0.8, ls="-", label="zero (separation)")
+    ax_n.set_xlim(*w_end)
+    scaled_ylabel(ax_n, "contact force", "N", fontsize=10)
+    ax_n.set_xlabel(f"time [s] (last 5 ms of the {t_cmp:.3g} s window)")
+    ax_n.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=3, frameon=False)
+    ref = continuum if continuum is not None else beam
+    for col, (t0, t1) in enumerate(((0.0, 0.005), w_end)):
+        ax = fig.add_subplot(gs[6, col])
+        for name, ds in models.items():
+            m = (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
+            if m.sum() > 1:
+                ax.plot(
+                    ds.time.values[m],
+                    ds.horizontal_displacement.values[m],
+                    lw=0.8,
+                    label=name,
+                    **MODEL_STYLE[name],
+                )
+            else:
+                t, lo, hi = band_columns(ds, "horizontal_displacement", t_max=t_max)
+                keep = t >= t0
+                ax.fill_between(
+                    t[keep],
+                    lo[keep],
+                    hi[keep],
+                    alpha=0.35,
+                    lw=0,
+                    step="mid",
+                    label=f"{name} (min-max per bin: no samples kept here)",
+                    **MODEL_STYLE[name],
+                )
+        ax.set_xlim(t0, t1)
+        m = (ref.time.values >= t0 - 1e-9) & (ref.time.values <= t1 + 1e-9)
+        shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
+        shade = "continuum" if continuum is not None else "beam"
+        ax.set_xlabel(f"time [s]: {t0:.4g}-{t1:.4g} s, every sample (shading: {shade} state)")
+        scaled_ylabel(ax, "horizontal u", "mm", fontsize=10)
+        ax.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=2, frameon=False)
+    shown = (
+        f"the first {t_cmp:.3g} s, the model-comparison window (the beam ran {t_run:.3g} s)"
+        if continuum is not None
+        else f"the beam's whole run, {t_run:.3g} s (no continuum)"
+    )
+    fig.suptitle(f"{title or beam.attrs.get('title', '')}\nshown: {shown}", fontsize=11)
     return fig
 
 
