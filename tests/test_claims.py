@@ -49,7 +49,12 @@ def test_compare_ratio_and_trend_claims():
         "relation": ">",
         "rhs": {"dataset": "r/b.nc", "variable": "amp"},
     }
-    assert evaluate(cmp_row, "", opener).status == "reproduced"
+    compared = evaluate(cmp_row, "", opener)
+    assert compared.status == "reproduced"
+    # the paper states a relation, not a number: `reported` carries its words, the model's other side is
+    # the `reference`, never passed off as the paper's
+    assert compared.reported == "amp > amp"
+    assert compared.measured == pytest.approx(0.93) and compared.reference == pytest.approx(0.45)
     ratio = {
         **ROW,
         "kind": "ratio",
@@ -69,6 +74,7 @@ def test_compare_ratio_and_trend_claims():
     }
     res = evaluate(trend, "", opener)
     assert res.status == "reproduced" and res.measured < 0
+    assert res.reported == "frequency decreases with mu_s" and res.reference != res.reference  # NaN
     assert evaluate({**trend, "sign": 1}, "", opener).status == "deviates"
 
 
@@ -107,6 +113,25 @@ def test_duplicate_ids_are_rejected(tmp_path):
     (tmp_path / "b.yaml").write_text(yaml.safe_dump([ROW]))
     with pytest.raises(ClaimsError, match="already used"):
         load_claims([tmp_path / "a.yaml", tmp_path / "b.yaml"])
+
+
+def test_tables_write_words_and_numbers_in_the_reported_column(tmp_path):
+    cmp_row = {
+        **ROW,
+        "kind": "compare",
+        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
+        "relation": ">",
+        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
+    }
+    results = [evaluate(ROW, "a", opener), evaluate(cmp_row, "", opener)]
+    write_table(results, tmp_path / "d.csv", tmp_path / "d.md")
+    import csv
+
+    rows = list(csv.DictReader((tmp_path / "d.csv").open()))
+    assert rows[0]["reported"] == "0.25" and rows[0]["reference"] == "nan"
+    assert rows[1]["reported"] == "amp > amp" and float(rows[1]["reference"]) == pytest.approx(0.45)
+    md = (tmp_path / "d.md").read_text()
+    assert "| 0.25 |" in md and "| amp > amp |" in md
 
 
 def test_check_fails_on_a_changed_status(tmp_path, capsys):

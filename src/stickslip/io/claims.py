@@ -65,9 +65,13 @@ class ClaimResult:
     figure: str
     kind: str
     quantity: str
-    reported: float
+    #: what the paper states: its number (value, ratio), or its words for a comparison ("a > b") or a trend
+    #: ("increases"), never a model number
+    reported: float | str
     unit: str
     measured: float
+    #: a comparison's model number on the other side (its right-hand side); NaN for the other kinds
+    reference: float
     deviation: float
     margin: float  #: distance of the decision variable to the claim's threshold
     spread: float  #: range of the decision variable across the perturbation ensemble (NaN: none)
@@ -220,9 +224,10 @@ class Measurement:
     a threshold decides the claim, its distance to that threshold (margin) and its ensemble range
     (spread), both in the decision variable's units."""
 
-    reported: float = float("nan")
+    reported: float | str = float("nan")
     measured: float = float("nan")
     deviation: float = float("nan")
+    reference: float = float("nan")
     quantity: str = ""
     holds: bool | None = None
     detail: str = ""
@@ -270,17 +275,19 @@ def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measur
     lhs = _member_values(open_dataset, claim["lhs"], reading)
     rhs = _member_values(open_dataset, claim["rhs"], reading)
     rel = claim["relation"]
+    statement = f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}"
     out = Measurement(
-        reported=float(rhs[0]),
+        reported=statement,  # the paper states a relation, not a number
         measured=float(lhs[0]),
-        quantity=f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}",
+        reference=float(rhs[0]),
+        quantity=statement,
     )
-    if math.isfinite(out.measured) and math.isfinite(out.reported):
+    if math.isfinite(out.measured) and math.isfinite(out.reference):
         difference = _pairwise(np.subtract, lhs, rhs)  # the decision variable: lhs - rhs against 0
-        out.holds = bool(RELATIONS[rel](out.measured, out.reported))
+        out.holds = bool(RELATIONS[rel](out.measured, out.reference))
         out.margin = abs(float(difference[0]))
         out.spread = spread_of(difference)
-        out.detail = f"{out.measured:.4g} {rel} {out.reported:.4g} is {out.holds}"
+        out.detail = f"{out.measured:.4g} {rel} {out.reference:.4g} is {out.holds}"
     return out
 
 
@@ -305,7 +312,11 @@ def decide_trend(claim: dict, change: float) -> tuple[bool, float, float]:
 
 def measure_trend(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
     ds = open_dataset(claim["dataset"].format(reading=reading))
-    out = Measurement(reported=float(claim["sign"]), quantity=f"d {claim['variable']} / d {claim['coord']}")
+    says = "increases" if float(claim["sign"]) > 0 else "decreases"
+    out = Measurement(
+        reported=f"{claim['variable']} {says} with {claim['coord']}",  # the paper's words, not a number
+        quantity=f"d {claim['variable']} / d {claim['coord']}",
+    )
     if claim["variable"] not in ds or claim["coord"] not in ds.variables:
         return out
     x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
@@ -392,6 +403,7 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         reported=m.reported,
         unit=str(claim.get("unit", "")),
         measured=m.measured,
+        reference=m.reference,
         deviation=m.deviation,
         margin=m.margin,
         spread=m.spread,
@@ -408,6 +420,11 @@ def evaluate_all(claims: list[dict], readings: list[str], open_dataset: Callable
 
 
 FIELDS = [f for f in ClaimResult.__dataclass_fields__]
+
+
+def _cell(value) -> str:
+    """A number to 4 significant digits, words as they are."""
+    return f"{value:.4g}" if isinstance(value, float | int) else str(value)
 
 
 def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
@@ -431,7 +448,7 @@ def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
         for r in results:
             flag = "" if r.matches_expected else " **(changed)**"
             lines.append(
-                f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {r.reported:.4g} | "
+                f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {_cell(r.reported)} | "
                 f"{r.measured:.4g} | {r.unit} | {r.margin:.3g} | {r.spread:.3g} | {r.status}{flag} | "
                 f"{r.expected} | {r.reason} |"
             )

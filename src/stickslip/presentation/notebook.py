@@ -27,6 +27,7 @@ CLAIM_COLUMNS = (
     "quantity",
     "reported",
     "measured",
+    "reference",
     "unit",
     "deviation",
     "margin",
