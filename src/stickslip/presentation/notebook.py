@@ -112,6 +112,15 @@ def styled_counts(counts):
     return styler
 
 
+def number_or_words(value) -> str:
+    """A claims-table cell that holds the paper's number (4 significant digits) or its words (a comparison's
+    "a > b", a trend's "increases with x")."""
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
 def styled_claims(frame):
     """The claims table, status cells coloured; a status that differs from its pin is in bold red text.
 
@@ -133,8 +142,9 @@ def styled_claims(frame):
         .style.apply(colour, axis=1)
         .format(
             {
-                "reported": "{:.4g}",
+                "reported": number_or_words,
                 "measured": "{:.4g}",
+                "reference": "{:.4g}",
                 "deviation": "{:+.1%}",
                 "margin": "{:.3g}",
                 "spread": "{:.3g}",
