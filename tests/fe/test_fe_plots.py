@@ -134,8 +134,9 @@ def test_paper_time_series_draws_the_midspan_node_and_the_normal_force_zero(ds):
 def test_paper_velocity_figure_is_in_mm_per_s_with_the_running_envelope(ds):
     assert TIME_SERIES[24].envelope and not TIME_SERIES[24].normal_force
     fig = paper_time_series_figure(24, {"a": ds}, [])
-    assert len(fig.axes) == 3  # no normal force row: Fig. 24's claim is growth, not separation
-    assert all("mm/s]" in ax.get_ylabel() for ax in fig.axes)
+    assert len(fig.axes) == 4  # node 1, mid-span, first-mode growth, last window: no normal force row
+    axes = [ax for i, ax in enumerate(fig.axes) if i != 2]  # the growth row (tested below) is relative
+    assert all("mm/s]" in ax.get_ylabel() for ax in axes)
     env = [p for p in fig.axes[0].patches if "running envelope" in (p.get_label() or "")]
     withheld = "running envelope: not converged" in _texts(fig)
     assert env or withheld
@@ -210,3 +211,27 @@ def test_scene_figure_draws_the_comparison_over_the_continuums_window(ds):
     fig = fe_scene_figure(ds, short)
     assert fig.axes[0].get_xlim()[1] < 0.0025  # the beam's 4 ms run is cut at the continuum's 2 ms
     assert fig.axes[1].get_legend() is None  # one legend above the panels, none over the vertical trace
+
+
+def test_growth_row_draws_the_first_mode_against_the_linear_estimate(ds):
+    """Figs. 24, 25, 27, 29 (the paper's "increases"): the first mode's amplitude relative to its first
+    window, both step sizes, and e^(lambda t) of the eigen-analysis; the fitted rate and its step-halving
+    note printed."""
+    t = np.arange(0.025, 1.0, 0.05)
+    grown = ds.drop_dims("mode_window", errors="ignore").assign(
+        first_mode_amplitude=("mode_window", 2e-5 * np.exp(0.5 * t)),
+        first_mode_amplitude_half_step=("mode_window", 2e-5 * np.exp(0.48 * t)),
+        first_mode_growth_rate=((), 0.5, {"step_halving": "sign converged, value moves 4.0 % at half step"}),
+        first_mode_growth_rate_linear=0.36,
+        first_mode_frequency=366.2,
+    ).assign_coords(mode_window_time=("mode_window", t))
+    assert all(TIME_SERIES[n].growth for n in (24, 25, 27, 29))
+    fig = paper_time_series_figure(24, {"a": grown}, [])
+    growth = fig.axes[2]
+    lines = {line.get_label(): line for line in growth.get_lines()}
+    measured = lines["first mode (366.2 Hz), node 1, dt"].get_ydata()
+    np.testing.assert_allclose(measured, np.exp(0.5 * (t - t[0])))
+    linear = next(v for k, v in lines.items() if k.startswith("linear estimate +0.36"))
+    np.testing.assert_allclose(linear.get_ydata(), np.exp(0.36 * (t - t[0])))
+    assert "at dt/2" in lines
+    assert "fitted over the leading segment: +0.5 1/s (sign converged" in _texts(fig)

@@ -10,10 +10,7 @@ from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
     convergence_dataset,
-    half_step_metrics,
     scene_mapping,
-    setup_fit_dataset,
-    setup_fit_mapping,
     stability_dataset,
     sweep_dataset,
     sweep_half_step,
@@ -49,13 +46,3 @@ ds = ensemble_dataset(
     ensemble,
 )
 write_dataset(ds, out.increments, scene=dict(inc), interpretation=INTERPRETATION, method={"kind": "eigen"})
-fit, k = setup_fit_mapping(cfg, snakemake.params.fit["base"], snakemake.params.fit["centre"])  # noqa: F821
-ds = ensemble_dataset(lambda mp: setup_fit_dataset(mp, friction, k), fit, ensemble)
-ds = apply_step_halving(ds, half_step_metrics(fit, friction))
-write_dataset(
-    ds, out.setup_fit, scene=fit, interpretation=ds.attrs["model_interpretation"], method={"kind": "fit"}
-)
-print(
-    f"setup fit: tip support {k:.4g} N/mm; not converged at half step: "
-    f"{ds.attrs['step_halving_not_converged']}"
-)

@@ -40,6 +40,8 @@ class PaperFigure:
     caption: str  #: the paper's caption, shortened
     envelope: bool = False  #: the paper claims the quantity "increases": draw the running envelope
     normal_force: bool = False  #: the paper's claim is separation: draw the normal force and its zero
+    #: the paper claims self-excited growth: draw the first mode's amplitude against the linear estimate
+    growth: bool = False
 
 
 TIME_SERIES = {
@@ -50,13 +52,18 @@ TIME_SERIES = {
         normal_force=True,
     ),
     23: PaperFigure(9, "vertical_displacement", "Vertical displacement of beam at node 1", normal_force=True),
-    24: PaperFigure(9, "horizontal_velocity", "Horizontal velocity at beam node 1", envelope=True),
-    25: PaperFigure(9, "vertical_velocity", "Vertical velocity versus time of beam at node 1", envelope=True),
+    24: PaperFigure(
+        9, "horizontal_velocity", "Horizontal velocity at beam node 1", envelope=True, growth=True
+    ),
+    25: PaperFigure(
+        9, "vertical_velocity", "Vertical velocity versus time of beam at node 1", envelope=True, growth=True
+    ),
     27: PaperFigure(
         10,
         "horizontal_displacement",
         "Horizontal displacement of the beam at node 1 (upper face held)",
         envelope=True,
+        growth=True,
     ),
     28: PaperFigure(
         10, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (upper face held)"
@@ -66,6 +73,7 @@ TIME_SERIES = {
         "horizontal_displacement",
         "Horizontal displacements versus time at beam node 1 (penalty)",
         normal_force=True,
+        growth=True,
     ),
     30: PaperFigure(
         11,
@@ -241,8 +249,11 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
     what, unit = QUANTITY[spec.variable]
     ulab = UNIT_LABEL[unit]
     short = f"{what.split()[0]} {what.split()[-1]}"
-    rows = ["node1", "midspan"] + (["normal"] if spec.normal_force else []) + ["zoom"]
-    heights = {"node1": 3.0, "midspan": 2.0, "normal": 1.7, "zoom": 2.2}
+    rows = (
+        ["node1", "midspan"] + (["normal"] if spec.normal_force else []) + (["growth"] if spec.growth else [])
+    )
+    rows += ["zoom"]
+    heights = {"node1": 3.0, "midspan": 2.0, "normal": 1.7, "growth": 2.2, "zoom": 2.2}
     ncol = len(datasets)
     height = 1.6 + 0.55 * len(rows) + sum(heights[r] for r in rows)
     fig = plt.figure(figsize=(6.5 * ncol + 0.5, height))
@@ -285,6 +296,9 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 )
             if j == 0:
                 _legend_above(ax, ncol=3)
+        if "growth" in axes:
+            _first_mode_growth(axes["growth"], ds, legend=j == 0)
+            axes["growth"].set_xlim(0.0, t_end)
         for r, label, u in (
             ("node1", f"{short}\nnode 1", ulab),
             ("midspan", f"{short}\nmid-span", ulab),
@@ -348,6 +362,55 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         )
     fig.suptitle(_title(number, spec.caption, list(datasets), reading), fontsize=11)
     return fig
+
+
+def _first_mode_growth(ax, ds, legend: bool):
+    """The first contact-held mode's amplitude at node 1 (demodulated per window, relative to the first
+    window; both step sizes where the step changes it) against the linearised sliding system's growth
+    e^(lambda t): what decides "the oscillation grows"."""
+    if "first_mode_amplitude" not in ds or ds["mode_window_time"].size < 2:
+        ax.text(0.5, 0.5, "first-mode amplitude not recorded", transform=ax.transAxes, ha="center")
+        return
+    t = ds["mode_window_time"].values
+    full = ds.get("first_mode_amplitude_full_step", ds["first_mode_amplitude"]).values
+    rel = full / (full[0] if full[0] > 0 else 1.0)
+    lo, hi = float(np.nanmin(rel)), float(np.nanmax(rel))
+    # log axes only where the amplitude spans decades (the held Section 10 mode decays 1e-7 in 1 s)
+    log = hi / max(lo, 1e-300) > 10
+    if log:
+        ax.set_yscale("log")
+    f1 = float(ds["first_mode_frequency"]) if "first_mode_frequency" in ds else float("nan")
+    ax.plot(t, rel, "o-", ms=2.5, lw=1.0, color="C0", label=f"first mode ({f1:.4g} Hz), node 1, dt")
+    half = ds.get("first_mode_amplitude_half_step")
+    if half is not None:
+        ax.plot(t, half.values / full[0], "x--", ms=3, lw=0.8, color="0.45", label="at dt/2")
+    lin = float(ds["first_mode_growth_rate_linear"]) if "first_mode_growth_rate_linear" in ds else np.nan
+    if np.isfinite(lin):
+        line = np.exp(np.minimum(lin * (t - t[0]), 700.0))
+        ax.plot(t, line, ":", color="k", lw=1.2, label=f"linear estimate {lin:+.3g} 1/s (eigen-analysis)")
+    # the data's range: a fast linear growth (Section 10's axial mode, +900 1/s) leaves the axes
+    span = max(hi - lo, 0.04)  # a flat amplitude stays flat on the axes, not magnified noise
+    ax.set_ylim(*((lo / 1.5, hi * 1.5) if log else (lo - 0.15 * span, hi + 0.15 * span)))
+    if not log:
+        ax.ticklabel_format(axis="y", useOffset=False)
+    rate = ds.get("first_mode_growth_rate_full_step", ds.get("first_mode_growth_rate"))
+    if rate is not None and np.isfinite(float(rate)):
+        note = str(ds["first_mode_growth_rate"].attrs.get("step_halving", ""))
+        note = "not converged at dt/2" if note.startswith("not converged") else note
+        ax.text(
+            0.99,
+            0.04,
+            f"fitted over the leading segment: {float(rate):+.3g} 1/s" + (f" ({note})" if note else ""),
+            transform=ax.transAxes,
+            ha="right",
+            fontsize=7.5,
+            bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
+        )
+    ax.set_ylabel("first-mode\namplitude / first", fontsize=8)
+    ax.grid(alpha=0.25, which="both")
+    ax.tick_params(labelsize=8)
+    if legend:
+        _legend_above(ax, ncol=3)
 
 
 # ------------------------------------------------------------------------------------ along-the-beam figures

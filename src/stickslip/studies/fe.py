@@ -604,21 +604,6 @@ def halved_step(mapping: Mapping) -> dict:
     return deep_merge(mapping, {"solver": {"safety_factor": HALF_STEP * sf}})
 
 
-def half_step_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
-    """The scene's metrics and window envelopes from a run at half its time step (the step-halving check,
-    stickslip.fe.step_halving)."""
-    r, m, _ = run_scene(halved_step(mapping), friction, midspan=True)
-    out = dict(m)
-    for k, y in (
-        ("horizontal_velocity", r.vx),
-        ("vertical_velocity", r.vy),
-        ("horizontal_displacement", r.x - r.x[0]),
-        ("vertical_displacement", r.y - r.y[0]),
-    ):
-        out[f"{k}_envelope"] = window_envelope(r.t, y)[1]
-    return out
-
-
 def _sweep_rows(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable, half_step: bool = False):
     sw = fe_cfg["sweeps"][sweep_name]
     base = scene_mapping(fe_cfg, sw["base"])
