@@ -25,6 +25,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
+from . import engine
+from .engine import run_steps
 from .params import FrictionTable
 
 SEPARATED, STICK, SLIP = 0, 1, 2
@@ -265,6 +267,48 @@ def _record0(pr, system, law, out, st, qs, vs, rec=None):
         qs[0], vs[0] = (u, v) if rec is None else (u[rec], v[rec])
 
 
+def csr_structure(pr: _Prepared, stiffness_damping: float) -> engine.CsrStructure:
+    """The engine's structure piece: G = dt M^-1 K in CSR form (zeros dropped), damping as prepared."""
+    import scipy.sparse as sps
+
+    G = sps.csr_matrix(pr.G)
+    G.eliminate_zeros()
+    return engine.CsrStructure(
+        G.indptr.astype(np.int64), G.indices.astype(np.int64), G.data.astype(np.float64), pr.af,
+        pr.c1, pr.c2, float(stiffness_damping),
+    )  # fmt: skip
+
+
+def point_contact(system: System, law: ContactLaw, pr: _Prepared):
+    """The engine's contact piece of ``law.method``, its vectors compressed on their non-zero coordinates."""
+    cn, ct = (np.ascontiguousarray(a, dtype=float) for a in (system.c_n, system.c_t))
+    ci = np.flatnonzero((cn != 0) | (ct != 0)).astype(np.int64)
+    mi = np.flatnonzero((pr.Mcn != 0) | (pr.Mct != 0)).astype(np.int64)
+    common = dict(
+        ci=ci, ct=ct[ci], mi=mi, Mcn=pr.Mcn[mi], Mct=pr.Mct[mi], Wtt=pr.Wtt, mu_s=law.friction.static,
+        speeds=np.asarray(law.friction.speeds, float), mu=np.asarray(law.friction.mu, float),
+        V=law.disc_speed, dt=pr.dt,
+    )  # fmt: skip
+    if law.method == "kinematic":
+        det = pr.Wnn * pr.Wtt - pr.Wnt * pr.Wnt
+        return engine.KinematicPoint(cn=cn[ci], Wnn=pr.Wnn, Wnt=pr.Wnt, det=det, g0=law.gap0, **common)
+    if law.method == "penalty":
+        return engine.PenaltyPoint(cn=cn[ci], g0=law.gap0, kp=law.penalty_stiffness, **common)
+    if law.method == "fixed_normal":
+        return engine.FixedNormalPoint(N=law.fixed_normal_force, **common)
+    raise ValueError(f"method: unknown contact method {law.method!r}")
+
+
+def point_recorder(
+    system: System, law: ContactLaw, out, st, record_state, qs, vs, rec
+) -> engine.PointRecorder:
+    """The engine's recorder of the contact point (and of the DOFs ``rec`` with ``record_state``)."""
+    cx, cy, ct = (np.ascontiguousarray(a, dtype=float) for a in (system.c_x, system.c_y, system.c_t))
+    cn = np.ascontiguousarray(system.c_n, dtype=float)
+    ci = np.flatnonzero((cn != 0) | (ct != 0)).astype(np.int64)
+    return engine.PointRecorder(out, st, cx, cy, ci, ct[ci], law.disc_speed, bool(record_state), qs, vs, rec)
+
+
 def integrate(
     system: System,
     law: ContactLaw,
@@ -318,19 +362,10 @@ def integrate(
         )
     if backend != "compiled":
         raise ValueError(f"backend: must be 'compiled' or 'python', got {backend!r}")
-    import scipy.sparse as sps
-
-    from . import kernel
-
     pr = _prepare(
         system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
         mass_damping, stiffness_damping,
     )  # fmt: skip
-    G = sps.csr_matrix(pr.G)
-    G.eliminate_zeros()
-    indptr = G.indptr.astype(np.int64)
-    indices = G.indices.astype(np.int64)
-    data = G.data.astype(np.float64)
     out = np.zeros((8, pr.n_out))
     st = np.zeros(pr.n_out, dtype=np.int8)
     rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
@@ -338,30 +373,10 @@ def integrate(
     qs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     vs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None, rec)
+    recorder = point_recorder(system, law, out, st, record_state, qs, vs, rec)
+    structure, contact = csr_structure(pr, stiffness_damping), point_contact(system, law, pr)
     counts = np.zeros(3, dtype=np.int64)
-    fs = np.asarray(law.friction.speeds, float)
-    fm = np.asarray(law.friction.mu, float)
     u, v = pr.u.copy(), pr.v.copy()
-    vecs = (system.c_n, system.c_t, system.c_x, system.c_y)
-    cn, ct, cx, cy = (np.ascontiguousarray(a, dtype=float) for a in vecs)
-    beta = float(stiffness_damping)
-    ci = np.flatnonzero((cn != 0) | (ct != 0)).astype(np.int64)  # contact vectors compressed on their DOFs
-    mi = np.flatnonzero((pr.Mcn != 0) | (pr.Mct != 0)).astype(np.int64)
-    common = (
-        indptr, indices, data, pr.af, pr.c1, pr.c2, beta,
-        ci, cn[ci], ct[ci], cx, cy, mi, pr.Mcn[mi], pr.Mct[mi],
-    )  # fmt: skip
-    if law.method == "kinematic":
-        fn = kernel.run_kinematic
-        args = (pr.Wnn, pr.Wnt, pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.gap0)
-    elif law.method == "penalty":
-        fn = kernel.run_penalty
-        args = (pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.gap0, law.penalty_stiffness)
-    elif law.method == "fixed_normal":
-        fn = kernel.run_fixed_normal
-        args = (pr.Wtt, law.friction.static, fs, fm, law.disc_speed, law.fixed_normal_force)
-    else:
-        raise ValueError(f"method: unknown contact method {law.method!r}")
     j, n_done, diverged = 1, 0, False
     n_half = pr.n_steps // 2
     first_half = counts.copy()
@@ -371,24 +386,8 @@ def integrate(
         n1 = min(pr.n_steps, n0 + chunk - 1)
         if n0 <= n_half < n1:  # a chunk ends at the half-way step, to count the second half's states
             n1 = n_half
-        j, n_done, diverged, _ = fn(
-            n0,
-            n1,
-            pr.every,
-            j,
-            u,
-            v,
-            *common,
-            *args,
-            pr.dt,
-            blowup,
-            out,
-            st,
-            counts,
-            record_state,
-            qs,
-            vs,
-            rec,
+        j, n_done, diverged = run_steps(
+            n0, n1, pr.every, j, pr.dt, blowup, u, v, counts, structure, contact, recorder
         )
         if n1 == n_half:
             first_half = counts.copy()
