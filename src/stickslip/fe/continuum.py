@@ -20,8 +20,8 @@ Fig. 17 table, explicit central differences. Here:
   predictor-corrector impulse, ``penalty`` = k_p * penetration. The "primary" node is the one touching at
   t = 0; its state and slip velocity are reported.
 * Time integration: central differences with the half-step start, optional stiffness-proportional damping
-  beta, compiled loop in ``continuum_kernel``; dt = safety_factor * dt_crit with
-  dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi), xi = beta omega_max / 2.
+  beta, the compiled loop of ``engine`` (element-by-element structure, node-wise contact);
+  dt = safety_factor * dt_crit with dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi), xi = beta omega_max / 2.
 
 Units as ``params``: mm, s, N, t (tonne), MPa.
 """
