@@ -28,7 +28,7 @@ from stickslip.fe.continuum import (
     static_state,
     strip_mesh,
 )
-from stickslip.fe.continuum_kernel import friction_coefficient
+from stickslip.fe.engine import friction_coefficient
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
 
 BEAM = BeamParams()

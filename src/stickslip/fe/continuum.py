@@ -20,8 +20,8 @@ Fig. 17 table, explicit central differences. Here:
   predictor-corrector impulse, ``penalty`` = k_p * penetration. The "primary" node is the one touching at
   t = 0; its state and slip velocity are reported.
 * Time integration: central differences with the half-step start, optional stiffness-proportional damping
-  beta, compiled loop in ``continuum_kernel``; dt = safety_factor * dt_crit with
-  dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi), xi = beta omega_max / 2.
+  beta, the compiled loop of ``engine`` (element-by-element structure, node-wise contact);
+  dt = safety_factor * dt_crit with dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi), xi = beta omega_max / 2.
 
 Units as ``params``: mm, s, N, t (tonne), MPa.
 """
@@ -36,7 +36,8 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from . import continuum_kernel as ck
+from . import engine
+from .engine import run_steps
 from .explicit import SEPARATED, STICK, ExplicitResult
 from .params import BeamParams, ContactParams, DiscParams, FrictionTable
 
@@ -464,6 +465,46 @@ def _check_run(duration: float, safety_factor: float) -> None:
         raise ValueError(f"safety_factor: must lie in (0, 1], got {safety_factor!r}")
 
 
+def quad_structure(scene: ContinuumScene, dt: float) -> engine.QuadStructure:
+    """The engine's structure piece: the distinct element stiffnesses and each element's kind and DOFs,
+    the lumped mass inverted (0 on constrained DOFs), gravity, stiffness-proportional damping."""
+    quads = scene.mesh.quads
+    dofs = (np.repeat(2 * quads, 2, axis=1) + np.tile([0, 1], 4)).astype(np.int64)
+    ke_flat = scene.element_stiffness.reshape(len(quads), -1)
+    ke_types, kind = np.unique(ke_flat, axis=0, return_inverse=True)
+    ke_types = np.ascontiguousarray(ke_types.reshape(-1, 8, 8))
+    kind = np.asarray(kind, np.int64).ravel()
+    minv = np.where(scene.fixed, 0.0, 1.0 / scene.mass)
+    return engine.QuadStructure(
+        dofs, kind, ke_types, minv, scene.f.copy(), float(scene.damping_beta), float(dt)
+    )
+
+
+def node_contact(scene: ContinuumScene, dt: float):
+    """The engine's contact piece: every slave node with its normal, surface direction, gap and mass."""
+    cdof = (2 * scene.contact_nodes).astype(np.int64)
+    nodes = (
+        cdof, np.ascontiguousarray(scene.normals), np.ascontiguousarray(scene.tangents), scene.gap0.copy(),
+        scene.mass[cdof].copy(), float(scene.disc_speed), np.asarray(scene.friction.speeds, float),
+        np.asarray(scene.friction.mu, float), int(scene.primary), float(dt),
+    )  # fmt: skip
+    if scene.method == "penalty":
+        return engine.PenaltyNodes(*nodes, scene.penalty_stiffness)
+    return engine.KinematicNodes(*nodes)
+
+
+def node_recorder(scene: ContinuumScene, out: np.ndarray, ost: np.ndarray) -> engine.NodeRecorder:
+    """The engine's recorder of "node 1" and the primary contact node's slip velocity."""
+    onode = (2 * scene.output_nodes).astype(np.int64)
+    ow = np.asarray(scene.output_weights, float)
+    k = int(scene.primary)
+    if 0 <= k < scene.contact_nodes.size:
+        pdof, pt = 2 * int(scene.contact_nodes[k]), np.ascontiguousarray(scene.tangents[k], dtype=float)
+    else:
+        pdof, pt = -1, np.zeros(2)
+    return engine.NodeRecorder(out, ost, onode, ow, pdof, pt, float(scene.disc_speed))
+
+
 def integrate_continuum(
     scene: ContinuumScene,
     duration: float,
@@ -512,18 +553,6 @@ def integrate_continuum(
             if arr.shape != target.shape:
                 raise ValueError(f"{name}: must have shape {target.shape}, got {arr.shape}")
             target[:] = np.where(scene.fixed, 0.0, arr)
-    minv = np.where(scene.fixed, 0.0, 1.0 / scene.mass)
-    quads = scene.mesh.quads
-    dofs = (np.repeat(2 * quads, 2, axis=1) + np.tile([0, 1], 4)).astype(np.int64)
-    ke_flat = scene.element_stiffness.reshape(len(quads), -1)
-    ke_types, kind = np.unique(ke_flat, axis=0, return_inverse=True)
-    ke_types = np.ascontiguousarray(ke_types.reshape(-1, 8, 8))
-    kind = np.asarray(kind, np.int64).ravel()
-    fext = scene.f.copy()
-    cdof = (2 * scene.contact_nodes).astype(np.int64)
-    cm = scene.mass[cdof].copy()
-    fs = np.asarray(scene.friction.speeds, float)
-    fmu = np.asarray(scene.friction.mu, float)
     onode = (2 * scene.output_nodes).astype(np.int64)
     ow = np.asarray(scene.output_weights, float)
     pt = [float(ow @ arr[onode + k]) for arr in (u, v) for k in (0, 1)]
@@ -539,23 +568,17 @@ def integrate_continuum(
     ost[0] = STICK if closed else SEPARATED
     qs = [u.copy()] if record_state else None
     vs = [v.copy()] if record_state else None
-    common = (
-        dofs, kind, ke_types, minv, fext, float(scene.damping_beta), u, v, cdof,
-        np.ascontiguousarray(scene.normals), np.ascontiguousarray(scene.tangents), scene.gap0.copy(), cm,
-        float(scene.disc_speed), fs, fmu, int(scene.primary), onode, ow, out, ost,
-    )  # fmt: skip
+    structure, contact = quad_structure(scene, dt), node_contact(scene, dt)
+    recorder = node_recorder(scene, out, ost)
     step = chunk if not record_state else every
-    j, done, diverged = 1, 0, 0
+    j, done, diverged = 1, 0, False
     t0 = time.process_time()
     while done < n_steps and not diverged:
         stop = min(done + step, n_steps)
-        if scene.method == "penalty":
-            j, diverged = ck.run_penalty(
-                done, stop, dt, every, *common, j, counts, blowup, scene.penalty_stiffness
-            )
-        else:
-            j, diverged = ck.run_kinematic(done, stop, dt, every, *common, j, counts, blowup)
-        done = stop
+        j, _, diverged = run_steps(
+            done + 1, stop, every, j, dt, blowup, u, v, counts, structure, contact, recorder
+        )
+        done = stop  # a diverged run reports its chunk's end
         if record_state and done % every == 0:
             qs.append(u.copy())
             vs.append(v.copy())
