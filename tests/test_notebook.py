@@ -205,7 +205,8 @@ def test_render_all_renders_the_rest_when_one_fails_and_logs_why(tmp_path, monke
 def test_claims_table_shows_the_papers_words_beside_its_numbers(tmp_path):
     """A comparison's reported cell is the paper's statement, a value's its number: the table shows both
     (the rendered Section 3-7 notebooks once failed on a words cell formatted as a number)."""
-    rows = [row("a", "r1", "reproduced"), {**row("b", "r1", "deviates"), "kind": "compare", "reported": "x > y"}]
+    compared = {**row("b", "r1", "deviates"), "kind": "compare", "reported": "x > y"}
+    rows = [row("a", "r1", "reproduced"), compared]
     path = tmp_path / "mixed.csv"
     pd.DataFrame(rows, columns=COLUMNS).to_csv(path, index=False)
     cells = re.findall(r'class="data row\d+ col\d+" >([^<]*)<', styled_claims(claims_frame(path)).to_html())
