@@ -10,7 +10,7 @@ LOCK := requirements/lock.txt
 UV_LOCK := requirements/uv.txt
 JOBS ?= 2
 # Snakemake's default (ILP) scheduler starts an LP solver at every scheduling round: ~28 s of CPU and ~15 s
-# of wall time in a clean build of this DAG on 2 cores (README, Timing). The greedy one picks by priority
+# of wall time in a clean build of this DAG on 2 cores (docs/TIMING.md). The greedy one picks by priority
 # (longest jobs first, workflow/rules/common.smk), which is all a 2-core run needs.
 SNAKEMAKE = $(BIN)/snakemake --scheduler greedy
 export PATH := $(BIN):$(PATH)

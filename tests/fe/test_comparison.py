@@ -6,6 +6,7 @@ import pytest
 import xarray as xr
 
 from stickslip.fe.params import FrictionTable
+from stickslip.studies.fe import halved_step
 from stickslip.studies.fe_comparison import (
     AGREEMENT_REL,
     QUANTITIES,
@@ -13,7 +14,6 @@ from stickslip.studies.fe_comparison import (
     beam_metrics,
     comparison_rows,
     continuum_dataset,
-    halved_step_mapping,
     noise_floors,
     relative_difference,
 )
@@ -42,7 +42,7 @@ def test_beam_matches_continuum_on_a_drop(disc, contact):
     }
     cont = continuum_dataset(mapping, FIG17, nx=100, ny=1, name="s")
     beam = beam_metrics(mapping, FIG17)
-    floors = {"s": noise_floors(beam, beam_metrics(halved_step_mapping(mapping), FIG17))}
+    floors = {"s": noise_floors(beam, beam_metrics(halved_step(mapping), FIG17))}
     rows = comparison_rows({"s": cont}, {"s": beam}, floors=floors)
     for r in rows:
         if r["quantity"] in ("horizontal_amplitude", "mean_horizontal_displacement", "dominant_frequency"):

@@ -6,13 +6,12 @@ from pathlib import Path
 from stickslip.fe.params import FrictionTable
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import INTERPRETATION, comparison_mapping, effective_fe_config
+from stickslip.studies.fe import INTERPRETATION, comparison_mapping, effective_fe_config, halved_step
 from stickslip.studies.fe_comparison import (
     beam_metrics,
     comparison_dataset,
     comparison_rows,
     continuum_dataset,
-    halved_step_mapping,
     noise_floors,
 )
 
@@ -28,7 +27,7 @@ for path in snakemake.output.continuum:  # noqa: F821
     cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
     write_dataset(cont[name], path, scene=mapping, interpretation=INTERPRETATION, method={"mesh": [nx, ny]})
     beam[name] = beam_metrics(mapping, friction)
-    floors[name] = noise_floors(beam[name], beam_metrics(halved_step_mapping(mapping), friction))
+    floors[name] = noise_floors(beam[name], beam_metrics(halved_step(mapping), friction))
     print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
 rows = comparison_rows(cont, beam, cmp.get("notes", {}), floors)
 with open(snakemake.output.table, "w", newline="") as f:  # noqa: F821

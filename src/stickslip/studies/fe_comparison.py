@@ -16,7 +16,7 @@ import xarray as xr
 from ..fe.metrics import trajectory_metrics
 from ..fe.params import FrictionTable
 from ..fe.scene import SceneParams
-from .fe import INTERPRETATION, deep_merge, result_dataset, run_scene
+from .fe import INTERPRETATION, result_dataset, run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -107,12 +107,6 @@ def continuum_dataset(
 def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
     _, m, _ = run_scene(mapping, friction)
     return m
-
-
-def halved_step_mapping(mapping: Mapping) -> dict:
-    """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
-    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
-    return deep_merge(mapping, {"solver": {"safety_factor": 0.5 * sf}})
 
 
 def noise_floors(metrics: Mapping, metrics_half_step: Mapping) -> dict:
