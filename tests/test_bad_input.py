@@ -91,6 +91,12 @@ CASES = {
     "validation_typo": ({"validation": {"tolerances": {"tim": {}}}}, ["tim"]),
     "dense_map_typo": ({"dense_map": {"chunk_sise": 10}}, ["chunk_sise"]),
     "fe_long_runs_not_bool": ({"fe_long_runs": "yes"}, ["fe_long_runs"]),
+    "fe_control_window_negative": ({"fe": {"control_readings_t_end": -0.1}}, ["fe.control_readings_t_end"]),
+    # a control reading's window shorter than its output interval: named with the reading
+    "fe_control_window_below_output_dt": (
+        {"fe": {"control_readings_t_end": 1.0e-6}},
+        ["lower_face_static", "solver.output_dt"],
+    ),
     "allow_expensive_not_bool": ({"allow_expensive": "yes"}, ["allow_expensive"]),
     # run lengths that do not fit in their run (1-DOF, studies)
     "onedof_output_dt_beyond_t_end": (

@@ -614,6 +614,9 @@ class LongRuns(Section):
 class Fe(Section):
     friction_table: str = Field(description="CSV relative_velocity_mm_per_s,mu from rule friction_table")
     long_runs: LongRuns
+    control_readings_t_end: Positive = Field(
+        description="solver.t_end [s] of every FE reading but the first (the default runs the scenes' own)"
+    )
     defaults: FeScene
     readings: Annotated[dict[str, FeScene], Field(min_length=1)]
     scenes: Annotated[dict[str, FeScene], Field(min_length=1)]

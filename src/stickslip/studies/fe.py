@@ -113,7 +113,8 @@ def deep_merge(a: Mapping, b: Mapping) -> dict:
 
 
 def scene_mapping(fe_cfg: Mapping, name: str, reading: str | None = None) -> dict:
-    """defaults <- reading <- scene. ``reading`` None: the first of ``fe_cfg['readings']`` (if any).
+    """defaults <- reading <- scene, and for every reading but the first (the default) its window
+    ``fe_cfg['control_readings_t_end']`` where given. ``reading`` None: the first of ``fe_cfg['readings']``.
 
     A reading fixes how the paper's ambiguous geometry is read (contact face, node 1, disc direction,
     start); a scene sets what the paper varies (contact method, disc speed, angle)."""
@@ -126,7 +127,11 @@ def scene_mapping(fe_cfg: Mapping, name: str, reading: str | None = None) -> dic
         raise ValueError(f"readings.{reading}: no such FE reading ({sorted(readings)})")
     over = dict(readings.get(reading, {}) or {}) if reading else {}
     over.pop("description", None)
-    return deep_merge(deep_merge(fe_cfg.get("defaults", {}), over), fe_cfg["scenes"][name])
+    merged = deep_merge(deep_merge(fe_cfg.get("defaults", {}), over), fe_cfg["scenes"][name])
+    control = fe_cfg.get("control_readings_t_end")
+    if control is not None and reading is not None and reading != next(iter(readings)):
+        merged = deep_merge(merged, {"solver": {"t_end": float(control)}})  # a control reading's window
+    return merged
 
 
 def effective_fe_config(config: Mapping) -> dict:
@@ -138,9 +143,7 @@ def effective_fe_config(config: Mapping) -> dict:
         lr = fe.get("long_runs", {})
         t_end = float(lr["scene_t_end"])
         fe.setdefault("defaults", {}).setdefault("solver", {})["t_end"] = t_end
-        for reading in (fe.get("readings") or {}).values():  # the control readings' short windows too
-            if "t_end" in ((reading or {}).get("solver") or {}):
-                reading["solver"]["t_end"] = t_end
+        fe["control_readings_t_end"] = t_end  # the control readings' short window too
         fe.setdefault("comparison", {})["t_end"] = float(lr["comparison_t_end"])
     return fe
 
