@@ -49,6 +49,8 @@ CONDA_ENV = "../envs/stickslip.yaml"
 #: lets both cores finish together, and the FE and study jobs the claims table and notebooks wait for are
 #: not left to the end (Snakemake otherwise picks among ready jobs without knowing their length).
 PRIORITY = {
+    # no job of its own is long, but every FE job (~100 s of CPU) waits for its table: first
+    "friction_table": 40,
     "inverse_study": 35,
     "methods_work_precision": 30,
     "methods_failure_map": 15,
@@ -56,7 +58,8 @@ PRIORITY = {
     "onedof_sweeps": 10,
     "fe_figures": 10,
     "fe_studies": 10,
-    "fe_reading": 6,
+    # the default reading runs the paper's 1 s window: ~30 s, and the FE figures and the claims wait for it
+    "fe_reading": 25,
 }
 
 #: Final outputs; every rules file appends its own.

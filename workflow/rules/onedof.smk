@@ -67,6 +67,7 @@ rule friction_table:
         "results/logs/friction_table/all.log",
     benchmark:
         "results/benchmarks/friction_table/all.tsv"
+    priority: PRIORITY["friction_table"]
     conda:
         CONDA_ENV
     params:
