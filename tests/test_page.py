@@ -312,3 +312,23 @@ def test_readme_opens_with_the_two_commands_and_stays_short():
     code = lines[lines.index("```bash") + 1 :][:2]
     assert lines.index("```bash") <= 3
     assert [c.split()[:2] for c in code] == [["make", "figures"], ["make", "test"]]
+
+
+def test_a_figure_card_shows_the_image_of_that_figure_alone_first():
+    """Fig. 21's card: its own ``fig21`` image before the scene overviews (Figs. 19-25) its claims read."""
+    from stickslip.presentation.page import Source, image_rank
+
+    scene = Source(
+        "results/figures/fe/section9_kinematic_15p2rpm.png",
+        list(range(19, 26)),
+        "section9_kinematic_15p2rpm",
+        "r",
+    )
+    alone = Source("results/figures/fe/fig21.png", [21], "fig21", "r")
+    datasets = ["results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc"]
+    ranked = sorted([scene, alone], key=lambda s: image_rank(s, "lower_face_drop", [], datasets))
+    assert [s.label for s in ranked] == ["fig21", "section9_kinematic_15p2rpm"]
+    # a 1-DOF figure's best reading still comes first
+    best = Source("results/figures/fig02/plateau_text.png", [2, 3], "plateau_text", "r")
+    other = Source("results/figures/fig02/consistent_text.png", [2], "consistent_text", "r")
+    assert sorted([other, best], key=lambda s: image_rank(s, "plateau_text", [], []))[0] is best

@@ -36,6 +36,15 @@ HERE = Path(__file__).parent
 THUMB_WIDTH = 360  # px: the thumbnails' width (the cards show them at up to 320 px)
 
 
+def image_rank(source, reading: str, preferred: list[str], datasets: list[str]) -> tuple:
+    """Sort key of the images of one paper figure: the best reading's first, then an image of that figure
+    alone (a beam-on-disc ``figNN`` before the scene overviews that show several figures), then by reading
+    preference, then the scene its claims read most."""
+    rank = preferred.index(source.label) if source.label in preferred else len(preferred)
+    read = -sum(source.label in p for p in datasets)
+    return (source.label != reading, len(source.figures) > 1, rank, read, source.label)
+
+
 @dataclass
 class Source:
     """An image (or table) a rule wrote that shows some figures of the paper."""
@@ -306,12 +315,8 @@ class PageBuilder:
         preferred = readings_by_preference(rows, self.order)
         datasets = [p for r in rows for p in dataset_paths_of(self.claim.get(r["claim"], {}))]
 
-        def key(s: Source):  # the best reading's image, then by reading preference, then the scene most read
-            rank = preferred.index(s.label) if s.label in preferred else len(preferred)
-            return (s.label != reading, rank, -sum(s.label in p for p in datasets), s.label)
-
         out = []
-        for s in sorted(mine, key=key):
+        for s in sorted(mine, key=lambda s: image_rank(s, reading, preferred, datasets)):
             script = self.workdir / s.script if s.script else None
             out.append(
                 {
