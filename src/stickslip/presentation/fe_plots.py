@@ -114,6 +114,20 @@ def _window(ds, w):
     return m
 
 
+def _between(ds, t0, t1):
+    """Mask of the full-resolution samples in [t0, t1] (to round-off)."""
+    return (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
+
+
+def _bins_from(ax, ds, var, t0, t_max, label, model):
+    """A model's per-bin min-max band of ``var`` from ``t0`` on, where it kept no samples to draw."""
+    t, lo, hi = band_columns(ds, var, t_max=t_max)
+    keep = t >= t0
+    ax.fill_between(
+        t[keep], lo[keep], hi[keep], alpha=0.35, lw=0, step="mid", label=label, **MODEL_STYLE[model]
+    )
+
+
 def _spectrum(t, y):
     y = y - y.mean()
     dt = float(np.median(np.diff(t)))
@@ -223,10 +237,7 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_f.legend(fontsize=7)
     # the last 5 ms of the comparison window: full-resolution samples where a model kept them, else its bins
     w_end = (t_cmp - 0.005, t_cmp)
-    last = {
-        name: (ds.time.values >= w_end[0] - 1e-9) & (ds.time.values <= w_end[1] + 1e-9)
-        for name, ds in models.items()
-    }
+    last = {name: _between(ds, *w_end) for name, ds in models.items()}
     ax_n = fig.add_subplot(gs[5, 1])
     for name, ds in models.items():
         if last[name].sum() > 1:
@@ -238,18 +249,7 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
                 **MODEL_STYLE[name],
             )
         elif "normal_force_min" in ds:
-            t, lo, hi = band_columns(ds, "normal_force", t_max=t_max)
-            keep = t >= w_end[0]
-            ax_n.fill_between(
-                t[keep],
-                lo[keep],
-                hi[keep],
-                alpha=0.35,
-                lw=0,
-                step="mid",
-                label=f"{name} normal (min-max per bin)",
-                **MODEL_STYLE[name],
-            )
+            _bins_from(ax_n, ds, "normal_force", w_end[0], t_max, f"{name} normal (min-max per bin)", name)
     if last["beam"].sum() > 1:
         m = last["beam"]
         ax_n.plot(
@@ -264,7 +264,7 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     for col, (t0, t1) in enumerate(((0.0, 0.005), w_end)):
         ax = fig.add_subplot(gs[6, col])
         for name, ds in models.items():
-            m = (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
+            m = _between(ds, t0, t1)
             if m.sum() > 1:
                 ax.plot(
                     ds.time.values[m],
@@ -274,20 +274,10 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
                     **MODEL_STYLE[name],
                 )
             else:
-                t, lo, hi = band_columns(ds, "horizontal_displacement", t_max=t_max)
-                keep = t >= t0
-                ax.fill_between(
-                    t[keep],
-                    lo[keep],
-                    hi[keep],
-                    alpha=0.35,
-                    lw=0,
-                    step="mid",
-                    label=f"{name} (min-max per bin: no samples kept here)",
-                    **MODEL_STYLE[name],
-                )
+                label = f"{name} (min-max per bin: no samples kept here)"
+                _bins_from(ax, ds, "horizontal_displacement", t0, t_max, label, name)
         ax.set_xlim(t0, t1)
-        m = (ref.time.values >= t0 - 1e-9) & (ref.time.values <= t1 + 1e-9)
+        m = _between(ref, t0, t1)
         shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
         shade = "continuum" if continuum is not None else "beam"
         ax.set_xlabel(f"time [s]: {t0:.4g}-{t1:.4g} s, every sample (shading: {shade} state)")
