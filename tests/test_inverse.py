@@ -9,7 +9,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.stats import chi2
@@ -18,25 +17,12 @@ from stickslip.analysis.metrics import limit_cycle_metrics
 from stickslip.inverse.fit import INFEASIBLE_RESIDUAL, _fun, best_fit, sample_region
 from stickslip.inverse.forward import Forward, build_model, observe
 from stickslip.inverse.hypotheses import single_changes, stated_score
-from stickslip.inverse.problem import METRICS, build_problem, load_claim_rows, with_observations
+from stickslip.inverse.problem import METRICS, build_problem, with_observations
 from stickslip.model import BeltParams
 from stickslip.solvers.exact import ExactSwitchSolver
 
 ROOT = Path(__file__).resolve().parents[1]
 T = np.linspace(0.0, 40.0, 4001)
-
-
-@pytest.fixture(scope="module")
-def config():
-    cfg = {}
-    for name in ("config.yaml", "inverse.yaml"):
-        cfg.update(yaml.safe_load((ROOT / "config" / name).read_text()))
-    return cfg
-
-
-@pytest.fixture(scope="module")
-def claims():
-    return load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
 
 
 def _params(**kw):

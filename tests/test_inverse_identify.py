@@ -7,28 +7,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from stickslip.inverse.conflicts import minimal_conflicts
 from stickslip.inverse.forward import Forward
 from stickslip.inverse.identify import PROFILE_THRESHOLD, identify, on_ridge, parameter_ranges
-from stickslip.inverse.problem import build_problem, load_claim_rows
+from stickslip.inverse.problem import build_problem
 from stickslip.inverse.study import fit_problem, settings_of
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-@pytest.fixture(scope="module")
-def config():
-    cfg = {}
-    for name in ("config.yaml", "inverse.yaml"):
-        cfg.update(yaml.safe_load((ROOT / "config" / name).read_text()))
-    return cfg
-
-
-@pytest.fixture(scope="module")
-def claims():
-    return load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
 
 
 @pytest.fixture(scope="module")
