@@ -311,6 +311,7 @@ BAD_CLAIMS = {
 
 #: A valid row of each kind; the cases below break one key of one of them.
 VALUE_ROW = {
+    "evidence": "evidence",
     "id": "zz_value",
     "section": "3",
     "figure": "Fig. 2",
@@ -325,6 +326,7 @@ VALUE_ROW = {
     "expected": "deviates",
 }
 COMPARE_ROW = {
+    "evidence": "evidence",
     "id": "zz_compare",
     "section": "5",
     "figure": "Fig. 5 vs 2",
@@ -337,6 +339,7 @@ COMPARE_ROW = {
     "expected": "reproduced",
 }
 TREND_ROW = {
+    "evidence": "evidence",
     "id": "zz_trend",
     "section": "5",
     "figure": "Fig. 10",
@@ -385,6 +388,20 @@ BAD_CLAIMS.update(
         "claims_value_with_a_relation": ([_with(VALUE_ROW, relation=">")], ["zz_value", "relation"]),
         "claims_unknown_key": ([_with(VALUE_ROW, comparble=False)], ["zz_value", "comparble"]),
         "claims_fit_flag_as_text": ([_with(VALUE_ROW, fit="yes")], ["zz_value", "fit"]),
+        "claims_evidence_class_missing": ([_without(VALUE_ROW, "evidence")], ["zz_value", "evidence"]),
+        "claims_evidence_class_unknown": ([_with(VALUE_ROW, evidence="proof")], ["zz_value", "evidence"]),
+        "claims_not_evidence_without_why": (
+            [_with(VALUE_ROW, evidence="by_construction")],
+            ["zz_value", "evidence_note"],
+        ),
+        "claims_evidence_with_a_why_not": (
+            [_with(VALUE_ROW, evidence_note="it cannot fail")],
+            ["zz_value", "evidence_note"],
+        ),
+        "claims_twin_and_one_speed": (
+            [_with(VALUE_ROW, twin="zz_other", one_speed="why")],
+            ["zz_value", "one_speed"],
+        ),
         "claims_figure_not_in_the_paper": ([_with(VALUE_ROW, figures=[99])], ["zz_value", "figures", "99"]),
         "claims_figures_as_text": ([_with(VALUE_ROW, figures="2")], ["zz_value", "figures"]),
         "claims_figures_missing": ([_without(VALUE_ROW, "figures")], ["zz_value", "figures"]),
@@ -435,6 +452,30 @@ BAD_CLAIMS_IN_CONTEXT = {
         [_with(VALUE_ROW, expected={"default": "deviates", "consistent_captoin": "reproduced"})],
         ["zz_value", "expected.consistent_captoin", "not a reading"],
     ),
+    "claims_fe_row_without_its_other_speed": (
+        [_with(VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc")],
+        ["zz_value", "15p2rpm", "twin", "one_speed"],
+    ),
+    "claims_twin_that_does_not_exist": (
+        [
+            _with(
+                VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc", twin="zz_gone"
+            )
+        ],
+        ["zz_value", "twin", "zz_gone"],
+    ),
+    "claims_twin_at_the_same_speed": (
+        [
+            _with(VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc", twin="zz_b"),
+            _with(
+                VALUE_ROW,
+                id="zz_b",
+                dataset="results/fe/lower_face_drop/section11_penalty_15p2rpm.nc",
+                twin="zz_value",
+            ),
+        ],
+        ["zz_value", "twin", "other disc speed"],
+    ),  # fmt: skip
     "claims_note_for_an_unknown_reading": (
         [_with(VALUE_ROW, note={"eq9_text": "why"})],
         ["zz_value", "note.eq9_text", "not a reading"],

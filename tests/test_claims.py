@@ -31,6 +31,7 @@ ROW = {
     "unit": "Hz",
     "tolerance": {"rel": 0.2, "reason": "test"},
     "expected": "reproduced",
+    "evidence": "evidence",
 }
 
 
@@ -169,3 +170,84 @@ def test_round_off_is_no_trend_and_no_effect_claims_hold():
     rising = {**ROW, "kind": "trend", "dataset": "s.nc", "coord": "m", "variable": "amp", "sign": 1}
     assert evaluate(rising, "", lambda p: ds).status == "deviates"
     assert evaluate({**rising, "sign": 0}, "", lambda p: ds).status == "reproduced"
+
+
+# -- reasons a reader can scan ------------------------------------------------------------------------
+
+
+def _withheld_dataset(full, half):
+    """A scene dataset whose metric the step-halving check withheld (stickslip.fe.step_halving)."""
+    return xr.Dataset(
+        {
+            "stick_fraction": ((), np.nan, {"units": "1", "step_halving": "not converged"}),
+            "stick_fraction_full_step": ((), full, {"units": "1"}),
+            "stick_fraction_half_step": ((), half, {"units": "1"}),
+        }
+    )
+
+
+def test_a_withheld_value_still_decides_which_side_of_a_threshold_it_is_on():
+    row = {
+        **ROW,
+        "kind": "compare",
+        "lhs": {"dataset": "s.nc", "variable": "stick_fraction"},
+        "relation": ">",
+        "rhs": {"value": 0.0},
+    }
+    for key in ("dataset", "variable", "value", "unit", "tolerance"):
+        row.pop(key)
+    decided = evaluate(row, "", lambda p: _withheld_dataset(0.404, 0.338))
+    assert decided.status == "reproduced"  # both steps > 0, far beyond their difference
+    assert "0.404 at dt, 0.338 at dt/2" in decided.reason
+    undecided = evaluate(row, "", lambda p: _withheld_dataset(0.02, -0.01))
+    assert undecided.status == "indistinguishable"  # the two steps disagree on the side
+
+
+def test_a_withheld_value_claim_names_both_steps_and_is_not_called_unmeasurable():
+    row = {**ROW, "dataset": "s.nc", "variable": "stick_fraction", "value": 0.4, "unit": "1"}
+    res = evaluate(row, "", lambda p: _withheld_dataset(0.404, 0.338))
+    assert res.status == "not-comparable"
+    assert res.reason.startswith("Not comparable: the value moves under step halving, so it is withheld.")
+    assert "0.404 at dt, 0.338 at dt/2" in res.reason
+    assert "nothing computed" not in res.reason
+
+
+def test_reason_opens_with_one_short_conclusion_and_keeps_every_caveat():
+    from stickslip.io.claims import CONCLUSION_LENGTH
+
+    noted = {**ROW, "note": "a caveat that must survive a reproduced status"}
+    for reading in ("a", "b"):
+        res = evaluate(noted, reading, opener)
+        conclusion = res.reason.split(" | ")[0]
+        assert len(conclusion) <= CONCLUSION_LENGTH and conclusion.endswith((".", "…"))
+        assert conclusion.startswith(("Reproduced", "Deviates", "Undecided", "Not comparable"))
+        assert "a caveat that must survive" in res.reason
+    apart = evaluate({**ROW, "evidence": "by_construction", "evidence_note": "an input"}, "a", opener)
+    assert apart.evidence == "by_construction"
+    assert "by construction" in apart.reason.split(" | ")[0] and "an input" in apart.reason
+
+
+def test_failed_sweep_members_are_named_in_the_reason():
+    ds = xr.Dataset(
+        {
+            "frequency_peaks": ("mu_s", [0.3, 0.25, np.nan]),
+            "solver_ok": ("mu_s", [1, 1, 0]),
+            "failure_message": (
+                "mu_s",
+                np.array(["none", "none", "diverged at |x| = 3.3e16 mm"], dtype=object),
+            ),
+        },
+        coords={"mu_s": [0.2, 0.5, 0.9]},
+    )
+    trend = {
+        **ROW,
+        "kind": "trend",
+        "dataset": "s.nc",
+        "coord": "mu_s",
+        "sign": -1,
+        "variable": "frequency_peaks",
+    }
+    for key in ("value", "unit", "tolerance"):
+        trend.pop(key)
+    res = evaluate(trend, "", lambda p: ds)
+    assert "mu_s = 0.9 failed (diverged at |x| = 3.3e16 mm)" in res.reason

@@ -1,5 +1,6 @@
 """The replication page: the verdict rule, and the page of a real run loaded in a headless browser."""
 
+import re
 import shutil
 import subprocess
 from html.parser import HTMLParser
@@ -9,8 +10,17 @@ from urllib.parse import unquote, urlsplit
 import pytest
 
 from stickslip.io.claims import load_claims, read_table
-from stickslip.presentation.page import claim_figures, paper_spec
-from stickslip.presentation.verdicts import VERDICTS, best_reading, figure_verdict, rows_in_reading
+from stickslip.presentation.page import paper_spec
+from stickslip.presentation.verdicts import (
+    SUCCESS,
+    VERDICTS,
+    best_reading,
+    figure_table,
+    figure_verdict,
+    rows_in_reading,
+    tally,
+    verdict_label,
+)
 
 from project_run import shared_small_run
 
@@ -33,6 +43,32 @@ PAPER_FIGURES = [*range(2, 18), *range(19, 37)]
 def test_figure_verdict_counts_only_decided_claims(statuses, verdict):
     assert figure_verdict(statuses) == verdict
     assert verdict in VERDICTS
+
+
+@pytest.mark.parametrize("decided", range(0, 25))
+def test_no_success_label_below_a_third_reproduced(decided):
+    for k in range(decided + 1):
+        label = verdict_label(k, decided)
+        assert label in VERDICTS
+        if decided and k / decided < 1 / 3:
+            assert label not in SUCCESS, f"{k} of {decided} labelled {label}"
+        if decided and k == decided:
+            assert label == "reproduced"
+        if decided == 0:
+            assert label == "not comparable"
+    assert verdict_label(2, 13) == "deviating"  # the case a reviewer found labelled "partly"
+
+
+def test_rows_that_are_not_evidence_are_in_no_count():
+    rows = [
+        {"claim": "a", "reading": "", "status": "deviates", "evidence": "evidence"},
+        {"claim": "b", "reading": "", "status": "reproduced", "evidence": "by_construction"},
+        {"claim": "c", "reading": "", "status": "reproduced", "evidence": "relabel"},
+        {"claim": "d", "reading": "", "status": "reproduced", "evidence": "fit"},
+    ]
+    t = tally(rows)
+    assert (t.reproduced, t.decided, t.undecided, t.apart) == (0, 1, 0, 3)
+    assert t.label == "deviating"
 
 
 def _row(claim, reading, status):
@@ -199,15 +235,41 @@ def check_page(chrome, run):
     assert sorted(set(PAPER_FIGURES) - set(figures)) == []
     assert {"section-4", "conclusions"} <= set(dom.cards)
 
-    # the verdicts on the page are those the claims table gives, under the documented rule
+    # the verdicts on the page are those of figure_verdicts.csv, which the claims table gives under the rule
     rows = read_table(results / "claims" / "deviations.csv")
-    figs_of = claim_figures(load_claims(sorted((run / "config" / "claims").glob("*.yaml"))))
-    order = [r["reading"] for r in read_table(results / "claims" / "reading_ranking.csv")]
+    claims = load_claims(sorted((run / "config" / "claims").glob("*.yaml")))
+    import yaml
+
+    config = yaml.safe_load((run / "config" / "config.yaml").read_text())
+    table = {r["figure"]: r for r in read_table(results / "claims" / "figure_verdicts.csv")}
     for number, shown in figures.items():
-        mine = [r for r in rows if number in figs_of[r["claim"]]]
-        reading = best_reading(mine, order)
-        judged = rows_in_reading(mine, reading) if reading else mine
-        assert shown == figure_verdict(r["status"] for r in judged), f"Fig. {number}"
+        assert shown == table[str(number)]["primary_verdict"], f"Fig. {number}"
+    recomputed = figure_table(
+        paper_spec(), rows, claims, table["2"]["primary_reading"], table["2"]["printed_reading"],
+        table["21"]["primary_reading"], read_table(results / "fe" / "readings_claims.csv"),
+    )  # fmt: skip
+    assert {r["figure"]: str(r["primary_verdict"]) for r in recomputed} == {
+        k: v["primary_verdict"] for k, v in table.items()
+    }
+    assert table["2"]["primary_reading"] in config["claims"]["readings"]
+    assert "glossary" in proc.stdout and 'id="g-primary"' in proc.stdout
+
+    # nothing on a card is wider than the card at 1400 px: a copy of the page measures itself
+    probe = results / "index_probe.html"
+    probe.write_text(
+        page.read_text().replace(
+            "</body>",
+            "<script>const wide = [...document.querySelectorAll('section.card')].flatMap(c =>"
+            " [...c.querySelectorAll('table')].filter(t => t.getBoundingClientRect().right >"
+            " c.getBoundingClientRect().right + 1).map(t => c.id));"
+            " document.body.dataset.tooWide = wide.join(' ') || 'none';</script></body>",
+        )
+    )
+    proc = _headless(chrome, "--window-size=1400,900", "--dump-dom", probe.resolve().as_uri())
+    probe.unlink()
+    found = re.search(r'data-too-wide="([^"]*)"', proc.stdout)
+    assert found, "the width probe did not run"
+    assert found.group(1) == "none", f"tables wider than their card at 1400 px: {found.group(1)}"
 
     shot = results / "page_top.png"
     shot.unlink(missing_ok=True)
@@ -222,58 +284,60 @@ def check_page(chrome, run):
 # -- the notebooks show the same verdicts, and let wide tables scroll --------------------------------------
 
 
+def _tiny_table(tmp_path):
+    """A claims table of two figures in two readings, one fitted row, as figure_verdicts.csv holds it."""
+    import csv
+
+    claims = [
+        {"id": "a", "section": "3", "figures": [2], "evidence": "evidence"},
+        {"id": "b", "section": "3", "figures": [2, 3], "evidence": "evidence"},
+        {"id": "f", "section": "3", "figures": [2], "evidence": "fit"},
+    ]
+    rows = [
+        {"claim": "a", "reading": "r1", "status": "reproduced", "evidence": "evidence"},
+        {"claim": "b", "reading": "r1", "status": "deviates", "evidence": "evidence"},
+        {"claim": "a", "reading": "r2", "status": "reproduced", "evidence": "evidence"},
+        {"claim": "b", "reading": "r2", "status": "not-comparable", "evidence": "evidence"},
+        {"claim": "f", "reading": "r1", "status": "reproduced", "evidence": "fit"},
+        {"claim": "f", "reading": "r2", "status": "reproduced", "evidence": "fit"},
+    ]
+    paper = {"figures": [{"number": 2, "half": "onedof"}, {"number": 3, "half": "onedof"}], "text": []}
+    table = figure_table(paper, rows, claims, "r1", "r2", "", [])
+    path = tmp_path / "figure_verdicts.csv"
+    with path.open("w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=list(table[0]))
+        writer.writeheader()
+        writer.writerows(table)
+    return table, path
+
+
+def test_a_figure_is_judged_in_the_primary_reading_with_the_search_apart(tmp_path):
+    table, _ = _tiny_table(tmp_path)
+    fig2 = table[0]
+    # primary r1: a reproduced, b deviates (the fitted row counts nowhere); as printed r2: 1 of 1
+    assert (fig2["primary_reading"], fig2["primary_reproduced"], fig2["primary_decided"]) == ("r1", 1, 2)
+    assert fig2["primary_verdict"] == "partly"
+    assert (fig2["printed_verdict"], fig2["printed_reproduced"], fig2["printed_decided"]) == (
+        "reproduced",
+        1,
+        1,
+    )
+    assert (fig2["best_reading"], fig2["readings_searched"]) == ("r2", 2)
+    assert fig2["not_evidence"] == "2 fit"
+    assert table[1]["primary_verdict"] == "deviating"  # Fig. 3: b deviates in r1
+
+
 def test_notebook_verdicts_are_the_pages(tmp_path):
     from stickslip.presentation.notebook import figure_verdicts
 
-    (tmp_path / "claims").mkdir()
-    (tmp_path / "claims" / "c.yaml").write_text(
-        "- {id: a, section: '3', figure: Fig. 2, figures: [2], quote: q, kind: trend, expected: reproduced,"
-        " dataset: d.nc, variable: v, coord: c, sign: 1}\n"
-        "- {id: b, section: '3', figure: Figs. 2-3, figures: [2, 3], quote: q, kind: trend,"
-        " expected: deviates, dataset: d.nc, variable: v, coord: c, sign: 1}\n"
-    )
-    header = "claim,reading,section,figure,status\n"
-    (tmp_path / "deviations.csv").write_text(
-        header + "a,r1,3,Fig. 2,reproduced\nb,r1,3,Figs. 2-3,deviates\n"
-        "a,r2,3,Fig. 2,reproduced\nb,r2,3,Figs. 2-3,not-comparable\n"
-    )
-    frame = figure_verdicts([2, 3], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
-    assert frame.to_dict("records") == [
-        {
-            "figure": "Fig. 2",
-            "verdict": "reproduced",
-            "best reading": "r2",
-            "reproduced": 1,
-            "deviates": 0,
-            "undecided": 1,
-        },
-        {
-            "figure": "Fig. 3",
-            "verdict": "deviating",
-            "best reading": "r1",
-            "reproduced": 0,
-            "deviates": 1,
-            "undecided": 0,
-        },
-    ]
-
-
-def test_a_fitted_setups_checks_never_count_in_a_figure_verdict(tmp_path):
-    from stickslip.presentation.notebook import figure_verdicts
-
-    (tmp_path / "claims").mkdir()
-    row = "section: '9', figures: [21], quote: q, kind: trend, dataset: d.nc, variable: v, coord: c, sign: 1"
-    (tmp_path / "claims" / "c.yaml").write_text(
-        f"- {{id: forward, figure: Fig. 21, {row}, expected: deviates}}\n"
-        f"- {{id: fitted, figure: Fig. 21 (fit), fit: true, {row}, expected: reproduced}}\n"
-    )
-    (tmp_path / "deviations.csv").write_text(
-        "claim,reading,section,figure,status\n"
-        "forward,,9,Fig. 21,deviates\nfitted,,9,Fig. 21 (fit),reproduced\n"
-    )
-    frame = figure_verdicts([21], tmp_path / "deviations.csv", str(tmp_path / "claims" / "*.yaml"))
-    assert frame.to_dict("records")[0]["verdict"] == "deviating"
-    assert frame.to_dict("records")[0]["reproduced"] == 0
+    table, path = _tiny_table(tmp_path)
+    frame = figure_verdicts([2, 3], path)
+    records = frame.to_dict("records")
+    assert records[0]["verdict (primary reading)"] == "partly (1 of 2)"
+    assert records[0]["as printed"] == "reproduced (1 of 1)"
+    assert records[0]["best of 2 readings (a search)"] == "reproduced (1 of 1)"
+    assert records[1]["verdict (primary reading)"] == "deviating (0 of 1)"
+    assert [r["figure"] for r in records] == ["Fig. 2", "Fig. 3"]
 
 
 def test_rendered_notebook_lets_wide_tables_scroll():

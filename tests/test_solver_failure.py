@@ -59,8 +59,9 @@ def test_claim_on_failed_run_is_not_comparable(good):
         "expected": "reproduced",
     }
     result = evaluate(claim, "bad", lambda p: {"bad.nc": bad_ds, "ok.nc": ok_ds}[p])
-    assert result.status == "not-comparable" and result.reason.startswith("solver failed")
-    assert "blow-up" in result.reason
+    assert result.status == "not-comparable"
+    assert result.reason.startswith("Not comparable: the solver run failed.")  # the conclusion first
+    assert "solver failed" in result.reason and "blow-up" in result.reason  # then the failure message
     assert "solver failed" not in evaluate(claim, "ok", lambda p: {"ok.nc": ok_ds}[p]).reason
 
 

@@ -199,7 +199,9 @@ def notebook_inputs(name):
         sw = ONEDOF["sweep_figures"][fig]
         files += [sweep_dataset(sw["sweep"], r, d) for r in sw["readings"] for d in (False, True)]
         files += [f"results/figures/{fig}/{r}.png" for r in sw["readings"]]
-    return list(dict.fromkeys(files + ["results/claims/deviations.csv"]))
+    return list(
+        dict.fromkeys(files + ["results/claims/deviations.csv", "results/claims/figure_verdicts.csv"])
+    )
 
 
 # -- sweeps and maps ----------------------------------------------------------------------------------

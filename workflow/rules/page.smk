@@ -19,10 +19,38 @@ PAGE_SOURCES = page_sources(
 )
 
 
+rule figure_verdicts:
+    """Every paper figure's verdict under the primary reading, as printed and in the best of its readings (a
+    search): the one table the page and the notebooks read."""
+    input:
+        deviations="results/claims/deviations.csv",
+        fe_readings="results/fe/readings_claims.csv",
+        claims=CLAIM_FILES,
+        paper="src/stickslip/presentation/paper.yaml",
+    output:
+        "results/claims/figure_verdicts.csv",
+    log:
+        "results/logs/figure_verdicts/all.log",
+    benchmark:
+        "results/benchmarks/figure_verdicts/all.tsv"
+    conda:
+        CONDA_ENV
+    params:
+        primary=config["claims"]["primary_reading"],
+        printed=config["claims"]["as_printed_reading"],
+        fe_primary=FE_DEFAULT_READING,
+    script:
+        "../scripts/figure_verdicts.py"
+
+
+ALL_TARGETS.append("results/claims/figure_verdicts.csv")
+
+
 rule replication_page:
     """The replication at a glance: every paper figure's verdict, its claims and links to its evidence."""
     input:
         # every final target but the page and the timing table (evaluated once every rules file is read)
+        verdicts="results/claims/figure_verdicts.csv",
         results=lambda wc: list(
             dict.fromkeys(
                 [t for t in ALL_TARGETS if t != PAGE and not t.startswith("results/benchmarks/")]
@@ -45,6 +73,11 @@ rule replication_page:
         notebooks=list(config["notebooks"]),
         inverse_figures={k: v["claims"] for k, v in config["inverse"]["figures"].items()},
         fe_default_reading=FE_DEFAULT_READING,
+        reading_descriptions={
+            name: spec.get("description", "")
+            for name, spec in {**ONEDOF["readings"], **FE["readings"]}.items()
+            if name in config["claims"]["readings"] or name in FE_READINGS
+        },
         friction_table=FE_FRICTION,
     script:
         "../scripts/build_page.py"

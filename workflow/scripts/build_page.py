@@ -14,6 +14,7 @@ builder = PageBuilder(
     notebooks=list(params.notebooks),
     inverse_figures=dict(params.inverse_figures),
     fe_default_reading=params.fe_default_reading,
+    reading_descriptions=dict(params.reading_descriptions),
     friction_table=params.friction_table,
     workers=snakemake.threads,
 )

@@ -21,6 +21,17 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
+
+#: What a claim row can show, declared on every row (``evidence``) and checked here. Only ``evidence`` rows
+#: count toward a figure's verdict and the page's totals; the others are listed apart with their class.
+EVIDENCE_CLASSES = {
+    "evidence": "the run could have gone either way: the row tests the paper",
+    "by_construction": "the stated setup admits one outcome (an input, a definition, or mechanics that fix "
+    "it): the row cannot fail, so it proves nothing",
+    "relabel": "reads the paper's words in a way its own text contradicts",
+    "fit": "checks a setup fitted to the paper's numbers, not the stated one",
+}
+Evidence = Literal["evidence", "by_construction", "relabel", "fit"]
 Status = Literal["reproduced", "deviates", "indistinguishable", "not-comparable"]
 
 #: The paper's numbered figures (Figure 1 to Figure 36); a claim's ``figures`` name some of them.
@@ -101,10 +112,15 @@ class ClaimRow(_Strict):
     coord: Text | None = None
     sign: Literal[-1, 0, 1] | None = None
     comparable: bool | None = None
-    fit: bool | None = Field(
-        None,
-        description="checks a setup fitted to the paper's numbers, not the stated one: shown beside the "
-        "figure's forward verdict, never counted in it",
+    evidence: Evidence = Field(description="what the row can show (EVIDENCE_CLASSES)")
+    evidence_note: Text | None = Field(
+        None, description="why the row is not evidence (required for every class but `evidence`)"
+    )
+    twin: Annotated[str, Field(pattern=r"^[a-z0-9_]+$")] | None = Field(
+        None, description="the row that decides the same sentence at the other disc speed (beam on disc)"
+    )
+    one_speed: Text | None = Field(
+        None, description="why a beam-on-disc row is decided at one disc speed only (no twin)"
     )
     coord_scale: Literal["log"] | None = None
     min_relative_change: NonNegative | None = None
@@ -121,6 +137,12 @@ class ClaimRow(_Strict):
             raise ValueError("lhs: a comparison measures its left side (a dataset variable)")
         if self.min_relative_change is not None and self.kind != "trend":
             raise ValueError("min_relative_change: only a trend claim has a floor")
+        if self.twin is not None and self.one_speed is not None:
+            raise ValueError("one_speed: a row with a twin at the other speed is decided at both")
+        if self.evidence != "evidence" and self.evidence_note is None:
+            raise ValueError(f"evidence_note: a {self.evidence} row says why it is not evidence")
+        if self.evidence == "evidence" and self.evidence_note is not None:
+            raise ValueError("evidence_note: only a row that is not evidence carries one")
         bad = [f for f in self.figures if f not in PAPER_FIGURES]
         if bad:
             raise ValueError(f"figures: {bad[0]} is not a figure of the paper (1-{PAPER_FIGURES[-1]})")

@@ -28,7 +28,7 @@ import math
 import operator
 import sys
 from collections.abc import Callable
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -78,6 +78,9 @@ class ClaimResult:
     status: str
     expected: str
     matches_expected: bool
+    #: what the row can show (stickslip.io.claim_rows.EVIDENCE_CLASSES); only ``evidence`` is counted
+    evidence: str
+    #: one conclusion sentence (at most CONCLUSION_LENGTH characters), then the numbers, then the caveats
     reason: str
     quote: str
 
@@ -135,6 +138,7 @@ def check_claims(
                 for name in c[key]:
                     if name != "default" and name not in known:
                         raise ClaimsError(f"{where}: {key}.{name}: not a reading ({sorted(known)})")
+    _check_speed_twins(claims)
     if pinned_ids is not None:
         ids = {c["id"] for c in claims}
         lost, new = sorted(set(pinned_ids) - ids), sorted(ids - set(pinned_ids))
@@ -165,6 +169,39 @@ def check_claims(
                         )
 
 
+#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.
+DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
+
+
+def disc_speed(claim: dict) -> str:
+    """The disc speed a claim reads (one of DISC_SPEEDS), ``""`` for none or several."""
+    found = {s for p in dataset_paths(claim) for s in DISC_SPEEDS if f"_{s}" in p}
+    return found.pop() if len(found) == 1 else ""
+
+
+def _check_speed_twins(claims: list[dict]) -> None:
+    """Every claim read at one disc speed is decided at the other too (``twin``: the row that does, reading
+    the other speed, and naming this row back) or says why not (``one_speed``)."""
+    by_id = {c["id"]: c for c in claims}
+    for c in claims:
+        where = f"{c['_file']}: claim {c['id']}"
+        speed = disc_speed(c)
+        if c.get("twin") is None:
+            if speed and not c.get("one_speed"):
+                raise ClaimsError(
+                    f"{where}: reads the {speed} scenes only: add its twin at the other speed (twin: <id>) "
+                    "or say why not (one_speed: <reason>)"
+                )
+            continue
+        twin = by_id.get(c["twin"])
+        if twin is None:
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} is not a claim id")
+        if twin.get("twin") != c["id"]:
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not name {c['id']!r} back")
+        if not speed or disc_speed(twin) in ("", speed):
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not read the other disc speed")
+
+
 def dataset_paths(claim: dict) -> list[str]:
     refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
     return [r["dataset"] for r in refs if "dataset" in r]
@@ -182,14 +219,39 @@ def required_datasets(claims: list[dict], readings: list[str]) -> list[str]:
     return sorted(out)
 
 
-def _member_values(open_dataset: Callable, ref: dict, reading: str) -> np.ndarray:
+def withheld_values(ds, variable: str) -> tuple[float, float] | None:
+    """(value at dt, value at dt/2) of a metric the step-halving check withheld (NaN in the dataset, both
+    steps' values kept beside it: stickslip.fe.step_halving); None when nothing was withheld."""
+    if variable not in ds or f"{variable}_full_step" not in ds or f"{variable}_half_step" not in ds:
+        return None
+    if np.isfinite(np.asarray(ds[variable].values, dtype=float).reshape(-1)[0]):
+        return None
+    full = float(np.asarray(ds[f"{variable}_full_step"].values, dtype=float).reshape(-1)[0])
+    half = float(np.asarray(ds[f"{variable}_half_step"].values, dtype=float).reshape(-1)[0])
+    return full, half
+
+
+def _member_values(
+    open_dataset: Callable, ref: dict, reading: str, side_only: bool = False, notes: list | None = None
+) -> np.ndarray:
     """A dataset's scalar variable per perturbation-ensemble member (base run first), or a constant given as
-    ``{value: number}``. Without an ensemble in the dataset: the base value alone."""
+    ``{value: number}``. Without an ensemble in the dataset: the base value alone.
+
+    A value withheld for moving under step halving is NaN here, its two steps' values named in ``notes``;
+    with ``side_only`` (a claim that reads only which side of a threshold the value is on) those two values
+    are the members: the side is decided when both steps agree on it beyond the noise, as for growth."""
     if "value" in ref and "dataset" not in ref:
         return np.array([float(ref["value"])])
     ds = open_dataset(ref["dataset"].format(reading=reading))
     if ref["variable"] not in ds:
         return np.array([np.nan])
+    withheld = withheld_values(ds, ref["variable"])
+    if withheld is not None:
+        if notes is not None:
+            full, half = withheld
+            notes.append(f"{ref['variable']} moves under step halving ({full:.3g} at dt, {half:.3g} at dt/2)")
+        if side_only:
+            return np.array(withheld)
     base = float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
     members = ds.get(ref["variable"] + ENSEMBLE_SUFFIX)
     if members is None:
@@ -233,6 +295,8 @@ class Measurement:
     detail: str = ""
     margin: float = float("nan")
     spread: float = float("nan")
+    #: what was computed but not used (values withheld by the step-halving check), for the reason
+    withheld: list = field(default_factory=list)
 
 
 def _tolerance_band(claim: dict, reported: float) -> float:
@@ -255,10 +319,10 @@ def decide_value(claim: dict, measured: float) -> tuple[bool, float]:
 def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
     out = Measurement(reported=float(claim["value"]), quantity=str(claim.get("variable", "")))
     if claim["kind"] == "value":
-        members = _member_values(open_dataset, claim, reading)
+        members = _member_values(open_dataset, claim, reading, notes=out.withheld)
     else:
-        lhs = _member_values(open_dataset, claim["lhs"], reading)
-        rhs = _member_values(open_dataset, claim["rhs"], reading)
+        lhs = _member_values(open_dataset, claim["lhs"], reading, notes=out.withheld)
+        rhs = _member_values(open_dataset, claim["rhs"], reading, notes=out.withheld)
         members = _pairwise(lambda a, b: np.where(b != 0, a / np.where(b != 0, b, 1.0), np.nan), lhs, rhs)
         out.quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
     out.measured = float(members[0])
@@ -272,8 +336,9 @@ def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurem
 
 
 def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
-    lhs = _member_values(open_dataset, claim["lhs"], reading)
-    rhs = _member_values(open_dataset, claim["rhs"], reading)
+    withheld: list = []
+    lhs = _member_values(open_dataset, claim["lhs"], reading, side_only=True, notes=withheld)
+    rhs = _member_values(open_dataset, claim["rhs"], reading, side_only=True, notes=withheld)
     rel = claim["relation"]
     statement = f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}"
     out = Measurement(
@@ -281,6 +346,7 @@ def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measur
         measured=float(lhs[0]),
         reference=float(rhs[0]),
         quantity=statement,
+        withheld=withheld,
     )
     if math.isfinite(out.measured) and math.isfinite(out.reference):
         difference = _pairwise(np.subtract, lhs, rhs)  # the decision variable: lhs - rhs against 0
@@ -349,6 +415,22 @@ def solver_failures(opened: list) -> list[str]:
     return out
 
 
+def member_failures(opened: list) -> list[str]:
+    """The failed members of the sweeps a claim read (``solver_ok`` = 0), each with its parameter value and
+    ``failure_message``: a trend is fitted over the others, so these are caveats, not a failed claim."""
+    out = []
+    for _path, ds in opened:
+        ok = ds.variables.get("solver_ok") if hasattr(ds, "variables") else None
+        if ok is None or ok.ndim != 1 or "failure_message" not in ds.variables:
+            continue
+        dim = ok.dims[0]
+        coord = ds[dim].values if dim in ds.coords else np.arange(ok.size)
+        for value, good, message in zip(coord, np.asarray(ok.values), ds["failure_message"].values):
+            if good != 1:
+                out.append(f"{dim} = {value:g} failed ({message})")
+    return out
+
+
 def _name(ref: dict) -> str:
     return ref.get("variable", f"{ref.get('value')}")
 
@@ -369,7 +451,9 @@ def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[st
     if not comparable:
         return "not-comparable", m.detail
     if m.holds is None:
-        return "not-comparable", m.detail or "not measurable in this reading (variable missing or NaN)"
+        if m.withheld:
+            return "not-comparable", "withheld: " + "; ".join(m.withheld)
+        return "not-comparable", m.detail or "nothing computed in this reading (variable missing or NaN)"
     if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin < MARGIN_FACTOR * m.spread):
         why = (
             "an ensemble member has nothing to measure"
@@ -378,6 +462,62 @@ def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[st
         )
         return "indistinguishable", f"{m.detail} - {why}: below the numerical noise"
     return ("reproduced" if m.holds else "deviates"), m.detail
+
+
+#: Longest conclusion sentence of a reason (what a reader scans before the numbers).
+CONCLUSION_LENGTH = 120
+
+
+def _short(text: str, limit: int) -> str:
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1].rstrip(" ,;:(") + "…"
+
+
+def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) -> str:
+    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters."""
+    kind = claim["kind"]
+    if status == "not-comparable":
+        if failures:
+            why = "the solver run failed"
+        elif claim.get("comparable", True) is False:
+            why = "the paper contradicts this sentence elsewhere"
+        elif m.withheld:
+            why = "the value moves under step halving, so it is withheld"
+        else:
+            why = "nothing to measure in this run"
+        text = f"Not comparable: {why}."
+    elif status == "indistinguishable":
+        text = "Undecided: the margin to the threshold is within the run's own numerical noise."
+    else:
+        verb = "Reproduced" if status == "reproduced" else "Deviates"
+        if kind in ("value", "ratio"):
+            unit = "" if claim.get("unit") in (None, "1") else f" {claim['unit']}"
+            text = (
+                f"{verb}: {m.measured:.3g}{unit} against the paper's {float(m.reported):.3g}{unit} "
+                f"({100 * m.deviation:+.0f} %)."
+            )
+        elif kind == "compare":
+            says = "holds" if m.holds else "does not hold"
+            text = f"{verb}: the paper's {m.quantity} {says} ({m.measured:.3g} vs {m.reference:.3g})."
+        else:
+            text = f"{verb}: the paper says {m.reported}; the run {'agrees' if m.holds else 'does not'}."
+    if claim.get("evidence", "evidence") != "evidence":
+        text = text[:-1] + f", {claim['evidence'].replace('_', ' ')}."
+    return _short(text, CONCLUSION_LENGTH)
+
+
+def reason_text(claim: dict, reading: str, m: Measurement, status: str, detail: str, failures, caveats):
+    """The conclusion sentence, then the numbers, then every caveat: why the row is not evidence, values
+    computed but withheld, failed sweep members, and the row's note (never dropped)."""
+    parts = [conclusion(claim, m, status, failures), detail]
+    if claim.get("evidence_note"):
+        parts.append(f"Not evidence ({claim['evidence'].replace('_', ' ')}): {claim['evidence_note']}")
+    if m.withheld and not detail.startswith("withheld"):
+        parts.append("withheld: " + "; ".join(m.withheld))
+    parts += caveats
+    note = _per_reading(claim.get("note"), reading)
+    parts.append(note)
+    return " | ".join(" ".join(str(p).split()) for p in parts if p)
 
 
 def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
@@ -389,9 +529,10 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         return ds
 
     m = MEASURE[claim["kind"]](claim, reading, recording_open)
-    status, detail = status_of(m, claim.get("comparable", True) is not False, solver_failures(opened))
-    note = _per_reading(claim.get("note"), reading)
-    reason = "; ".join(s for s in (detail, note if status != "reproduced" else "") if s)
+    failures = solver_failures(opened)
+    status, detail = status_of(m, claim.get("comparable", True) is not False, failures)
+    members = member_failures(opened)
+    caveats = [f"{len(members)} sweep runs failed: " + "; ".join(members)] if members else []
     expected = _per_reading(claim["expected"], reading, default="(not pinned)")
     return ClaimResult(
         claim=claim["id"],
@@ -410,7 +551,8 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         status=status,
         expected=expected,
         matches_expected=(status == expected),
-        reason=reason,
+        evidence=str(claim.get("evidence", "evidence")),
+        reason=reason_text(claim, reading, m, status, detail, failures, caveats),
         quote=" ".join(str(claim["quote"]).split()),
     )
 

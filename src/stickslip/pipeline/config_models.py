@@ -323,6 +323,19 @@ class Onedof(Section):
 class Claims(Section):
     readings: Names
     check: bool | None = None
+    #: the reading every figure's verdict is given in, declared by the rule of docs/READINGS.md
+    primary_reading: str
+    #: the equations and values exactly as printed, shown beside the primary verdict
+    as_printed_reading: str
+
+    @model_validator(mode="after")
+    def _verdict_readings_are_checked(self):
+        for key in ("primary_reading", "as_printed_reading"):
+            if getattr(self, key) not in self.readings:
+                raise ValueError(
+                    f"{key}: {getattr(self, key)!r} is not one of claims.readings {self.readings}"
+                )
+        return self
 
 
 class Ensemble(Section):

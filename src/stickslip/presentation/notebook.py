@@ -212,39 +212,38 @@ def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPE
     return HTML(scorecard_html(frame, title, open_rows, legend))
 
 
-def figure_verdicts(figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"):
-    """Each paper figure's verdict, as the replication page (``results/index.html``) derives it: the figure is
-    judged in its best reading (``stickslip.presentation.verdicts``), ties broken by the overall reading
-    ranking (computed from the same table, as ``results/claims/reading_ranking.csv`` is). A DataFrame, one
-    row per figure."""
-    from glob import glob
+VERDICTS_CSV = "results/claims/figure_verdicts.csv"
 
+
+def figure_verdicts(figures, csv_path=VERDICTS_CSV):
+    """Each paper figure's verdicts as the replication page (``results/index.html``) shows them, read from
+    the one table both take them from (``stickslip.presentation.verdicts.figure_table``): under the primary
+    reading, as printed, and the best of the readings (a search). A DataFrame, one row per figure."""
     import pandas as pd
 
-    from stickslip.io.claims import load_claims, read_table
-    from stickslip.presentation.page import claim_figures
-    from stickslip.presentation.verdicts import best_reading, figure_verdict, fitted_claims, rows_in_reading
-    from stickslip.studies.ranking import rank_readings
+    from stickslip.io.claims import read_table
 
-    claims = load_claims(sorted(glob(claims_glob)))
-    fitted = fitted_claims(claims)
-    rows = [r for r in read_table(csv_path) if r["claim"] not in fitted]
-    figs_of = claim_figures(claims)
-    order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
+    rows = {r["figure"]: r for r in read_table(csv_path)}
     out = []
     for number in figures:
-        mine = [r for r in rows if number in figs_of.get(r["claim"], [])]
-        reading = best_reading(mine, order)
-        judged = rows_in_reading(mine, reading) if reading else mine
-        statuses = [r["status"] for r in judged]
+        r = rows.get(str(number))
+        if r is None:
+            continue
+
+        def cell(prefix, r=r):
+            if not r[f"{prefix}_verdict"]:
+                return "-"
+            return f"{r[f'{prefix}_verdict']} ({r[f'{prefix}_reproduced']} of {r[f'{prefix}_decided']})"
+
         out.append(
             {
                 "figure": f"Fig. {number}",
-                "verdict": figure_verdict(statuses),
-                "best reading": reading or "-",
-                "reproduced": statuses.count("reproduced"),
-                "deviates": statuses.count("deviates"),
-                "undecided": len(statuses) - statuses.count("reproduced") - statuses.count("deviates"),
+                "verdict (primary reading)": cell("primary"),
+                "primary reading": r["primary_reading"],
+                "as printed": cell("printed"),
+                f"best of {r['readings_searched']} readings (a search)": cell("best"),
+                "best reading": r["best_reading"] or "-",
+                "not evidence": r["not_evidence"] or "-",
             }
         )
     return pd.DataFrame(out)
@@ -253,37 +252,40 @@ def figure_verdicts(figures, csv_path="results/claims/deviations.csv", claims_gl
 #: Colours of the figure verdicts (as on the replication page).
 VERDICT_COLOUR = {
     "reproduced": STATUS_COLOUR["reproduced"],
+    "mostly reproduced": STATUS_COLOUR["reproduced"],
     "partly": STATUS_COLOUR["indistinguishable"],
     "deviating": STATUS_COLOUR["deviates"],
     "not comparable": STATUS_COLOUR["not-comparable"],
 }
 
 
-def verdicts_html(
-    figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"
-) -> str:
+def _verdict_colour(cell: str) -> str:
+    label = str(cell).split(" (")[0]
+    return f"background-color: {VERDICT_COLOUR.get(label, 'white')}"
+
+
+def verdicts_html(figures, csv_path=VERDICTS_CSV) -> str:
     """The figures' verdicts as a small coloured table, with the rule that derives them in one line."""
     from stickslip.presentation.verdicts import VERDICT_RULE
 
-    frame = figure_verdicts(figures, csv_path, claims_glob)
-    table = (
-        frame.style.map(lambda v: f"background-color: {VERDICT_COLOUR.get(v, 'white')}", subset=["verdict"])
-        .hide(axis="index")
-        .to_html()
-    )
+    frame = figure_verdicts(figures, csv_path)
+    coloured = [c for c in frame.columns if c.startswith(("verdict", "as printed", "best of"))]
+    table = frame.style.map(_verdict_colour, subset=coloured).hide(axis="index").to_html()
     rule = "; ".join(f"<i>{v}</i>: {html.escape(r)}" for v, r in VERDICT_RULE.items())
     return (
-        f"<h3>Verdicts</h3>{table}<p style='font-size: 0.85em'>Each figure is judged in its best reading"
-        f" (the one reproducing most of its claims). {rule}. The same verdicts head each figure's card"
-        " on the replication page, <code>results/index.html</code>.</p>"
+        f"<h3>Verdicts</h3>{table}<p style='font-size: 0.85em'>k of n: k of the n decided claims reproduced,"
+        " counting only rows that could have failed (evidence). Each figure is judged first in the primary"
+        " reading, declared in docs/READINGS.md before any result; beside it the equations as printed; the"
+        f" best of all readings is a search over them, not a verdict. {rule}. The same verdicts head each"
+        " figure's card on the replication page, <code>results/index.html</code>.</p>"
     )
 
 
-def verdicts(figures, csv_path="results/claims/deviations.csv", claims_glob="config/claims/*.yaml"):
+def verdicts(figures, csv_path=VERDICTS_CSV):
     """Display object of ``verdicts_html`` for a notebook cell."""
     from IPython.display import HTML
 
-    return HTML(verdicts_html(figures, csv_path, claims_glob))
+    return HTML(verdicts_html(figures, csv_path))
 
 
 # -- rendering ---------------------------------------------------------------------------------------------

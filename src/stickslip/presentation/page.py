@@ -19,18 +19,34 @@ from pathlib import Path
 
 import yaml
 
+from ..io.claim_rows import EVIDENCE_CLASSES
 from ..io.claims import load_claims, read_table
 from ..io.report import paper_figures
 from .verdicts import (
+    SPEEDS,
     VERDICT_RULE,
     VERDICTS,
-    best_reading,
-    figure_verdict,
-    fitted_claims,
+    is_evidence,
     readings_by_preference,
     rows_in_reading,
+    speed_of,
     status_counts,
+    tally,
 )
+
+#: What a claim check's status means (the page's glossary).
+STATUS_MEANING = {
+    "reproduced": "the measured number or statement agrees with the paper's within the row's tolerance",
+    "deviates": "it does not, beyond the run's own numerical noise",
+    "indistinguishable": "the margin to the threshold is below three times its spread over a perturbation "
+    "ensemble (inputs x (1 +- 1e-12), a second step size): the run's own noise could decide it, so it is "
+    'called neither way ("undecided")',
+    "not-comparable": "nothing to compare: nothing computed in this reading, a failed solver run, a value "
+    "withheld for moving under step halving, or a sentence the paper contradicts elsewhere",
+}
+
+#: The quantities a card's headline table shows first (the paper's amplitude, frequency, stick and slip).
+HEADLINE_ORDER = ("amplitude", "displacement", "frequency", "stick", "slip", "velocity", "speed")
 
 HERE = Path(__file__).parent
 THUMB_WIDTH = 360  # px: the thumbnails' width (the cards show them at up to 320 px)
@@ -197,6 +213,7 @@ class PageBuilder:
         notebooks: list[str],
         inverse_figures: dict[str, list[str]],
         fe_default_reading: str = "",
+        reading_descriptions: dict[str, str] | None = None,
         friction_table: str = "results/onedof/friction_mu_vr.csv",
         claims_glob: str = "config/claims/*.yaml",
         results: str = "results",
@@ -209,14 +226,13 @@ class PageBuilder:
         self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
         self.figures_of = claim_figures(self.claims)
         self.claim = {c["id"]: c for c in self.claims}
-        #: Claims that check a fitted setup: listed on their figure's card, never counted in a verdict.
-        self.fitted = fitted_claims(self.claims)
         self.rows = read_table(self.results / "claims" / "deviations.csv")
+        #: every figure's verdicts, the table the notebooks read too (stickslip.presentation.verdicts)
+        self.verdicts = {r["figure"]: r for r in read_csv(self.results / "claims" / "figure_verdicts.csv")}
+        self.descriptions = dict(reading_descriptions or {})
         self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
         self.order = [r["reading"] for r in self.ranking]
-        self.fe_rows = [
-            r for r in read_csv(self.results / "fe" / "readings_claims.csv") if r["claim"] not in self.fitted
-        ]
+        self.fe_rows = [r for r in read_csv(self.results / "fe" / "readings_claims.csv") if is_evidence(r)]
         self.fe_default = fe_default_reading
         self.friction_table = friction_table
         self.inverse_figures = inverse_figures
@@ -300,14 +316,11 @@ class PageBuilder:
             table = [r for r in self.fe_rows if r["claim"] in ids]
             readings = list(dict.fromkeys(r["reading"] for r in table))
             return [
-                {"reading": rd, "verdict": figure_verdict(r["status"] for r in table if r["reading"] == rd)}
+                {"reading": rd, "verdict": tally([r for r in table if r["reading"] == rd]).label}
                 for rd in readings
             ]
         readings = readings_by_preference(rows, self.order)
-        return [
-            {"reading": rd, "verdict": figure_verdict(r["status"] for r in rows_in_reading(rows, rd))}
-            for rd in readings
-        ]
+        return [{"reading": rd, "verdict": tally(rows_in_reading(rows, rd)).label} for rd in readings]
 
     def images(self, number: int, reading: str, rows: list[dict]) -> list[dict]:
         """The images showing figure ``number``: the best reading's first, then the scenes its claims read."""
@@ -336,17 +349,80 @@ class PageBuilder:
             )
         return out
 
+    def verdict_cells(self, key: str) -> dict:
+        """The figure's verdicts (figure_verdicts.csv): primary, as printed, the search; each with k of n."""
+        row = self.verdicts.get(key, {})
+
+        def cell(prefix):
+            label = row.get(f"{prefix}_verdict") or ""
+            if not label:
+                return None
+            return {
+                "label": label,
+                "css": label.replace(" ", "-"),
+                "reading": row.get(f"{prefix}_reading", ""),
+                "k": row.get(f"{prefix}_reproduced", ""),
+                "n": row.get(f"{prefix}_decided", ""),
+                "undecided": row.get(f"{prefix}_undecided", ""),
+            }
+
+        return {
+            "primary": cell("primary") or {"label": "not comparable", "css": "not-comparable", "reading": "",
+                                           "k": 0, "n": 0, "undecided": 0},
+            "printed": cell("printed"),
+            "best": cell("best"),
+            "searched": row.get("readings_searched", ""),
+            "stated_speed": row.get("stated_speed", ""),
+            "implied_speed": row.get("implied_speed", ""),
+            "not_evidence": row.get("not_evidence", ""),
+        }  # fmt: skip
+
+    def headline(self, rows: list[dict], fe: bool) -> list[dict]:
+        """The paper's numbers for the figure beside this run's (primary reading), amplitude, frequency and
+        stick/slip first: every value claim that is evidence, with its deviation in %."""
+
+        def rank(r):
+            q = r["quantity"].lower()
+            return (
+                next((i for i, w in enumerate(HEADLINE_ORDER) if w in q), len(HEADLINE_ORDER)),
+                r["claim"],
+            )
+
+        out = []
+        for r in sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank):
+            dev = _number(r["deviation"])
+            claim = self.claim.get(r["claim"], {})
+            out.append(
+                {
+                    "claim": r["claim"],
+                    "quantity": r["quantity"],
+                    "speed": SPEEDS.get(speed_of(claim), "") if fe else "",
+                    "reported": fmt(r["reported"]),
+                    "measured": fmt(r["measured"]),
+                    "unit": r["unit"],
+                    "deviation": f"{100 * dev:+.0f} %" if dev == dev else "",
+                    "status": r["status"],
+                }
+            )
+        return out
+
     def card(self, entry: dict) -> dict:
         number = entry.get("number")
         fe = entry.get("half") == "fe"
+        key = f"fig-{number}" if number is not None else entry["key"]
         everything = self.rows_about(number, entry.get("section"))
-        rows = [r for r in everything if r["claim"] not in self.fitted]  # the forward replication
-        fitted = [r for r in everything if r["claim"] in self.fitted]
-        reading = best_reading(rows, self.order)
-        judged = rows_in_reading(rows, reading) if reading else rows
-        verdict = figure_verdict(r["status"] for r in judged)
-        counts = status_counts(r["status"] for r in judged)
-        images = self.images(number, reading, rows) if number is not None else []
+        v = self.verdict_cells(str(number) if number is not None else entry["key"])
+        primary = v["primary"]["reading"] if not fe else ""
+        judged = rows_in_reading(everything, primary) if primary else everything
+        evidence = [r for r in judged if is_evidence(r)]
+        apart = [r for r in everything if not is_evidence(r)]
+        if primary:  # a row set apart is shown once, in the primary reading where it depends on one
+            apart = rows_in_reading(apart, primary)
+        images = self.images(number, primary or self.fe_default, everything) if number is not None else []
+        best = (v["best"] or {}).get("reading", "")
+        best_drawn = (
+            not best or best == primary or any(im["label"] == best for im in images) or fe or not images
+        )
         thumb = None
         if images:
             source = images[0]["path"]  # one thumbnail per image, however many figures it shows
@@ -371,7 +447,7 @@ class PageBuilder:
         data = [self.friction_table] if from_table else []
         for r in judged:
             for p in dataset_paths_of(self.claim.get(r["claim"], {})):
-                data.append(p.format(reading=reading) if "{reading}" in p else p)
+                data.append(p.format(reading=primary) if "{reading}" in p else p)
         datasets = [self.link(p) for p in dict.fromkeys(data)]
         notebook = None
         if number is not None:
@@ -381,10 +457,16 @@ class PageBuilder:
                     "name": found[0],
                     "href": f"{self.href(f'results/notebooks/{found[0]}.html')}#{found[1]}",
                 }
-        key = f"fig-{number}" if number is not None else entry["key"]
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
+        speeds = []
+        if fe:
+            for speed, label in SPEEDS.items():
+                mine = [r for r in evidence if speed_of(self.claim.get(r["claim"], {})) in ("", speed)]
+                t = tally(mine)
+                speeds.append({"label": label, "text": t.text, "verdict": t.label})
+        verdict = v["primary"]["label"]
         return {
             "key": key,
             "number": number,
@@ -394,17 +476,16 @@ class PageBuilder:
             "verdict": verdict,
             "verdict_class": verdict.replace(" ", "-"),
             "rule": VERDICT_RULE[verdict],
-            "reading": reading or (self.fe_default if fe and rows else ""),
-            "reading_note": (
-                "the FE reading the claims table checks"
-                if fe and rows and not reading
-                else ("the reading that reproduces most of its claims" if reading else "")
-            ),
-            "counts": counts,
-            "n_rows": len(judged),
-            "claims": [self.claim_row(r) for r in judged],
-            "fitted": [self.claim_row(r) for r in fitted],
-            "per_reading": self.per_reading(rows, fe) if rows else [],
+            "v": v,
+            "primary_reading": v["primary"]["reading"],
+            "speeds": speeds,
+            "best_drawn": best_drawn,
+            "counts": status_counts(r["status"] for r in evidence),
+            "n_rows": len(evidence),
+            "headline": self.headline(evidence, fe),
+            "claims": [self.claim_row(r) for r in evidence],
+            "apart": [self.claim_row(r) for r in apart],
+            "per_reading": self.per_reading(everything, fe) if everything else [],
             "images": images,
             "thumb": thumb,
             "table": table,
@@ -414,9 +495,12 @@ class PageBuilder:
         }
 
     def claim_row(self, r: dict) -> dict:
+        conclusion, _, rest = r["reason"].partition(" | ")
+        claim = self.claim.get(r["claim"], {})
         return {
             "claim": r["claim"],
             "reading": r["reading"] or "all",
+            "speed": SPEEDS.get(speed_of(claim), ""),
             "quantity": r["quantity"],
             "reported": fmt(r["reported"]),
             "measured": fmt(r["measured"]),
@@ -425,7 +509,9 @@ class PageBuilder:
             "spread": fmt(r["spread"]),
             "status": r["status"],
             "status_class": r["status"],
-            "reason": r["reason"],
+            "evidence": r.get("evidence", "evidence"),
+            "conclusion": conclusion,
+            "details": rest.replace(" | ", "; "),
             "quote": r["quote"],
         }
 
@@ -437,50 +523,69 @@ class PageBuilder:
     # -- summary --------------------------------------------------------------------------------------
 
     def half_summary(self, half: str, cards: list[dict]) -> dict:
+        """Per half: how many figures carry each verdict under the primary reading and as printed, and the
+        claim checks behind them (evidence only)."""
         mine = [c for c in cards if c["half"] == half]
-        counts = Counter(c["verdict"] for c in mine)
-        if half == "fe":
-            table = Counter(r["reading"] for r in self.fe_rows if r["status"] == "reproduced")
-            total = Counter(r["reading"] for r in self.fe_rows)
-            best = max(total, key=lambda rd: (table[rd], rd == self.fe_default)) if total else ""
-            best_line = {"reading": best, "reproduced": table[best], "total": total[best]} if best else None
-        else:
-            top = self.ranking[0] if self.ranking else None
-            best_line = (
-                {"reading": top["reading"], "reproduced": int(top["reproduced"]), "total": int(top["total"])}
-                if top
-                else None
-            )
+        primary = Counter(c["v"]["primary"]["label"] for c in mine)
+        printed = Counter(c["v"]["printed"]["label"] for c in mine if c["v"]["printed"])
+        best = Counter(c["v"]["best"]["label"] for c in mine if c["v"]["best"])
+        k = sum(int(c["v"]["primary"]["k"] or 0) for c in mine)
+        n = sum(int(c["v"]["primary"]["n"] or 0) for c in mine)
+        kp = sum(int(c["v"]["printed"]["k"] or 0) for c in mine if c["v"]["printed"])
+        np_ = sum(int(c["v"]["printed"]["n"] or 0) for c in mine if c["v"]["printed"])
+        readings = {c["v"]["primary"]["reading"] for c in mine} - {""}
+        printed_readings = {c["v"]["printed"]["reading"] for c in mine if c["v"]["printed"]} - {""}
+        searched = max((int(c["v"]["searched"] or 0) for c in mine), default=0)
         return {
             "half": half,
             "title": self.paper["halves"][half],
             "figures": len(mine),
-            "counts": {v: counts[v] for v in VERDICTS},
-            "best": best_line,
+            "counts": {v: primary[v] for v in VERDICTS},
+            "printed_counts": {v: printed[v] for v in VERDICTS},
+            "best_counts": {v: best[v] for v in VERDICTS},
+            "primary_reading": ", ".join(sorted(readings)),
+            "printed_reading": ", ".join(sorted(printed_readings)),
+            "k": k,
+            "n": n,
+            "printed_k": kp,
+            "printed_n": np_,
+            "searched": searched,
             "cards": mine,
+        }
+
+    def glossary(self) -> dict:
+        return {
+            "readings": self.descriptions,
+            "statuses": STATUS_MEANING,
+            "verdicts": VERDICT_RULE,
+            "evidence": EVIDENCE_CLASSES,
         }
 
     def context(self) -> dict:
         cards = [self.card(e) for e in self.paper["figures"]] + [self.card(e) for e in self.paper["text"]]
         make_thumbnails(self.thumb_jobs, self.workers)
-        placed = {r["claim"] for c in cards for r in c["claims"]} | {
+        placed = {r["claim"] for c in cards for r in c["claims"] + c["apart"]} | {
             r["claim"] for r in self.rows if self.figures_of.get(r["claim"])
         }
         unplaced = sorted({r["claim"] for r in self.rows} - placed)
         halves = [self.half_summary(h, cards) for h in self.paper["halves"]]
-        totals = status_counts(r["status"] for r in self.rows)
+        evidence = [r for r in self.rows if is_evidence(r)]
+        apart = Counter(r.get("evidence", "") for r in self.rows if not is_evidence(r))
         return {
             "cards": cards,
             "halves": halves,
             "verdicts": VERDICTS,
             "verdict_rule": VERDICT_RULE,
-            "claim_totals": totals,
-            "n_claim_rows": len(self.rows),
-            "n_claims": len({r["claim"] for r in self.rows}),
+            "glossary": self.glossary(),
+            "claim_totals": status_counts(r["status"] for r in evidence),
+            "n_claim_rows": len(evidence),
+            "n_claims": len({r["claim"] for r in evidence}),
+            "apart": {k.replace("_", " "): v for k, v in sorted(apart.items())},
             "unplaced": unplaced,
             "links": {
                 "deviations": self.href("results/claims/deviations.csv"),
                 "deviations_md": self.href("results/claims/deviations.md"),
+                "verdicts": self.href("results/claims/figure_verdicts.csv"),
                 "ranking": self.href("results/claims/reading_ranking.csv"),
                 "fe_readings": self.href("results/fe/readings_claims.csv"),
                 "interpretation": self.href("results/notebooks/interpretation_study.html"),

@@ -1,45 +1,89 @@
-"""A paper figure's verdict from the statuses of its claims, and the reading each figure is judged in.
+"""A paper figure's verdict from its claims: under the primary reading declared in advance, under the
+equations as printed, and (labelled as a search) in the best of every reading.
 
-The claims table (``results/claims/deviations.csv``) decides every claim once per reading. A figure is judged
-in one reading, its *best*: the reading in which most of its claims are reproduced, then the largest share of
-its decided claims, then the most decided claims (a reading that measures something beats one that measures
-nothing), then the order of the overall reading ranking. Claims that do not depend on a reading count in every
-reading.
+The claims table (``results/claims/deviations.csv``) decides every claim once per reading. A figure's verdict
+says how much: ``k of n`` decided claims reproduced, and a label from that fraction by a fixed rule
+(:data:`VERDICT_RULE`). Only rows of the ``evidence`` class count (``stickslip.io.claim_rows``): a row that
+cannot fail, reads the paper against its own words, or checks a fitted setup is listed apart, never counted.
+
+Which reading a verdict is given in is declared before any result (``docs/READINGS.md``, ``config.yaml``
+``claims.primary_reading`` and ``claims.as_printed_reading``; for the beam-on-disc half the first FE reading);
+the best-of-readings verdict is a search over N readings and is always labelled so. Every consumer (the page,
+the notebooks) reads the one table :func:`figure_table` writes, ``results/claims/figure_verdicts.csv``.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 #: Figure verdicts, best first.
-VERDICTS = ("reproduced", "partly", "deviating", "not comparable")
+VERDICTS = ("reproduced", "mostly reproduced", "partly", "deviating", "not comparable")
+
+#: Labels that read as success: each needs at least a third of the decided claims reproduced.
+SUCCESS = ("reproduced", "mostly reproduced", "partly")
 
 #: Claim statuses that decide a claim (``indistinguishable`` and ``not-comparable`` decide nothing).
 DECIDED = ("reproduced", "deviates")
 
-#: The rule of :func:`figure_verdict`, as the page states it.
+#: The rule of :func:`verdict_label` on k reproduced of n decided evidence claims, as the page states it.
 VERDICT_RULE = {
-    "reproduced": "every decided claim of the figure is reproduced in its best reading",
-    "partly": "some decided claims are reproduced in the best reading, some deviate",
-    "deviating": "no decided claim is reproduced in the best reading",
-    "not comparable": "no claim of the figure is decided (none, or all indistinguishable or not comparable)",
+    "reproduced": "every decided claim reproduced (k = n)",
+    "mostly reproduced": "at least two thirds of the decided claims reproduced (k/n ≥ 2/3)",
+    "partly": "at least a third reproduced (1/3 ≤ k/n < 2/3)",
+    "deviating": "fewer than a third reproduced (k/n < 1/3)",
+    "not comparable": "no claim decided (n = 0: none, or all undecided or not comparable)",
 }
 
+#: The disc speeds of the beam-on-disc scenes, as their dataset names spell them.
+SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
 
-def fitted_claims(claims: list[dict]) -> set[str]:
-    """Ids of the claims that check a setup fitted to the paper's numbers (``fit: true``): shown beside a
-    figure's forward verdict, never counted in it."""
-    return {c["id"] for c in claims if c.get("fit")}
+
+def verdict_label(reproduced: int, decided: int) -> str:
+    """The label of ``reproduced`` of ``decided`` claims (:data:`VERDICT_RULE`)."""
+    if decided == 0:
+        return "not comparable"
+    share = reproduced / decided
+    if reproduced == decided:
+        return "reproduced"
+    if share >= 2 / 3:
+        return "mostly reproduced"
+    return "partly" if share >= 1 / 3 else "deviating"
+
+
+def is_evidence(row: dict) -> bool:
+    return row.get("evidence", "evidence") == "evidence"
+
+
+@dataclass(frozen=True)
+class Tally:
+    """k reproduced of n decided evidence claims, the claims left undecided, and the rows set apart."""
+
+    reproduced: int
+    decided: int
+    undecided: int
+    apart: int  #: rows that are not evidence (by construction, relabel, fit)
+
+    @property
+    def label(self) -> str:
+        return verdict_label(self.reproduced, self.decided)
+
+    @property
+    def text(self) -> str:
+        return f"{self.reproduced} of {self.decided}"
+
+
+def tally(rows: list[dict]) -> Tally:
+    """The tally of claims-table rows (one reading's, or reading-independent ones)."""
+    evidence = [r for r in rows if is_evidence(r)]
+    statuses = [r["status"] for r in evidence]
+    decided = sum(s in DECIDED for s in statuses)
+    return Tally(statuses.count("reproduced"), decided, len(statuses) - decided, len(rows) - len(evidence))
 
 
 def figure_verdict(statuses) -> str:
-    """``reproduced`` if every decided status is reproduced, ``partly`` if some are, ``deviating`` if none
-    is, ``not comparable`` if no status is decided. ``statuses`` are claim statuses of one reading."""
-    decided = [s for s in statuses if s in DECIDED]
-    if not decided:
-        return "not comparable"
-    reproduced = sum(s == "reproduced" for s in decided)
-    if reproduced == len(decided):
-        return "reproduced"
-    return "partly" if reproduced else "deviating"
+    """The label of a list of claim statuses (all taken as evidence)."""
+    statuses = list(statuses)
+    return verdict_label(statuses.count("reproduced"), sum(s in DECIDED for s in statuses))
 
 
 def rows_in_reading(rows: list[dict], reading: str) -> list[dict]:
@@ -48,17 +92,15 @@ def rows_in_reading(rows: list[dict], reading: str) -> list[dict]:
 
 
 def reading_key(rows: list[dict], reading: str, rank: int = 0) -> tuple:
-    """Sort key of a reading for a figure's claims ``rows`` (smallest first): most reproduced, then the
-    largest reproduced share of the decided claims, then the most decided claims, then ``rank``."""
-    statuses = [r["status"] for r in rows_in_reading(rows, reading)]
-    reproduced = statuses.count("reproduced")
-    decided = sum(s in DECIDED for s in statuses)
-    return (-reproduced, -(reproduced / decided if decided else 0.0), -decided, rank, reading)
+    """Sort key of a reading for a figure's claims ``rows`` (smallest first): most reproduced evidence, then
+    the largest reproduced share of the decided claims, then the most decided claims, then ``rank``."""
+    t = tally(rows_in_reading(rows, reading))
+    share = t.reproduced / t.decided if t.decided else 0.0
+    return (-t.reproduced, -share, -t.decided, rank, reading)
 
 
 def readings_by_preference(rows: list[dict], order: list[str]) -> list[str]:
-    """The readings of ``rows``, best first (:func:`reading_key`; ties follow ``order``, the overall
-    ranking)."""
+    """The readings of ``rows``, best first (:func:`reading_key`; ties follow ``order``)."""
     rank = {name: i for i, name in enumerate(order)}
     readings = sorted({r["reading"] for r in rows} - {""})
     return sorted(readings, key=lambda rd: reading_key(rows, rd, rank.get(rd, len(rank))))
@@ -76,3 +118,118 @@ def status_counts(statuses) -> dict[str, int]:
 
     statuses = list(statuses)
     return {s: statuses.count(s) for s in STATUSES}
+
+
+def speed_of(claim: dict) -> str:
+    """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both."""
+    from ..io.claims import disc_speed
+
+    return disc_speed(claim)
+
+
+def _columns(prefix: str, t: Tally | None, reading: str) -> dict:
+    if t is None:
+        return {f"{prefix}_reading": "", f"{prefix}_verdict": "", f"{prefix}_reproduced": "",
+                f"{prefix}_decided": "", f"{prefix}_undecided": ""}  # fmt: skip
+    return {
+        f"{prefix}_reading": reading,
+        f"{prefix}_verdict": t.label,
+        f"{prefix}_reproduced": t.reproduced,
+        f"{prefix}_decided": t.decided,
+        f"{prefix}_undecided": t.undecided,
+    }
+
+
+def figure_row(
+    key: str,
+    half: str,
+    rows: list[dict],
+    claims: dict[str, dict],
+    primary: str,
+    printed: str,
+    order: list[str],
+    fe_rows: list[dict] | None = None,
+) -> dict:
+    """One figure's verdicts. 1-DOF: under ``primary``, under ``printed`` and in the best of its readings
+    (a search). Beam-on-disc (``fe_rows``: the claims under every FE reading, ``primary`` the FE reading the
+    claims table checks): under the primary reading at each disc speed, ``printed`` = the stated speed alone,
+    the search over the FE readings."""
+    apart: dict[str, int] = {}
+    for r in rows:
+        if not is_evidence(r):
+            cls = claims.get(r["claim"], {}).get("evidence", r.get("evidence", ""))
+            apart[cls] = apart.get(cls, 0) + 1
+    out = {"figure": key, "half": half}
+    if fe_rows is None:
+        best = best_reading(rows, order)
+        readings = sorted({r["reading"] for r in rows} - {""})
+        out |= _columns("primary", tally(rows_in_reading(rows, primary)), primary)
+        out |= _columns("printed", tally(rows_in_reading(rows, printed)), printed)
+        out |= _columns("best", tally(rows_in_reading(rows, best)) if best else None, best)
+        out["readings_searched"] = len(readings)
+        out |= {"stated_speed": "", "implied_speed": ""}
+    else:
+        by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"], {})) in ("", s)] for s in SPEEDS}
+        out |= _columns("primary", tally(rows), primary)
+        stated = tally(by_speed["15p2rpm"])
+        out |= _columns("printed", stated, f"{primary} at 15.2 rev/min")
+        ids = {r["claim"] for r in rows}
+        mine = [r for r in fe_rows if r["claim"] in ids]
+        readings = list(dict.fromkeys(r["reading"] for r in mine))
+        best = min(
+            readings,
+            key=lambda rd: reading_key(mine, rd, readings.index(rd)),
+            default="",
+        )
+        out |= _columns("best", tally([r for r in mine if r["reading"] == best]) if best else None, best)
+        out["readings_searched"] = len(readings)
+        out["stated_speed"] = tally(by_speed["15p2rpm"]).text
+        out["implied_speed"] = tally(by_speed["0p5mm_s"]).text
+    out["not_evidence"] = ", ".join(f"{n} {cls.replace('_', ' ')}" for cls, n in sorted(apart.items()))
+    return out
+
+
+def figure_table(
+    paper: dict,
+    rows: list[dict],
+    claims: list[dict],
+    primary: str,
+    printed: str,
+    fe_primary: str,
+    fe_rows: list[dict],
+) -> list[dict]:
+    """Every entry of the paper's figure list (``paper.yaml``: figures, then text-only sections) with its
+    verdicts (:func:`figure_row`). ``rows``: the claims table; ``fe_rows``: the FE readings table."""
+    from ..studies.ranking import rank_readings
+
+    by_id = {c["id"]: c for c in claims}
+    figs_of = {c["id"]: sorted(c.get("figures") or []) for c in claims}
+    order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
+    out = []
+    for entry in paper["figures"] + paper.get("text", []):
+        number = entry.get("number")
+        if number is not None:
+            mine = [r for r in rows if number in figs_of.get(r["claim"], [])]
+            key = str(number)
+        else:
+            mine = [
+                r
+                for r in rows
+                if not figs_of.get(r["claim"])
+                and str(by_id.get(r["claim"], {}).get("section")) == entry["section"]
+            ]
+            key = entry["key"]
+        fe = entry.get("half") == "fe"
+        out.append(
+            figure_row(
+                key,
+                entry.get("half", "text"),
+                mine,
+                by_id,
+                fe_primary if fe else primary,
+                printed,
+                order,
+                fe_rows if fe else None,
+            )
+        )
+    return out

@@ -13,8 +13,8 @@ def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
     reproduced, then fewest deviations). The fraction is reproduced / (reproduced + deviates): an
     indistinguishable check is decided neither way and is not comparable to the paper's number."""
     table = []
-    for r in readings:
-        mine = [row for row in rows if row["reading"] == r]
+    for r in readings:  # only rows that could have failed count (stickslip.io.claim_rows.EVIDENCE_CLASSES)
+        mine = [row for row in rows if row["reading"] == r and row.get("evidence", "evidence") == "evidence"]
         counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
         comparable = counts["reproduced"] + counts["deviates"]
         table.append(
