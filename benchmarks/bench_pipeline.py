@@ -19,15 +19,13 @@ import os
 import resource
 import shutil
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "src"))
+from stickslip.io.benchmarks import summarize_benchmarks  # installed: `make bench` runs .venv python
 
-from stickslip.io.benchmarks import summarize_benchmarks  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
 
 #: Targets on the project's reference machine (2 cores): seconds of elapsed time.
 TARGETS = {"clean make figures": 240.0, "no-op make figures": 5.0, "clean make test": 300.0}

@@ -229,7 +229,8 @@ undetermined = critical[critical["critical_belt_speed_mm_per_s"].isna()]["readin
 display(
     Markdown(
         f"""
-* **Best reading: `{best["reading"]}`** — {best["reproduced"]} reproduced, {best["deviates"]} deviating,
+* **Reading that reproduces most (a search over {len(ranking)} readings, not the verdict: each figure's verdict
+  is given in the primary reading declared in docs/READINGS.md): `{best["reading"]}`** — {best["reproduced"]} reproduced, {best["deviates"]} deviating,
   {best["indistinguishable"]} indistinguishable, {best["not-comparable"]} not comparable
   ({best["reproduced_fraction_of_comparable"]:.0%} of the comparable checks).
   Last by reproduced count: `{worst["reading"]}` ({worst["reproduced"]} reproduced; its

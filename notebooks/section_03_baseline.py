@@ -123,7 +123,9 @@ fig.tight_layout()
 #   stick ends where the slip equilibrium lies (x = 0.85 mm) and the orbit is a harmonic oscillation that
 #   grazes the belt velocity once per period (stick time 0, f = √5/2π = 0.356 Hz).
 # * **Consistent sign, σ = 0.5 (caption):** negative slip damping (C − σ μ_s N = −1) gives a genuine
-#   stick-slip limit cycle, reached after the first stick; this is the closest reading.
+#   stick-slip limit cycle, reached after the first stick. This is the *primary reading* (declared by the rule
+#   in docs/READINGS.md, not chosen by its score); the verdicts table above gives each figure's verdict in it,
+#   as printed, and the best of the readings (a search).
 
 # %%
 exact = data.get(("consistent_caption", "exact"))

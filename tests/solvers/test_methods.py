@@ -157,3 +157,16 @@ def test_stall_budget_counts_rhs_evaluations_of_adaptive_methods_only():
     moreau, rk = records
     assert moreau["status"] == "ok" and moreau["rhs_evaluations"] >= 10_000
     assert rk["status"] == "failed" and rk["rhs_evaluations"] == 3001 and "3000 RHS" in rk["message"]
+
+
+def test_moreau_refuses_the_theta_that_the_config_check_refuses():
+    """theta = 0 (explicit smooth forces) is outside (0, 1] for check_settings at parse time and for the
+    solver itself: one range, not two."""
+    from stickslip.solvers.base import check_settings
+    from stickslip.solvers.moreau import MoreauJean
+
+    bad = MoreauJean(h=1e-3, theta=0.0)
+    with pytest.raises(ValueError, match=r"theta: must be in \(0, 1\]"):
+        check_settings(bad)
+    with pytest.raises(ValueError, match=r"theta: must be in \(0, 1\]"):
+        bad.solve(BeltModel.build(PAPER_BASELINE, "consistent"), 1.0)

@@ -7,6 +7,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+#: Samples of a run's output when the caller gives no times (every method: one default, one place).
+DEFAULT_SAMPLES = 2001
+
+
+def default_t_eval(t_end: float, t_eval=None) -> np.ndarray:
+    """``t_eval`` as an array, or DEFAULT_SAMPLES evenly spaced times over [0, t_end]."""
+    return np.linspace(0.0, t_end, DEFAULT_SAMPLES) if t_eval is None else np.asarray(t_eval, dtype=float)
+
 #: Phase codes stored per sample: slip with v < V_b, stick, slip with v > V_b.
 SLIP_BACKWARD, STICK, SLIP_FORWARD = -1, 0, 1
 

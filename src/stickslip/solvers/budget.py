@@ -13,7 +13,7 @@ import time
 
 import numpy as np
 
-from .base import SolverStats, Trajectory
+from .base import SolverStats, Trajectory, default_t_eval
 
 
 class BudgetExceeded(RuntimeError):
@@ -96,6 +96,5 @@ class BudgetedSolver:
         return {**self.inner.settings, "budget_max_rhs": self.max_rhs, "budget_max_cpu": self.max_cpu}
 
     def solve(self, model, t_end, t_eval=None):
-        if t_eval is None:
-            t_eval = np.linspace(0.0, t_end, 2001)
+        t_eval = default_t_eval(t_end, t_eval)
         return run_with_budget(self.inner, model, t_end, t_eval, max_rhs=self.max_rhs, max_cpu=self.max_cpu)

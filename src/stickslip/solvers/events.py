@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .base import STICK, SolverError, SolverStats, Timer, Trajectory
+from .base import STICK, SolverError, SolverStats, Timer, Trajectory, default_t_eval
 
 
 @dataclass(frozen=True)
@@ -126,8 +126,8 @@ class EventDrivenSolver:
 
 def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, settings: dict) -> Trajectory:
     """The solve of an event-driven solver (exact, switch): ``segments_of(model, t_end, stats)`` gives the
-    phases of the motion, sampled on ``t_eval`` (default 2001 points); a ``SolverError`` while building them
-    is a failed run whose samples past the last good segment are NaN."""
+    phases of the motion, sampled on ``t_eval`` (default DEFAULT_SAMPLES points); a ``SolverError`` while
+    building them is a failed run whose samples past the last good segment are NaN."""
     stats = SolverStats()
     t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
     with Timer() as timer:
@@ -137,7 +137,7 @@ def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, set
             stats.status, stats.message, stats.failures = "failed", str(exc), 1
             segments = []
     stats.cpu_time = timer.elapsed
-    t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
+    t_eval = default_t_eval(t_end, t_eval)
     x, v, phase = sample_segments(segments, t_eval)
     return Trajectory(
         t=t_eval,

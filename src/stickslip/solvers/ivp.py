@@ -8,11 +8,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..model.equations import BeltModel
-from .base import SolverStats, Timer, Trajectory, classify_phase
-
-
-def default_t_eval(t_end: float, t_eval) -> np.ndarray:
-    return np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, dtype=float)
+from .base import SolverStats, Timer, Trajectory, classify_phase, default_t_eval  # noqa: F401 (re-exported)
 
 
 def integrate(

@@ -20,7 +20,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
+from .base import (
+    SLIP_BACKWARD,
+    SLIP_FORWARD,
+    STICK,
+    SolverError,
+    SolverStats,
+    Timer,
+    Trajectory,
+    default_t_eval,
+)
 
 
 @dataclass
@@ -39,11 +48,9 @@ class MoreauJean:
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
         if not self.h > 0:
             raise ValueError(f"h: must be > 0, got {self.h!r}")
-        if not 0.0 <= self.theta <= 1.0:
-            raise ValueError(f"theta: must be in [0, 1], got {self.theta!r}")
-        if t_eval is None:
-            t_eval = np.linspace(0.0, t_end, 2001)
-        t_eval = np.asarray(t_eval, dtype=float)
+        if not 0.0 < self.theta <= 1.0:  # the range check_settings enforces at parse time
+            raise ValueError(f"theta: must be in (0, 1], got {self.theta!r}")
+        t_eval = default_t_eval(t_end, t_eval)
         stats = SolverStats()
         with Timer() as timer:
             try:
