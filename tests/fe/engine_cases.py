@@ -6,8 +6,9 @@ count) and :func:`run_case` builds and runs it. Floats of the mapping can be per
 :func:`stickslip.ensemble.perturbed_mapping`: the regeneration runs each case at 1e-12 relative
 perturbations and stores, next to the base run's summaries, their measured spread.
 
-Regenerate (only when a result is meant to change; ~10 min on one core):
-``.venv/bin/python tests/fe/engine_cases.py``
+Regenerate (only when a result is meant to change; ~3 min on one core):
+``.venv/bin/python tests/fe/engine_cases.py [CASE ...]``; print each case's largest deviation relative to
+its tolerance on this machine: ``.venv/bin/python tests/fe/engine_cases.py --check``
 """
 
 from __future__ import annotations
@@ -360,5 +361,25 @@ def write_references(table: dict) -> None:
     REFERENCES.write_text("{\n" + ",\n".join(lines) + "\n}\n")
 
 
-if __name__ == "__main__":  # regenerate the stored references (optionally only the cases named)
+def check() -> float:
+    """Print, per case, the largest deviation from the references relative to its tolerance; return the
+    largest over all cases (<= 1: the test passes)."""
+    table = json.loads(REFERENCES.read_text())
+    worst_all = 0.0
+    for name in table:
+        s = summaries(run_case(name))
+        e = table[name]
+        same = (s["n_steps"], s["diverged"]) == (e["reference"]["n_steps"], e["reference"]["diverged"])
+        ratios = [(d / t if t > 0 else (0.0 if d == 0 else np.inf), what) for what, d, t in deviations(
+            s, e["reference"], e["spread"])]  # fmt: skip
+        ratio, what = max(ratios)
+        worst_all = max(worst_all, ratio if same else np.inf)
+        print(f"{name:55s} max deviation/tolerance {ratio:.3g} ({what}){'' if same else ' STEPS DIFFER'}")
+    print(f"all cases: max deviation/tolerance {worst_all:.3g}")
+    return worst_all
+
+
+if __name__ == "__main__":  # regenerate the stored references (optionally only the cases named); --check
+    if sys.argv[1:] == ["--check"]:
+        sys.exit(0 if check() <= 1.0 else 1)
     regenerate(sys.argv[1:])
