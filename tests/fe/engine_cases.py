@@ -263,12 +263,16 @@ def spread(base: dict, members: list[dict]) -> dict:
     return out
 
 
-#: Tolerance of a summary value: MULTIPLE x its measured spread + FLOOR_ULPS x eps x n_steps x its series'
-#: scale. Another CPU changes the inputs and each step's result in their last bits (~1e-16 relative), ten
-#: thousand times less than the ensemble's 1e-12 perturbations, which grow through the same dynamics: the
-#: multiple covers the ensemble's maximum over a few members underestimating the worst member. The floor
-#: is the round-off a run of n_steps steps can accumulate (eps per step, relative to the scale) times a
-#: safety factor; it matters only where the perturbations move nothing (a constant force, an exact zero).
+#: Tolerance of every summary value of a series: MULTIPLE x the largest measured spread of that series'
+#: values (samples and statistics) + FLOOR_ULPS x eps x n_steps x the scale of its physical quantity.
+#: Another CPU or BLAS changes the inputs and each step's result in their last bits; over a run this
+#: round-off moves the outputs by as much as the ensemble's 1e-12 perturbations do (measured with other
+#: OpenBLAS kernels and generic NumPy/numba code: up to ~3x the spread of single values, ~0.3x the series'
+#: largest spread). Taking the series' largest spread rather than each value's own keeps a value that
+#: happened to move little in a few members from getting a tolerance below round-off; the multiple covers
+#: the maximum over a few members underestimating the worst member. The floor is the round-off a run of
+#: n_steps steps can accumulate (eps per step, relative to the scale) times a safety factor; it matters
+#: only where the perturbations move nothing (a constant force, an exact zero).
 MULTIPLE = 10.0
 FLOOR_ULPS = 4.0
 EPS = float(np.finfo(float).eps)
@@ -285,8 +289,11 @@ def tolerances(reference: dict, spread_: dict) -> dict:
     if "second_half_counts" in spread_:
         out["second_half_counts"] = [MULTIPLE * s for s in spread_["second_half_counts"]]
     for name, sp in spread_["series"].items():
-        floor = FLOOR_ULPS * EPS * n * reference["series"][name]["scale"]
-        out["series"][name] = {key: [MULTIPLE * v + floor for v in sp[key]] for key in ("stats", "samples")}
+        tol = (
+            MULTIPLE * max(*sp["stats"], *sp["samples"])
+            + FLOOR_ULPS * EPS * n * reference["series"][name]["scale"]
+        )
+        out["series"][name] = {key: [tol] * len(sp[key]) for key in ("stats", "samples")}
     return out
 
 

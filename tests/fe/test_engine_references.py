@@ -11,13 +11,15 @@ summary measured by the regeneration over 1e-12 relative perturbations of every 
 case (the project's perturbation ensemble, ``stickslip.ensemble.perturbed_mapping``, four seeds).
 
 Why not bits: the system matrices, static state and time step come from LAPACK/ARPACK and the compiled
-engine (numba) is built for the host CPU, so the last bits of every result depend on the machine. A
-different CPU perturbs a run by ~1e-16 relative, ten thousand times less than the ensemble does; the
-tolerance of each value is ``MULTIPLE`` (10) times its measured spread plus a floor of ``FLOOR_ULPS`` (4)
-x eps x n_steps x the scale of its physical quantity (the round-off n steps can accumulate), see
-``engine_cases.tolerances``. A case whose 1e-12 perturbations grow beyond 1e-6 of the scale (chaotic over
-its window) is shortened by the regeneration's verdict, never given a tolerance comparable to its values;
-the coverage test below checks that every stored tolerance stays far below its scale. Step for step
+engine (numba) is built for the host CPU, so the last bits of every result depend on the machine; over a
+run that round-off moves the outputs by about as much as the 1e-12 perturbations do. The tolerance of
+every value of a series is ``MULTIPLE`` (10) times the largest spread measured for that series plus a
+floor of ``FLOOR_ULPS`` (4) x eps x n_steps x the scale of its physical quantity (the round-off n steps
+can accumulate), see ``engine_cases.tolerances``. Measured on an AMD EPYC (znver3) with other OpenBLAS
+kernels (OPENBLAS_CORETYPE=Prescott, Sandybridge) and generic NumPy/numba code: at most ~0.1 of the
+tolerance. A case whose 1e-12 perturbations grow beyond 1e-6 of the scale (chaotic over its window) is
+shortened by the regeneration's verdict, never given a tolerance comparable to its values; the coverage
+test below checks that every stored tolerance stays far below its scale. Step for step
 agreement of the compiled engine with its Python oracle is tested in ``test_engine.py``; bit identity on
 one machine before and after a refactoring is a script, ``benchmarks/check_engine_bits.py``.
 
@@ -33,6 +35,7 @@ import numpy as np
 import pytest
 from engine_cases import (
     CHAOTIC,
+    MULTIPLE,
     REFERENCES,
     STATES,
     case_mappings,
@@ -87,7 +90,7 @@ def test_the_cases_cover_every_contact_state_and_the_diverged_flag_with_meaningf
         seen |= {state for state, k in zip(STATES, ref["step_counts"], strict=True) if k > 0}
         for series, values in ref["series"].items():  # never a tolerance comparable to the values
             worst = max(max(tol["series"][series]["samples"]), max(tol["series"][series]["stats"]))
-            assert worst <= CHAOTIC * 10 * values["scale"], (name, series)
+            assert worst <= 2 * MULTIPLE * CHAOTIC * values["scale"], (name, series)
     assert seen == {"stick", "slip", "separation"}
     assert any(e["reference"]["diverged"] for e in table.values())
     assert any(not e["reference"]["diverged"] for e in table.values())
