@@ -26,8 +26,9 @@ per combination of piece types and cached on disk like any other function (a jit
 argument would make numba recompile the driver in every process). All pieces live in this one module
 because numba's on-disk cache of a function is invalidated only by edits to that function's own file.
 
-Each piece repeats, operation for operation, the arithmetic of the per-law loops it replaced (the stored
-digests in ``tests/fe/test_engine_digests.py`` hold it to the bit). The reference algorithm is the Python
+Each piece repeats, operation for operation, the arithmetic of the per-law loops it replaced (bit identity
+on one machine: ``benchmarks/check_engine_bits.py``; on any CPU ``tests/fe/test_engine_references.py``
+holds it to stored references within measured round-off). The reference algorithm is the Python
 loop :func:`stickslip.fe.explicit.integrate_python`; see :mod:`stickslip.fe.explicit` and
 :mod:`stickslip.fe.continuum` for the contact treatment.
 """
