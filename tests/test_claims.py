@@ -251,3 +251,19 @@ def test_failed_sweep_members_are_named_in_the_reason():
         trend.pop(key)
     res = evaluate(trend, "", lambda p: ds)
     assert "mu_s = 0.9 failed (diverged at |x| = 3.3e16 mm)" in res.reason
+
+
+def test_a_comparison_needs_its_margin_beyond_three_spreads_not_only_unanimous_members():
+    """Every member on one side is not enough when the margin is within the noise (a tie set by round-off);
+    a margin beyond three spreads decides, at any size of the value."""
+    row = {**ROW, "kind": "compare", "lhs": {"dataset": "s.nc", "variable": "sep"}, "relation": ">",
+           "rhs": {"value": 0.0}}  # fmt: skip
+    for key in ("dataset", "variable", "value", "unit", "tolerance"):
+        row.pop(key)
+
+    def members(*values):
+        return xr.Dataset({"sep": ((), values[0]), "sep_ensemble": (("member",), list(values))})
+
+    assert evaluate(row, "", lambda p: members(0.033, 0.030, 0.046)).status == "indistinguishable"
+    assert evaluate(row, "", lambda p: members(0.40, 0.39, 0.34)).status == "reproduced"
+    assert evaluate(row, "", lambda p: members(0.0, 0.0, 0.0)).status == "deviates"  # robustly none

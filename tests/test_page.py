@@ -323,7 +323,7 @@ def test_a_figure_is_judged_in_the_primary_reading_with_the_search_apart(tmp_pat
         1,
     )
     assert (fig2["best_reading"], fig2["readings_searched"]) == ("r2", 2)
-    assert fig2["not_evidence"] == "2 fit"
+    assert fig2["not_evidence"] == "1 fit"  # the fitted row once, in the primary reading
     assert table[1]["primary_verdict"] == "deviating"  # Fig. 3: b deviates in r1
 
 

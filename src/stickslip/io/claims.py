@@ -15,8 +15,11 @@ or the paper contradicts itself: rows with ``comparable: false``). Every claim r
 variable* on one side of a threshold (value/ratio: |measured - reported| against the tolerance band;
 compare: lhs - rhs against 0; trend: the relative change against +-floor). ``margin`` is its distance to the
 threshold, ``spread`` its range across the dataset's perturbation ensemble (``<variable>_ensemble``,
-stickslip.ensemble). A margin below MARGIN_FACTOR spreads is ``indistinguishable``: the pipeline's own
-numerical noise could flip it, so it is never called reproduced or deviating. ``expected`` pins the
+stickslip.ensemble). One rule for every kind, at every disc speed and in every reading: a margin below
+MARGIN_FACTOR spreads is ``indistinguishable`` (the spread includes the dt/2 run). Unanimity of the members
+alone is not enough: with a handful of members it would decide ties such as 0.75 > 0.75 in a reading whose
+end state is set by round-off. A value the step-halving check withheld still decides a comparison through
+its two steps' values (its side, when both lie beyond 3 spreads of it). ``expected`` pins the
 status (one string, or one per reading); the check fails when a measured status differs from the pinned
 one, so every change is deliberate.
 """
