@@ -154,7 +154,7 @@ def figure_row(
     (a search). Beam-on-disc (``fe_rows``: the claims under every FE reading, ``primary`` the FE reading the
     claims table checks): under the primary reading at each disc speed, ``printed`` = the stated speed alone,
     the search over the FE readings."""
-    apart: dict[str, int] = {}  # the rows set apart, counted once (in the primary reading where they depend on one)
+    apart: dict[str, int] = {}  # rows set apart, counted once (in the primary reading, if they have one)
     for r in rows if fe_rows is not None else rows_in_reading(rows, primary):
         if not is_evidence(r):
             cls = claims.get(r["claim"], {}).get("evidence", r.get("evidence", ""))
