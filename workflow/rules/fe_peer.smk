@@ -1,10 +1,8 @@
 # CalculiX (ccx) as a peer of the continuum strip, and the strip's input decks as a product (issue 28).
 # Needs the `ccx` executable (Debian package calculix-ccx); without it the peer job fails naming ccx.
 
-#: what the peer job reads: the strip (beam) and the continuum's mesh, nothing else of the FE config
-FE_PEER_CONFIG = {
-    "fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "comparison": {"mesh": FE["comparison"]["mesh"]}}
-}
+#: what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of the FE config
+FE_PEER_CONFIG = {"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}}
 FE_PEER_DECKS = ["peer_free", "peer_propped"]
 
 

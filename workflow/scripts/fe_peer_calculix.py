@@ -5,7 +5,7 @@ from pathlib import Path
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.io.text_files import write_csv_atomic, write_text_atomic
-from stickslip.studies.fe_peer import PEER_TOLERANCE, peer_study
+from stickslip.studies.fe_peer import peer_study
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 rows, ds, decks = peer_study(snakemake.params.config["fe"])  # noqa: F821
@@ -17,7 +17,7 @@ write_dataset(
     snakemake.output.dataset,  # noqa: F821
     scene={"beam": snakemake.params.config["fe"]["defaults"]["beam"]},  # noqa: F821
     interpretation=ds.attrs["model_interpretation"],
-    method={"kind": "CalculiX peer", "tolerance": PEER_TOLERANCE},
+    method={"kind": "CalculiX peer", **(snakemake.params.config["fe"]["peer"] or {})},  # noqa: F821
 )
 for r in rows:
     print(f"{r['quantity']}: {r['closed_form']:.6g} / {r['continuum']:.6g} / {r['calculix']:.6g} {r['unit']}")

@@ -230,7 +230,9 @@ def scene_deck(
         "*SURFACE, TYPE=ELEMENT, NAME=LOWER",
         "LOWER_EL, S1",
     ]
-    out += ["*SURFACE, TYPE=SEGMENTS, NAME=DISC"] + _disc_arcs(centre, r, math.pi / 2 - a)
+    out += ["*SURFACE, TYPE=SEGMENTS, NAME=DISC"] + _disc_arcs(
+        centre, r, math.pi / 2 + a
+    )  # from the contact point
     out += ["*RIGID BODY, REF NODE=DISCREF, ANALYTICAL SURFACE=DISC"]
     out += _material(beam, solver.stiffness_damping)
     out += [
