@@ -274,13 +274,13 @@ def test_fig29_draws_the_papers_times_and_the_zero_line(ds):
     # the 4 ms test run ends before the paper's times: listed under the figure, not drawn off the axes
     text = _texts(fig)
     assert "stick end time at 0.6 s (after the end of this run)" in text
-    assert "jump: oscillates at its natural frequency at 0.85 s (after the end of this run)" in text
+    assert "the jump at 0.85 s (after the end of this run)" in text
     # a run that reaches them draws both as vertical lines on every whole-run panel of the column
     fig, ax = plt.subplots(2)
     from stickslip.presentation.fe_paper_figures import _paper_times, _time_lines
 
     times = _paper_times(spec, reported)
-    assert times == [(0.6, "stick end time"), (0.85, "jump: oscillates at its natural frequency")]
+    assert times == [(0.6, "stick end time"), (0.85, "the jump")]
     assert _time_lines(list(ax), times, t_end=1.0) == set()
     for a in ax:
         assert sorted(ln.get_xdata()[0] for ln in a.get_lines()) == [0.6, 0.85]
@@ -293,3 +293,7 @@ def test_fig23_states_the_papers_comparison_with_the_runs_values(ds):
     v, h = float(ds["vertical_amplitude"]), float(ds["horizontal_amplitude"])
     assert f"vertical amplitude {v:.3g} mm vs horizontal amplitude {h:.3g} mm" in text
     assert ("so it holds here" in text) == (v > h)
+    withheld = ds.copy()
+    withheld["vertical_amplitude"] = withheld["vertical_amplitude"] * np.nan  # as step halving withholds it
+    text = _texts(paper_time_series_figure(23, {"a": withheld}, []))
+    assert "vertical amplitude withheld" in text and "not decided" in text and "nan" not in text

@@ -91,7 +91,7 @@ TIME_SERIES = {
         "Horizontal displacements versus time at beam node 1 (penalty)",
         normal_force=True,
         growth=True,
-        times=((0.85, "jump: oscillates at its natural frequency"),),
+        times=((0.85, "the jump"),),  # "oscillate at its natural frequency at 0.85 second"
         zero_line="paper: oscillates about its equilibrium position (0.0, 0.0)",
     ),
     30: PaperFigure(
@@ -455,12 +455,24 @@ def _statement(ax, ds, text, lhs, rhs):
         return
     a, b = float(ds[lhs]), float(ds[rhs])
     units = ds[lhs].attrs.get("units", "")
-    verdict = "so it holds here" if a > b else "not here"
-    here = f"here: {lhs.replace('_', ' ')} {a:.3g} {units} vs {rhs.replace('_', ' ')} {b:.3g} {units}"
+
+    def value(name, v):
+        # a metric the step-halving check withheld is NaN in the dataset: say so instead of "nan"
+        return (
+            f"{name.replace('_', ' ')} {v:.3g} {units}"
+            if np.isfinite(v)
+            else f"{name.replace('_', ' ')} withheld"
+        )
+
+    if np.isfinite(a) and np.isfinite(b):
+        verdict = "so it holds here" if a > b else "not here"
+    else:
+        verdict = "not decided (not converged at half step)"
+    here = f"here: {value(lhs, a)} vs {value(rhs, b)}"
     ax.text(
         0.01,
         0.97,
-        f"{text}\n{here}: {verdict}",
+        f"{text}\n{here}\n{verdict}",
         transform=ax.transAxes,
         ha="left",
         va="top",
