@@ -213,7 +213,10 @@ def scene_deck(
         f"surface speed {disc.surface_speed:.6g} mm/s {disc.direction}",
         f"** element {SCENE_ELEMENT}: {SCENE_ELEMENT_REASON}",
         "** units: mm, s, N, t (tonne), MPa; written by stickslip.fe.abaqus_deck.scene_deck",
-        "** start: undeformed, gravity from t = 0 (the drop start of ABAQUS/Explicit)",
+        "** start: undeformed, gravity from t = 0 (the drop start of ABAQUS/Explicit)"
+        + (
+            "" if solver.initial_state != "static" else "; the scene's static start needs a prior static step"
+        ),
         "*NODE, NSET=BEAM",
     ]
     out += [f"{i + 1}, {_num(x)}, {_num(y)}" for i, (x, y) in enumerate(m.nodes)]
