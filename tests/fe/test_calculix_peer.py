@@ -50,9 +50,9 @@ def test_closed_form_continuum_and_calculix_agree_within_the_config_tolerance(pe
     assert int(ds["peers_agree"]) == 1
 
 
-def test_the_peer_values_are_the_strips_not_another_beams(peer):
-    """Each model's value lies within the tolerance of the closed form of the config's strip, and the
-    closed forms move with the strip: a steel strip of twice the thickness has twice the frequencies."""
+def test_the_closed_forms_are_the_config_strips_and_the_decks_carry_its_material(peer):
+    """The closed-form column is the config's strip (and moves with it: twice the thickness, twice the
+    frequencies), and the decks ccx ran hold the config's E, nu and rho."""
     rows, _, _ = peer
     beam = BeamParams.from_mapping(FE["defaults"]["beam"])
     closed = closed_form_values(beam)
@@ -61,6 +61,13 @@ def test_the_peer_values_are_the_strips_not_another_beams(peer):
     thick = closed_form_values(BeamParams.from_mapping({**FE["defaults"]["beam"], "thickness": 2.0}))
     assert thick["free_f1"] == pytest.approx(2 * closed["free_f1"], rel=1e-12)
     assert closed["propped_f1"] == pytest.approx(366.39, abs=0.01)  # the documented closed form
+    for deck in peer[2].values():
+        lines = deck.splitlines()
+        assert [float(v) for v in lines[lines.index("*ELASTIC") + 1].split(",")] == [
+            beam.E,
+            beam.poisson_ratio,
+        ]
+        assert float(lines[lines.index("*DENSITY") + 1]) == pytest.approx(beam.rho, rel=1e-11)
 
 
 def test_peer_dataset_round_trips_with_every_quantity_and_model(peer, tmp_path):
