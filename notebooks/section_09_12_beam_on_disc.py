@@ -136,6 +136,36 @@ tab["paper (ABAQUS banner)"] = 3688747
 display(tab.style.format("{:,.0f}"))
 
 # %% [markdown]
+# ## An established FE code as a peer: CalculiX
+#
+# The strip alone (clamped, own weight, tip free or propped at its lower corner as the contact holds it) in
+# three independent ways: the Euler-Bernoulli closed forms, the project's continuum (QM6 quads, lumped mass)
+# and CalculiX 2.20 (`ccx`, C3D8I bricks, consistent mass) on the deck `results/fe/inp/peer_*.inp` that the
+# pipeline writes from the same config (`fe.defaults.beam`, `fe.peer`). ccx runs the modes and static states
+# only: it has no μ(slip rate) friction and no analytical rigid surface, so the stick-slip transient stays
+# with the project's models (the scene decks in `results/fe/inp/` are for ABAQUS/Explicit).
+
+# %%
+peer = pd.read_csv("results/fe/peer_calculix.csv")
+peer_ds = xr.load_dataset("results/fe/peer_calculix.nc")
+print("element:", peer["calculix_element"].iloc[0], "-", peer["element_reason"].iloc[0])
+display(
+    peer.drop(columns=["calculix_element", "element_reason", "long_name"])
+    .style.format(
+        {"closed_form": "{:.6g}", "continuum": "{:.6g}", "calculix": "{:.6g}"}
+        | {c: "{:+.3%}" for c in peer.columns if c.startswith("rel_diff")}
+    )
+    .hide(axis="index")
+)
+display(
+    Markdown(
+        f"Largest |relative difference| of any two: **{100 * float(peer_ds.max_abs_rel_diff):.2f} %** "
+        f"(agreement within {100 * peer_ds.peers_agree.attrs['tolerance']:g} %: "
+        f"{'yes' if int(peer_ds.peers_agree) else 'no'})."
+    )
+)
+
+# %% [markdown]
 # ## Beam against the continuum strip
 #
 # Every paper scene, both models from the same scene description and the same window (0.1 s: the beam's own

@@ -235,3 +235,65 @@ def test_growth_row_draws_the_first_mode_against_the_linear_estimate(ds):
     np.testing.assert_allclose(linear.get_ydata(), np.exp(0.36 * (t - t[0])))
     assert "at dt/2" in lines
     assert "fitted over the leading segment: +0.5 1/s (sign converged" in _texts(fig)
+
+
+def _scaled(ds, factor):
+    """The dataset with every displacement and force series scaled by ``factor`` (another magnitude)."""
+    out = ds.copy()
+    for name in list(ds.data_vars):
+        if name.startswith(("horizontal_displacement", "normal_force")) and ds[name].dtype.kind == "f":
+            out[name] = ds[name] * factor
+    return out
+
+
+@pytest.mark.parametrize("number", [21, 29])
+def test_every_column_of_a_row_draws_its_quantity_in_one_unit(ds, number):
+    """Columns whose data differ 1000-fold still share the row's power of ten (the larger one's), so a
+    tick reads the same in every column; the tick labels are the values divided by that power."""
+    fig = paper_time_series_figure(number, {"large": ds, "small": _scaled(ds, 1e-3)}, [])
+    n_rows = len(fig.axes) // 2
+    left, right = fig.axes[:n_rows], fig.axes[n_rows:]
+    for a, b in zip(left, right):
+        assert a.get_ylabel() == b.get_ylabel()
+    node1 = left[0]
+    label = node1.get_ylabel()
+    e = int(label.split("10^{")[1].split("}")[0]) if "10^{" in label else 0
+    top = max(abs(v) for v in node1.get_ylim())
+    assert e < -2 and 1 <= top / 10.0**e < 10  # the larger column sets the power (1e-4 mm here)
+    for ax in (node1, right[0]):
+        tick = ax.get_yticks()[-1]
+        assert ax.yaxis.get_major_formatter()(tick, 0) == f"{tick / 10.0**e:g}"
+
+
+def test_fig29_draws_the_papers_times_and_the_zero_line(ds):
+    spec = TIME_SERIES[29]
+    reported = [{"label": "stick end time", "value": 0.6, "unit": "s"}]
+    fig = paper_time_series_figure(29, {"a": ds}, reported)
+    node1 = fig.axes[0]
+    assert _hlines_at(node1, 0.0) and spec.zero_line in _texts(fig)
+    # the 4 ms test run ends before the paper's times: listed under the figure, not drawn off the axes
+    text = _texts(fig)
+    assert "stick end time at 0.6 s (after the end of this run)" in text
+    assert "the jump at 0.85 s (after the end of this run)" in text
+    # a run that reaches them draws both as vertical lines on every whole-run panel of the column
+    fig, ax = plt.subplots(2)
+    from stickslip.presentation.fe_paper_figures import _paper_times, _time_lines
+
+    times = _paper_times(spec, reported)
+    assert times == [(0.6, "stick end time"), (0.85, "the jump")]
+    assert _time_lines(list(ax), times, t_end=1.0) == set()
+    for a in ax:
+        assert sorted(ln.get_xdata()[0] for ln in a.get_lines()) == [0.6, 0.85]
+
+
+def test_fig23_states_the_papers_comparison_with_the_runs_values(ds):
+    fig = paper_time_series_figure(23, {"a": ds}, [])
+    text = _texts(fig)
+    assert "paper: the vertical amplitude is higher than the horizontal" in text
+    v, h = float(ds["vertical_amplitude"]), float(ds["horizontal_amplitude"])
+    assert f"vertical amplitude {v:.3g} mm vs horizontal amplitude {h:.3g} mm" in text
+    assert ("so it holds here" in text) == (v > h)
+    withheld = ds.copy()
+    withheld["vertical_amplitude"] = withheld["vertical_amplitude"] * np.nan  # as step halving withholds it
+    text = _texts(paper_time_series_figure(23, {"a": withheld}, []))
+    assert "vertical amplitude withheld" in text and "not decided" in text and "nan" not in text

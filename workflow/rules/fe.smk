@@ -191,13 +191,14 @@ rule fe_figures:
             for s in FE_SCENES
         },
         default_reading=FE_DEFAULT_READING,
-        # per paper figure 21-36: the paper's numbers in mm or mm/s its claims rows name, drawn as lines
+        # per paper figure 21-36: the paper's numbers in mm or mm/s its claims rows name, drawn as lines,
+        # and its times in s (drawn as vertical lines)
         paper_reported={
             n: [
                 {"label": c["variable"].replace("_", " "), "value": c["value"], "unit": c["unit"]}
                 for c in CLAIMS
                 if n in (c.get("figures") or [])
-                and c.get("unit") in ("mm", "mm s-1")
+                and c.get("unit") in ("mm", "mm s-1", "s")
                 and isinstance(c.get("value"), (int, float))
             ]
             for n in range(21, 37)

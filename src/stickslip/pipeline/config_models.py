@@ -619,6 +619,17 @@ class Increments(Section):
     betas: Annotated[list[NonNegative], Field(min_length=1)]
 
 
+class FePeer(Section):
+    """The CalculiX peer of the continuum strip (rule fe_peer_calculix)."""
+
+    mesh: Mesh = Field(
+        description="nx, ny of the strip both the continuum and CalculiX solve (the paper's 100 x 1)"
+    )
+    tolerance: Fraction = Field(
+        description="largest |relative difference| of any two of closed form, continuum, ccx"
+    )
+
+
 class LongRuns(Section):
     scene_t_end: Positive
     comparison_t_end: Positive
@@ -640,6 +651,7 @@ class Fe(Section):
     reduced: Reduced
     comparison: Comparison
     increments: Increments
+    peer: FePeer | None = None
 
     @model_validator(mode="after")
     def bases_are_scenes(self):

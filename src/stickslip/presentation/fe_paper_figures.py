@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, Rectangle
 
-from .fe_plots import band_columns, grouped, scaled_ylabel, shade_states, state_legend_handles
+from .fe_plots import band_columns, grouped, power_of_ten, scaled_ylabel, shade_states, state_legend_handles
 
 #: the running mean drawn over the band averages this many seconds (several periods of the 366 Hz mode)
 MEAN_SPAN = 0.01
@@ -42,6 +42,13 @@ class PaperFigure:
     normal_force: bool = False  #: the paper's claim is separation: draw the normal force and its zero
     #: the paper claims self-excited growth: draw the first mode's amplitude against the linear estimate
     growth: bool = False
+    #: times [s] the paper's text names for this figure, with what happens then (drawn as vertical lines
+    #: beside any time its claims rows give in s)
+    times: tuple = ()
+    #: the paper says node 1 oscillates about zero: draw the zero line on node 1's panel
+    zero_line: str = ""
+    #: the paper's statement comparing two of the dataset's scalars: (text, lhs variable, rhs variable)
+    statement: tuple = ()
 
 
 TIME_SERIES = {
@@ -51,7 +58,17 @@ TIME_SERIES = {
         "Displacement (mm) at beam node 1 in horizontal direction",
         normal_force=True,
     ),
-    23: PaperFigure(9, "vertical_displacement", "Vertical displacement of beam at node 1", normal_force=True),
+    23: PaperFigure(
+        9,
+        "vertical_displacement",
+        "Vertical displacement of beam at node 1",
+        normal_force=True,
+        statement=(
+            "paper: the vertical amplitude is higher than the horizontal (Fig. 23 against Fig. 21)",
+            "vertical_amplitude",
+            "horizontal_amplitude",
+        ),
+    ),
     24: PaperFigure(
         9, "horizontal_velocity", "Horizontal velocity at beam node 1", envelope=True, growth=True
     ),
@@ -74,6 +91,8 @@ TIME_SERIES = {
         "Horizontal displacements versus time at beam node 1 (penalty)",
         normal_force=True,
         growth=True,
+        times=((0.85, "the jump"),),  # "oscillate at its natural frequency at 0.85 second"
+        zero_line="paper: oscillates about its equilibrium position (0.0, 0.0)",
     ),
     30: PaperFigure(
         11,
@@ -246,6 +265,8 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
     its claims rows); those in another unit than the panel's are listed under the figure."""
     spec = TIME_SERIES[number]
     reported = distinct_values(reported)
+    times = _paper_times(spec, reported)
+    reported = [r for r in reported if r["unit"] != "s"]
     what, unit = QUANTITY[spec.variable]
     ulab = UNIT_LABEL[unit]
     short = f"{what.split()[0]} {what.split()[-1]}"
@@ -268,6 +289,8 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         top=1 - 1.45 / height,
         bottom=0.75 / height,
     )
+    labelled = {}  # row -> [(axes, label, unit)] over the columns: one unit per row
+    beyond = set()
     for j, (scene, ds) in enumerate(datasets.items()):
         axes = {}
         for i, r in enumerate(rows):
@@ -281,6 +304,10 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         if spec.envelope:
             _envelope(ax, ds, spec.variable, "C1")
         _paper_lines(ax, reported, unit)
+        if spec.zero_line:
+            _zero_line(ax, spec.zero_line)
+        if spec.statement:
+            _statement(ax, ds, *spec.statement)
         ax.set_title(f"{scene}: {_speed_label(ds)}", fontsize=9, pad=30 if spec.envelope else 19)
         _legend_above(ax, ncol=2 if spec.envelope else 3)
         _band(axes["midspan"], ds, f"midspan_{spec.variable}", "C2", "mid-span node (off the contact)")
@@ -308,7 +335,10 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 axes[r].set_xlim(0.0, t_end)
                 axes[r].grid(alpha=0.25)
                 axes[r].tick_params(labelsize=8)
-                scaled_ylabel(axes[r], label, u)
+                labelled.setdefault(r, []).append((axes[r], label, u))
+        beyond |= _time_lines(
+            [axes[r] for r in ("node1", "midspan", "normal", "growth") if r in axes], times, t_end
+        )
         axes["normal" if "normal" in axes else "midspan"].set_xlabel("time [s] (whole run)", fontsize=8)
         ax = axes["zoom"]
         t0, t1 = ds.detail_windows.values[-1]
@@ -338,7 +368,7 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
             f"time [s]: last full-resolution window, {t0:.4g}-{t1:.4g} s (shading: contact state)", fontsize=8
         )
         ax.tick_params(labelsize=8)
-        scaled_ylabel(ax, label, ulab)
+        labelled.setdefault("zoom", []).append((ax, label, ulab))
         if j == 0:
             ax.legend(
                 handles=ax.get_lines()[:1] + state_legend_handles(alpha=0.2),
@@ -349,9 +379,14 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 frameon=False,
                 borderaxespad=0.1,
             )
-    other = [r for r in reported if r["unit"] != unit]
+    for row in labelled.values():  # the same power of ten in every column of a row (one unit per quantity)
+        e = power_of_ten([ax for ax, _, _ in row])
+        for ax, label, u in row:
+            scaled_ylabel(ax, label, u, exponent=e)
+    other = [f"{r['label']} {r['value']:g} {UNIT_LABEL[r['unit']]}" for r in reported if r["unit"] != unit]
+    other += [f"{label} at {t:g} s (after the end of this run)" for t, label in sorted(beyond)]
     if other:
-        text = "; ".join(f"{r['label']} {r['value']:g} {UNIT_LABEL[r['unit']]}" for r in other)
+        text = "; ".join(other)
         fig.text(
             0.01,
             0.01,
@@ -362,6 +397,89 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         )
     fig.suptitle(_title(number, spec.caption, list(datasets), reading), fontsize=11)
     return fig
+
+
+def _paper_times(spec: PaperFigure, reported) -> list[tuple[float, str]]:
+    """(time [s], what happens then) the paper names for a figure: from its claims rows in s, then the
+    ones its text alone gives (``PaperFigure.times``), each time once."""
+    out = {float(r["value"]): r["label"] for r in reported if r["unit"] == "s"}
+    for t, label in spec.times:
+        out.setdefault(float(t), label)
+    return sorted(out.items())
+
+
+def _time_lines(axes, times, t_end) -> set:
+    """The paper's times as vertical lines on every panel of a column, labelled on the first; returns
+    those after ``t_end`` (the run ended before them: listed under the figure instead)."""
+    beyond = set()
+    for t, label in times:
+        if t > t_end:
+            beyond.add((t, label))
+            continue
+        for i, ax in enumerate(axes):
+            ax.axvline(t, color=PAPER_COLOUR, ls=":", lw=1.3)
+            if i == 0:
+                ax.annotate(
+                    f"paper: {label} ({t:g} s)",
+                    (t, 0.02),
+                    xycoords=("data", "axes fraction"),
+                    xytext=(-3, 0),
+                    textcoords="offset points",
+                    rotation=90,
+                    ha="right",
+                    va="bottom",
+                    fontsize=7.5,
+                    color=PAPER_COLOUR,
+                    bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.2),
+                )
+    return beyond
+
+
+def _zero_line(ax, text):
+    ax.axhline(0.0, color=PAPER_COLOUR, ls="-.", lw=1.1)
+    ax.annotate(
+        text,
+        (0.01, 0.0),
+        xycoords=("axes fraction", "data"),
+        ha="left",
+        va="bottom",
+        fontsize=8,
+        color=PAPER_COLOUR,
+        bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
+    )
+
+
+def _statement(ax, ds, text, lhs, rhs):
+    """The paper's comparison of two scalars of the dataset, with the run's two values beside it."""
+    if lhs not in ds or rhs not in ds:
+        return
+    a, b = float(ds[lhs]), float(ds[rhs])
+    units = ds[lhs].attrs.get("units", "")
+
+    def value(name, v):
+        # a metric the step-halving check withheld is NaN in the dataset: say so instead of "nan"
+        return (
+            f"{name.replace('_', ' ')} {v:.3g} {units}"
+            if np.isfinite(v)
+            else f"{name.replace('_', ' ')} withheld"
+        )
+
+    if np.isfinite(a) and np.isfinite(b):
+        verdict = "so it holds here" if a > b else "not here"
+    else:
+        verdict = "not decided (not converged at half step)"
+    here = f"here: {value(lhs, a)} vs {value(rhs, b)}"
+    ax.text(
+        0.01,
+        0.97,
+        f"{text}\n{here}\n{verdict}",
+        transform=ax.transAxes,
+        ha="left",
+        va="top",
+        fontsize=8,
+        color=PAPER_COLOUR,
+        bbox=dict(fc="white", ec=PAPER_COLOUR, alpha=0.85, pad=0.3, lw=0.6),
+    )
 
 
 def _first_mode_growth(ax, ds, legend: bool):

@@ -57,16 +57,21 @@ def grouped(x, k, reduce):
         return reduce(x.reshape(-1, k), axis=1)
 
 
-def scaled_ylabel(ax, text: str, unit: str, fontsize=8):
-    """Y label with the unit and the power of ten of the tick labels in it ("[10^-4 mm]"), instead of an
-    offset text that a legend above the panel would cover."""
-    top = max(abs(v) for v in ax.get_ylim())
+def power_of_ten(axes) -> int:
+    """The power of ten of the largest |y limit| over ``axes``: the one scale of a quantity drawn in several
+    panels (0 within 1e-2..1e2, where plain numbers read best)."""
+    top = max((abs(v) for ax in axes for v in ax.get_ylim()), default=0.0)
     e = int(np.floor(np.log10(top))) if top > 0 else 0
-    if -2 <= e <= 2:
-        ax.set_ylabel(f"{text} [{unit}]", fontsize=fontsize)
-        return
+    return 0 if -2 <= e <= 2 else e
+
+
+def scaled_ylabel(ax, text: str, unit: str, fontsize=8, exponent: int | None = None):
+    """Y label with the unit and the power of ten of the tick labels in it ("[10^-4 mm]"), instead of an
+    offset text that a legend above the panel would cover. ``exponent``: the power of ten to use (the
+    same for every panel of one quantity: ``power_of_ten`` over them); default this panel's own."""
+    e = power_of_ten([ax]) if exponent is None else int(exponent)
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v / 10.0**e:g}"))
-    ax.set_ylabel(f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
+    ax.set_ylabel(f"{text} [{unit}]" if e == 0 else f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
 
 
 def _band(ax, ds, var, label, style, t_max=None):
@@ -261,8 +266,10 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_n.set_xlabel(f"time [s] (last 5 ms of the {t_cmp:.3g} s window)")
     ax_n.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=3, frameon=False)
     ref = continuum if continuum is not None else beam
+    windows = []
     for col, (t0, t1) in enumerate(((0.0, 0.005), w_end)):
         ax = fig.add_subplot(gs[6, col])
+        windows.append(ax)
         for name, ds in models.items():
             m = _between(ds, t0, t1)
             if m.sum() > 1:
@@ -281,8 +288,9 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
         shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
         shade = "continuum" if continuum is not None else "beam"
         ax.set_xlabel(f"time [s]: {t0:.4g}-{t1:.4g} s, every sample (shading: {shade} state)")
-        scaled_ylabel(ax, "horizontal u", "mm", fontsize=10)
         ax.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=2, frameon=False)
+    for ax in windows:  # one unit for the two windows of the same quantity
+        scaled_ylabel(ax, "horizontal u", "mm", fontsize=10, exponent=power_of_ten(windows))
     shown = (
         f"the first {t_cmp:.3g} s, the model-comparison window (the beam ran {t_run:.3g} s)"
         if continuum is not None

@@ -1,0 +1,50 @@
+# CalculiX (ccx) as a peer of the continuum strip, and the strip's input decks as a product (issue 28).
+# Needs the `ccx` executable (Debian package calculix-ccx); without it the peer job fails naming ccx.
+
+#: what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of the FE config
+FE_PEER_CONFIG = {"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}}
+FE_PEER_DECKS = ["peer_free", "peer_propped"]
+
+
+rule fe_peer_calculix:
+    """Modes and self-weight states of the strip: closed form, continuum and CalculiX (C3D8I), with the
+    relative differences and whether they agree; the two linear decks ccx ran."""
+    output:
+        dataset="results/fe/peer_calculix.nc",
+        table="results/fe/peer_calculix.csv",
+        decks=expand("results/fe/inp/{deck}.inp", deck=FE_PEER_DECKS),
+    log:
+        "results/logs/fe_peer_calculix/peer.log",
+    benchmark:
+        "results/benchmarks/fe_peer_calculix/peer.tsv"
+    conda:
+        CONDA_ENV
+    params:
+        config=FE_PEER_CONFIG,
+    script:
+        "../scripts/fe_peer_calculix.py"
+
+
+rule fe_decks:
+    """Every Section 9-12 scene (default FE reading) as an ABAQUS/Explicit deck with the Fig. 17 friction
+    table as its mu(slip rate) data."""
+    input:
+        friction=FE_FRICTION,
+    output:
+        decks=expand("results/fe/inp/{scene}.inp", scene=FE_SCENES),
+    log:
+        "results/logs/fe_decks/decks.log",
+    benchmark:
+        "results/benchmarks/fe_decks/decks.tsv"
+    conda:
+        CONDA_ENV
+    params:
+        config=FE_CONFIG,
+    script:
+        "../scripts/fe_decks.py"
+
+
+ALL_TARGETS.extend(
+    ["results/fe/peer_calculix.nc", "results/fe/peer_calculix.csv"]
+    + expand("results/fe/inp/{deck}.inp", deck=FE_PEER_DECKS + FE_SCENES)
+)
