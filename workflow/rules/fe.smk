@@ -121,7 +121,7 @@ rule fe_readings_claims:
         data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
         + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
         + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
-        + ["results/fe/continuum_increments.nc"]
+        + ["results/fe/continuum_increments.nc", "results/fe/peer_calculix.nc"]
         + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS],
     output:
         "results/fe/readings_claims.csv",
