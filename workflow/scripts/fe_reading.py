@@ -11,6 +11,7 @@ from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
+    PERTURBED_FIELDS,
     cross_scene_dataset,
     effective_fe_config,
     scene_dataset,
@@ -29,7 +30,13 @@ built, mappings = {}, {}
 for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
     mappings[name] = scene_mapping(cfg, name, reading)
-    ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mappings[name], spec)
+    ds = ensemble_dataset(
+        lambda mp, n=name: scene_dataset(mp, friction, n),
+        mappings[name],
+        spec,
+        run_id=path,
+        fields=PERTURBED_FIELDS,
+    )
     ds = apply_step_halving(ds, step_member_values(ds))
     ds.attrs["fe_reading"] = reading
     print(

@@ -34,6 +34,35 @@ from ..fe.scene import SceneParams, build_scene
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 from ..fe.step_halving import HALF_STEP
 
+#: The fields of an FE mapping (a scene's, or the ``fe`` section a study reads) that the perturbation
+#: ensemble perturbs (stickslip.ensemble.declared): the physical parameters and the numerical settings.
+#: Never the windows and samplings of the output (t_end, output_dt, bin_width, windows, e-fold budgets) nor
+#: counts (element numbers, meshes).
+PERTURBED_FIELDS = (
+    "beam.length",
+    "beam.thickness",
+    "beam.width",
+    "beam.youngs_modulus_gpa",
+    "beam.density_kg_m3",
+    "beam.poisson_ratio",
+    "beam.gravity_m_s2",
+    "disc.diameter",
+    "disc.speed_rev_per_min",
+    "disc.surface_speed_mm_s",
+    "contact.angle_deg",
+    "contact.penalty_stiffness",
+    "solver.safety_factor",
+    "solver.mass_damping",
+    "solver.stiffness_damping",
+    "sweeps.*.values",
+    "stability.angles",
+    "stability.slopes",
+    "stability.crosscheck",
+    "convergence.safety_factors",
+    "increments.safety_factors",
+    "increments.betas",
+)
+
 INTERPRETATION = (
     "2-D frame elements (axial bar + Euler-Bernoulli bending stiffness, Rayleigh rotary inertia rho*I), "
     "clamped "
