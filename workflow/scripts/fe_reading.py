@@ -13,13 +13,12 @@ from stickslip.studies.fe import (
     INTERPRETATION,
     PERTURBED_FIELDS,
     cross_scene_dataset,
-    effective_fe_config,
     scene_dataset,
     scene_mapping,
 )
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
+cfg = snakemake.params.config  # noqa: F821  (this reading's scenes, resolved: studies.fe.job_config)
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
@@ -29,7 +28,7 @@ spec = replace(EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas
 built, mappings = {}, {}
 for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
-    mappings[name] = scene_mapping(cfg, name, reading)
+    mappings[name] = scene_mapping(cfg, name)
     ds = ensemble_dataset(
         lambda mp, n=name: scene_dataset(mp, friction, n),
         mappings[name],

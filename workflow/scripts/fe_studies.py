@@ -19,7 +19,7 @@ from stickslip.studies.fe import (
 from stickslip.studies.fe_comparison import increments_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config["fe"]  # noqa: F821
+cfg = snakemake.params.config  # noqa: F821  (the studies' sections and base scenes: studies.fe.job_config)
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (claimed: sweeps, stability, increments)

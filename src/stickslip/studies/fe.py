@@ -177,6 +177,28 @@ def effective_fe_config(config: Mapping) -> dict:
     return fe
 
 
+def canonical(node):
+    """A nested mapping with its keys sorted at every level (lists keep their order)."""
+    if isinstance(node, Mapping):
+        return {k: canonical(node[k]) for k in sorted(node, key=str)}
+    if isinstance(node, (list, tuple)):
+        return [canonical(v) for v in node]
+    return node
+
+
+def job_config(
+    fe_cfg: Mapping, *, scenes=(), reading: str | None = None, sections=()
+) -> dict:
+    """The part of the (effective) ``fe`` config one job reads, resolved: every named scene merged over the
+    defaults and the reading (``scene_mapping``; None: the first reading), plus the named sections as they
+    are; keys sorted at every level. A rule passes this as its params, so a value re-runs exactly the jobs
+    that read it, and a reordering of keys in a file re-runs nothing. ``scene_mapping(job, name)`` returns
+    the resolved scene again (the result has no defaults or readings left to merge)."""
+    out = {"scenes": {name: scene_mapping(fe_cfg, name, reading) for name in scenes}}
+    out.update({key: fe_cfg[key] for key in sections})
+    return canonical(out)
+
+
 def comparison_mapping(fe_cfg: Mapping, name: str) -> dict:
     """Scene mapping (default reading) with the model comparison's duration."""
     return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"t_end": fe_cfg["comparison"]["t_end"]}})
