@@ -12,12 +12,11 @@ from stickslip.pipeline.config import load_config  # noqa: E402
 # The config files are read by the project's loader, not Snakemake's `configfile:`: data only (Snakemake's
 # would run a file marked `__use_yte__` as a template), duplicate keys and syntax errors named with file and
 # line. `--configfile` overrides are read again the same way; `--config key=value` applies last.
-update_config(
-    config,
-    load_config(
-        sorted(Path(workflow.basedir, "config").glob("*.yaml")) + list(workflow.overwrite_configfiles or [])
-    ),
-)
+#: The config files, in the order they are merged (a config error names the file and line of its key).
+CONFIG_FILES = [
+    str(p) for p in sorted(Path(workflow.basedir, "config").glob("*.yaml"))
+] + [str(p) for p in workflow.overwrite_configfiles or []]
+update_config(config, load_config(CONFIG_FILES))
 update_config(config, dict(workflow.config_settings.config or {}))
 
 

@@ -19,7 +19,7 @@ PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
-validate_config(config, producible=PRODUCIBLE)
+validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")
