@@ -416,6 +416,10 @@ BAD_CLAIMS.update(
             [_with(VALUE_ROW, tolerance={"rel": -0.1, "reason": "r"})],
             ["zz_value", "tolerance.rel"],
         ),
+        "claims_tolerance_above_100_percent": (
+            [_with(VALUE_ROW, tolerance={"rel": 1.0e9, "reason": "r"})],
+            ["zz_value", "tolerance.rel"],
+        ),
         "claims_tolerance_without_reason": (
             [_with(VALUE_ROW, tolerance={"rel": 0.1})],
             ["zz_value", "tolerance.reason"],
