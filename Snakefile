@@ -1,11 +1,18 @@
 # Stick-slip replication pipeline: every figure of the paper is a rule.
 # Configuration: every config/*.yaml (one file per concern); `--configfile config/test/*.yaml` shrinks it.
+import os
 import sys
 from pathlib import Path
 
 from snakemake.utils import update_config
 
 sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also when not pip-installed
+# ... and every job imports this project's own package first, whatever venv runs it: in a copied or moved
+# project the venv's editable install still points at the original's src/ (the Makefile rebuilds such a
+# venv; a Snakemake started from another project's venv is covered here).
+os.environ["PYTHONPATH"] = os.pathsep.join(
+    [str(Path(workflow.basedir, "src").resolve())] + [p for p in [os.environ.get("PYTHONPATH")] if p]
+)
 
 from stickslip.pipeline.config import load_config  # noqa: E402
 
