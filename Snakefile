@@ -10,8 +10,11 @@ sys.path.insert(0, str(Path(workflow.basedir) / "src"))  # the package, also whe
 # ... and every job imports this project's own package first, whatever venv runs it: in a copied or moved
 # project the venv's editable install still points at the original's src/ (the Makefile rebuilds such a
 # venv; a Snakemake started from another project's venv is covered here).
-os.environ["PYTHONPATH"] = os.pathsep.join(
-    [str(Path(workflow.basedir, "src").resolve())] + [p for p in [os.environ.get("PYTHONPATH")] if p]
+# (set, not required: hence no `envvars:` directive)
+os.environ.update(
+    PYTHONPATH=os.pathsep.join(
+        [str(Path(workflow.basedir, "src").resolve())] + [p for p in [os.environ.get("PYTHONPATH")] if p]
+    )
 )
 
 from stickslip.pipeline.config import load_config  # noqa: E402
@@ -20,9 +23,9 @@ from stickslip.pipeline.config import load_config  # noqa: E402
 # would run a file marked `__use_yte__` as a template), duplicate keys and syntax errors named with file and
 # line. `--configfile` overrides are read again the same way; `--config key=value` applies last.
 #: The config files, in the order they are merged (a config error names the file and line of its key).
-CONFIG_FILES = [
-    str(p) for p in sorted(Path(workflow.basedir, "config").glob("*.yaml"))
-] + [str(p) for p in workflow.overwrite_configfiles or []]
+CONFIG_FILES = [str(p) for p in sorted(Path(workflow.basedir, "config").glob("*.yaml"))] + [
+    str(p) for p in workflow.overwrite_configfiles or []
+]
 update_config(config, load_config(CONFIG_FILES))
 update_config(config, dict(workflow.config_settings.config or {}))
 
