@@ -19,6 +19,17 @@ COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --gene
 
 .PHONY: setup figures test lint bench report clean lock slurm-test repair
 
+# A venv names the folder that built it (its scripts' #! lines, the editable install's path to src/): in a
+# copied or moved project it would run the original's code, or nothing once that is gone. The stamp records
+# the folder it was built for, and a venv built for another folder is built again here.
+VENV_BUILT_FOR := $(shell cat $(STAMP) 2>/dev/null)
+ifneq ($(VENV_BUILT_FOR),$(CURDIR))
+$(STAMP): venv-elsewhere
+endif
+.PHONY: venv-elsewhere
+venv-elsewhere:
+	@echo "$(VENV) was built for '$(VENV_BUILT_FOR)', not $(CURDIR): rebuilding it"
+
 # A fresh venv each time the lock changes, so what is installed is the lock and nothing else. Bytecode is
 # compiled at install (not for the packages' own test suites): every job is a new interpreter, and where
 # PYTHONDONTWRITEBYTECODE is set (as on the CI machine) each one would otherwise recompile numpy, scipy,
@@ -39,7 +50,7 @@ $(STAMP): pyproject.toml $(LOCK) $(UV_LOCK) Makefile
 	@# Bytecode for everything but the packages' own test suites (a third of the files, never imported here).
 	$(BIN)/python -m compileall -q -j0 -x '/tests?/' src $$($(BIN)/python -c \
 	    "import sysconfig as s; print(*{s.get_path('purelib'), s.get_path('platlib')})") >/dev/null
-	touch $(STAMP)
+	echo '$(CURDIR)' > $(STAMP)
 
 # Re-resolve every dependency to its newest allowed version (then review the diff and rebuild).
 lock: $(STAMP)

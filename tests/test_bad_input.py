@@ -9,6 +9,7 @@ input and the last lines of its message.
 """
 
 import shutil
+import time
 
 import pytest
 import yaml
@@ -247,7 +248,45 @@ CASES = {
         {"methods_study": {"failure_map": {"scene": "no_scene"}}},
         ["methods_study.failure_map", "no_scene"],
     ),
+    # issue 29: inputs that passed before
+    "fe_sweep_parameter_typo": (
+        {"fe": {"sweeps": {"angle_sweep": {"parameter": "contact.angel_deg"}}}},
+        ["fe.sweeps.angle_sweep.parameter", "angel_deg", "angle_deg"],
+    ),
+    "fe_sweep_parameter_not_a_number": (
+        {"fe": {"sweeps": {"angle_sweep": {"parameter": "contact.method"}}}},
+        ["fe.sweeps.angle_sweep.parameter", "method"],
+    ),
+    "fe_output_dt_stores_every_step": (
+        {"fe": {"defaults": {"solver": {"output_dt": 1.0e-15}}}},
+        ["fe.defaults.solver.output_dt", "samples"],
+    ),
+    "fe_scene_output_dt_stores_every_step": (
+        {"fe": {"scenes": {"section9_kinematic_0p5mm_s": {"solver": {"output_dt": 1.0e-12}}}}},
+        ["fe.scenes.section9_kinematic_0p5mm_s.solver.output_dt", "samples"],
+    ),
+    "fe_sweep_window_shorter_than_output_dt": (
+        {"fe": {"sweeps": {"angle_sweep": {"t_end": 1.0e-6}}}},
+        ["fe.sweeps.angle_sweep.t_end", "output_dt"],
+    ),
+    "fe_convergence_window_shorter_than_output_dt": (
+        {"fe": {"convergence": {"t_end": 1.0e-6}}},
+        ["fe.convergence.t_end"],
+    ),
+    "fe_comparison_window_shorter_than_output_dt": (
+        {"fe": {"comparison": {"t_end": 1.0e-6}}},
+        ["fe.comparison.t_end"],
+    ),
+    "fe_stability_slope_huge": ({"fe": {"stability": {"slopes": [-1.0e300]}}}, ["fe.stability.slopes[0]"]),
+    "fe_crosscheck_slope_huge": (
+        {"fe": {"stability": {"crosscheck": [[0.0, 1.0e3]]}}},
+        ["fe.stability.crosscheck", "crosscheck[0][1]"],
+    ),
 }
+
+ALIAS_BOMB = "bomb:\n  a: &a [x, x, x, x, x, x, x, x, x, x]\n" + "".join(
+    f"  {n}: &{n} [{', '.join([f'*{p}'] * 10)}]\n" for p, n in zip("abcdefgh", "bcdefghi")
+)
 
 #: Whole files that cannot be read as data: (file under config/, text, words the message must contain).
 BAD_FILES = {
@@ -274,6 +313,13 @@ BAD_FILES = {
     ),
     "a_list_instead_of_sections": ("zz_extra.yaml", "- onedof\n- fe\n", ["zz_extra.yaml", "mapping"]),
     "tab_indented": ("zz_extra.yaml", "ensemble:\n\tseeds: [1]\n", ["zz_extra.yaml:2"]),
+    # a "billion laughs": nine lines of aliases expanding to 10^9 nodes (issue 29: ran to MemoryError)
+    "alias_bomb": ("zz_extra.yaml", ALIAS_BOMB, ["zz_extra.yaml:3", "aliases", "expand"]),
+    "alias_bomb_in_a_real_key": (
+        "zz_extra.yaml",
+        ALIAS_BOMB.replace("bomb:", "ensemble:\n  seeds:\n   - x:"),
+        ["zz_extra.yaml:", "aliases"],
+    ),
 }
 
 BAD_CLAIMS = {
@@ -371,6 +417,10 @@ BAD_CLAIMS.update(
         ),
         "claims_negative_tolerance": (
             [_with(VALUE_ROW, tolerance={"rel": -0.1, "reason": "r"})],
+            ["zz_value", "tolerance.rel"],
+        ),
+        "claims_tolerance_above_100_percent": (
+            [_with(VALUE_ROW, tolerance={"rel": 1.0e9, "reason": "r"})],
             ["zz_value", "tolerance.rel"],
         ),
         "claims_tolerance_without_reason": (
@@ -504,6 +554,45 @@ def test_broken_config_is_rejected_naming_its_key(case):
         assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
 
 
+def test_an_alias_bomb_is_refused_quickly_with_a_short_message(tmp_path):
+    config_dir = tmp_path / "config"
+    shutil.copytree(ROOT / "config", config_dir)
+    (config_dir / "zz_extra.yaml").write_text(ALIAS_BOMB)
+    start = time.process_time()
+    with pytest.raises(ConfigError) as info:
+        load_config(sorted(config_dir.glob("*.yaml")))
+    # measured: ~0.1 s of CPU on this machine; the expansion itself takes ~60 s and gigabytes
+    assert time.process_time() - start < 5.0
+    assert len(str(info.value)) < 1000, str(info.value)
+
+
+def test_a_huge_value_in_a_real_key_is_named_in_a_short_message():
+    override = {"onedof": {"defaults": {"t_end": ["x" * 100] * 10_000}}}
+    with pytest.raises(ConfigError) as info:
+        validate_config(merge(base_config(), override), producible=PRODUCIBLE)
+    assert "onedof.defaults.t_end" in str(info.value) and len(str(info.value)) < 1000, str(info.value)[:2000]
+
+
+def _line_of(path, text):
+    return next(i for i, line in enumerate(path.read_text().splitlines(), 1) if text in line)
+
+
+def test_a_config_error_names_the_file_and_line_of_its_key(tmp_path):
+    files = sorted((ROOT / "config").glob("*.yaml"))
+    config = load_config(files)
+    config["onedof"]["defaults"]["params"]["mass"] = -1.0
+    with pytest.raises(ConfigError) as info:
+        validate_config(config, producible=PRODUCIBLE, sources=files)
+    mass_line = _line_of(ROOT / "config" / "config.yaml", "mass:")
+    assert str(info.value).startswith(f"{ROOT / 'config' / 'config.yaml'}:{mass_line}: onedof.defaults"), info
+    # a key an override file sets is located in that file (the later file wins)
+    override = tmp_path / "override.yaml"
+    override.write_text("# a comment\nfe:\n  sweeps:\n    angle_sweep:\n      parameter: contact.angel_deg\n")
+    with pytest.raises(ConfigError) as info:
+        validate_config(load_config([*files, override]), producible=PRODUCIBLE, sources=[*files, override])
+    assert str(info.value).startswith(f"{override}:5: fe.sweeps.angle_sweep.parameter"), info
+
+
 def test_the_repository_config_passes():
     validate_config(base_config(), producible=PRODUCIBLE)
 
@@ -632,6 +721,7 @@ def test_broken_config_stops_the_pipeline_before_any_job(case, pristine, tmp_pat
     assert code != 0, text[-3000:]
     for word in words:
         assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
+    assert f"{path}:" in text, f"{case}: message does not name the file and line of the key:\n{text[-3000:]}"
     assert not (work / "results").exists(), (
         f"{case}: something was written: {list((work / 'results').rglob('*'))}"
     )

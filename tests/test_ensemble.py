@@ -10,6 +10,8 @@ from hypothesis import strategies as st
 from stickslip.ensemble import (
     MEMBER_DIM,
     EnsembleSpec,
+    declared,
+    draw_sign,
     ensemble_dataset,
     members,
     perturbed_mapping,
@@ -18,22 +20,95 @@ from stickslip.ensemble import (
 from stickslip.io.claims import evaluate
 
 MAPPING = {"params": {"mass": 1.0, "x0": 0.0, "n": 3, "flag": True}, "solver": {"safety_factor": 0.9}}
+FIELDS = ("params.mass", "params.x0", "solver.safety_factor")
+RUN = {"run_id": "results/x.nc", "fields": FIELDS}
 
 
-def test_perturbation_moves_every_float_by_the_relative_size_and_leaves_counts_alone():
-    out = perturbed_mapping(MAPPING, 1e-12, seed=1)
+def test_perturbation_moves_every_declared_field_by_the_relative_size_and_leaves_the_rest_alone():
+    out = perturbed_mapping(MAPPING, 1e-12, seed=1, **RUN)
     assert abs(out["params"]["mass"] - 1.0) == pytest.approx(1e-12, rel=1e-3)
+    assert abs(out["solver"]["safety_factor"] - 0.9) == pytest.approx(0.9e-12, rel=1e-3)
     assert out["params"]["x0"] == 0.0 and out["params"]["n"] == 3 and out["params"]["flag"] is True
-    assert perturbed_mapping(MAPPING, 1e-12, seed=1) == out  # reproducible
+    assert perturbed_mapping(MAPPING, 1e-12, seed=1, **RUN) == out  # reproducible
     assert MAPPING["params"]["mass"] == 1.0  # the input is not touched
+    undeclared = perturbed_mapping(MAPPING, 1e-12, seed=1, run_id="results/x.nc", fields=("params.mass",))
+    assert undeclared["solver"]["safety_factor"] == 0.9
+
+
+# A small FE-like config: the physical fields declared, the output window and the count not.
+SMALL = {
+    "defaults": {
+        "beam": {"length": 100.0, "thickness": 1.0, "n_elements": 20},
+        "solver": {"t_end": 0.1, "output_dt": 2.5e-6, "safety_factor": 0.9},
+    },
+    "readings": {"a": {"sigma": 0.5}, "b": {"sigma": 0.3, "mass": 1.0}},
+    "sweeps": {"s": {"values": [0.0, 10.0, 20.0]}},
+}
+SMALL_FIELDS = ("beam.length", "beam.thickness", "solver.safety_factor", "readings.*.*", "sweeps.*.values")
+
+
+def _leaves(node, path=""):
+    if isinstance(node, dict):
+        out = {}
+        for k, v in node.items():
+            out.update(_leaves(v, f"{path}.{k}" if path else k))
+        return out
+    if isinstance(node, list):
+        return {f"{path}[{i}]": v for i, v in enumerate(node)}
+    return {path: node}
+
+
+def _draw(cfg, seed):
+    return _leaves(perturbed_mapping(cfg, 1e-12, seed, run_id="results/fe/s.nc", fields=SMALL_FIELDS))
+
+
+def _reversed(node):
+    return {k: _reversed(v) for k, v in reversed(node.items())} if isinstance(node, dict) else node
+
+
+@pytest.mark.parametrize("seed", range(1, 41))
+def test_each_draw_depends_on_the_field_path_only_not_on_order_other_keys_or_int_spelling(seed):
+    base = _draw(SMALL, seed)
+    # every key of every level in the opposite order: the same value at every path
+    assert _draw(_reversed(SMALL), seed) == base
+    # an unrelated reading (with floats) added first: every existing path keeps its value
+    added = {**SMALL, "readings": {"new": {"sigma": 0.7, "plateau_speed": 0.6}, **SMALL["readings"]}}
+    drawn = _draw(added, seed)
+    assert {k: drawn[k] for k in base} == base
+    # `mass: 1` for `mass: 1.0` draws the same float
+    as_int = {**SMALL, "readings": {**SMALL["readings"], "b": {"sigma": 0.3, "mass": 1}}}
+    assert _draw(as_int, seed) == base
+    assert isinstance(base["readings.b.mass"], float) and base["readings.b.mass"] != 1.0
+    # windows, samplings and counts are never perturbed
+    for key in ("defaults.solver.t_end", "defaults.solver.output_dt", "defaults.beam.n_elements"):
+        assert base[key] == _leaves(SMALL)[key]
+
+
+def test_signs_are_balanced_and_differ_between_seeds_runs_and_fields():
+    fields = [f"f{i}" for i in range(400)]
+    signs = np.array([draw_sign(1, "results/a.nc", f) for f in fields])
+    assert set(np.unique(signs)) == {-1.0, 1.0}
+    # 400 fair draws: the fraction of + lies within 0.5 +- 0.1 (5 standard deviations)
+    assert abs(np.mean(signs > 0) - 0.5) < 0.1
+    other_seed = np.array([draw_sign(2, "results/a.nc", f) for f in fields])
+    other_run = np.array([draw_sign(1, "results/b.nc", f) for f in fields])
+    assert 0.3 < np.mean(signs == other_seed) < 0.7 and 0.3 < np.mean(signs == other_run) < 0.7
+
+
+def test_declared_fields_match_a_path_or_its_tail_with_list_positions_dropped():
+    assert declared("beam.length", ("beam.length",))
+    assert declared("defaults.beam.length", ("beam.length",))
+    assert declared("sweeps.angle.values[3]", ("sweeps.*.values",))
+    assert not declared("defaults.solver.t_end", ("solver.safety_factor", "beam.length"))
+    assert not declared("xbeam.length", ("beam.length",))
 
 
 def test_step_member_only_where_a_step_setting_exists():
     assert step_mapping(MAPPING, 0.8, ("safety_factor",))["solver"]["safety_factor"] == pytest.approx(0.72)
     assert step_mapping({"params": {"mass": 1.0}}, 0.8, ("safety_factor",)) is None
-    labels = [label for label, _, _ in members({"params": {"mass": 1.0}}, EnsembleSpec())]
+    labels = [label for label, _, _ in members({"params": {"mass": 1.0}}, EnsembleSpec(), **RUN)]
     assert labels == ["base", "perturbed-1", "perturbed-2", "blas-threads-1"]
-    assert "step" in [label for label, _, _ in members(MAPPING, EnsembleSpec().without_blas())]
+    assert "step" in [label for label, _, _ in members(MAPPING, EnsembleSpec().without_blas(), **RUN)]
 
 
 @pytest.mark.parametrize(
@@ -56,7 +131,7 @@ def test_ensemble_dataset_stacks_every_metric_per_member_base_first():
             {"amplitude": ((), 2.0 * m), "series": ("time", np.arange(3.0) * m), "curve": ("k", [m, 2 * m])}
         )
 
-    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None))
+    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None), **RUN)
     assert list(ds[f"{MEMBER_DIM}_label"].values) == ["base", "perturbed-1", "perturbed-2", "step"]
     assert list(ds[MEMBER_DIM].values) == [0, 1, 2, 3]
     assert ds.amplitude_ensemble.dims == (MEMBER_DIM,) and ds.curve_ensemble.dims == (MEMBER_DIM, "k")
@@ -69,7 +144,7 @@ def test_a_member_that_fails_to_measure_makes_the_spread_infinite():
     def build(cfg):
         return xr.Dataset({"a": ((), 1.0 if cfg["params"]["mass"] == 1.0 else np.nan)})
 
-    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None))
+    ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None), **RUN)
     row = _value_row(reported=1.5, tol=0.1)
     res = evaluate(row, "", lambda path: ds)
     assert res.spread == np.inf and res.status == "indistinguishable"

@@ -90,3 +90,46 @@ def test_text_dimensions_are_written_as_index_plus_labels_and_read_back_labelled
     assert list(back.scene.values) == ["s1", "s2"] and "scene_label" not in back.coords
     assert float(back.value.sel(scene="s2", quantity="c")) == 5.0
     assert back.quantity.attrs == {"long_name": "quantity"}
+
+
+def _disk_with(free_bytes):
+    """A stand-in for shutil.disk_usage reporting ``free_bytes`` free."""
+    total = 1 << 40
+    return lambda path: netcdf.shutil._ntuple_diskusage(total, total - free_bytes, free_bytes)
+
+
+def _write(ds, path):
+    return netcdf.write_dataset(ds, path, scene={}, interpretation="test", method={})
+
+
+def test_a_full_disk_is_named_before_anything_is_written(tmp_path, monkeypatch):
+    ds = xr.Dataset({"x": ("time", np.arange(1000.0))})
+    monkeypatch.setattr(netcdf.shutil, "disk_usage", _disk_with(4096))
+    with pytest.raises(OSError, match="no space left on device") as info:
+        _write(ds, tmp_path / "a.nc")
+    assert isinstance(info.value, netcdf.DiskFullError) and info.value.errno == netcdf.errno.ENOSPC
+    assert "a.nc" in str(info.value) and list(tmp_path.iterdir()) == []
+
+
+def test_a_write_that_fails_on_a_disk_that_filled_up_is_named_and_leaves_nothing(tmp_path, monkeypatch):
+    """The netCDF library reports ENOSPC as 'NetCDF: HDF error': the free space decides what it was."""
+    ds = xr.Dataset({"x": ("time", np.arange(1000.0))})
+    calls = []
+
+    def filling(path):  # room before the write, none once it has started
+        calls.append(path)
+        return _disk_with(1 << 30 if len(calls) == 1 else 0)(path)
+
+    def hdf_error(self, *args, **kwargs):
+        raise RuntimeError("NetCDF: HDF error")
+
+    monkeypatch.setattr(netcdf.shutil, "disk_usage", filling)
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", hdf_error)
+    with pytest.raises(OSError, match="no space left on device"):
+        _write(ds, tmp_path / "a.nc")
+    assert list(tmp_path.iterdir()) == []
+    # the same library error with room to spare is not called a full disk
+    monkeypatch.setattr(netcdf.shutil, "disk_usage", _disk_with(1 << 30))
+    with pytest.raises(RuntimeError, match="HDF error"):
+        _write(ds, tmp_path / "a.nc")
+    assert list(tmp_path.iterdir()) == []

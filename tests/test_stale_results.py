@@ -61,3 +61,37 @@ def test_editing_the_ensemble_reruns_the_claimed_datasets(small_run, tmp_path):
     work, args = small_run
     jobs = jobs_to_run(work, *args, override(tmp_path, {"ensemble": {"seeds": [3, 4]}}))
     assert "simulate_onedof_fig02" in jobs and "onedof_sweeps" in jobs and "claims_table" in jobs, jobs
+
+
+FE_JOBS = ("fe_reading", "fe_studies", "fe_setup_fit", "fe_model_comparison")
+
+
+@pytest.mark.pipeline
+@pytest.mark.parametrize(
+    "edit,expected",
+    [
+        # read by the 4 control readings only (the first reading runs the scenes' own window)
+        ({"control_readings_t_end": 0.003}, {"fe_reading": 4}),
+        # read by no job of the pipeline
+        ({"reduced": {"safety_factor": 0.4}}, {}),
+        ({"sweeps": {"angle_sweep": {"t_end": 0.003}}}, {"fe_studies": 1}),
+        ({"stability": {"slopes": [-0.2, 0.0]}}, {"fe_studies": 1}),
+        ({"comparison": {"t_end": 0.003}}, {"fe_model_comparison": 1}),
+        # a scene no study starts from: every reading's job and the model comparison read it
+        (
+            {"scenes": {"section10_fixed_normal_15p2rpm": {"disc": {"speed_rev_per_min": 15.0}}}},
+            {"fe_reading": 5, "fe_model_comparison": 1},
+        ),
+        # the defaults: every FE job
+        (
+            {"defaults": {"solver": {"stiffness_damping": 4.0e-9}}},
+            {"fe_reading": 5, "fe_studies": 1, "fe_setup_fit": 2, "fe_model_comparison": 1},
+        ),
+    ],
+    ids=["control_readings_t_end", "reduced", "sweeps", "stability", "comparison", "scenes", "defaults"],
+)
+def test_an_fe_key_reruns_exactly_the_fe_jobs_that_read_it(small_run, tmp_path, edit, expected):
+    work, args = small_run
+    jobs = jobs_to_run(work, *args, override(tmp_path, {"fe": edit}))
+    assert {rule: n for rule, n in jobs.items() if rule in FE_JOBS} == expected, jobs
+    assert not [rule for rule in jobs if rule.startswith(("simulate_onedof", "onedof_sweeps", "critical"))]

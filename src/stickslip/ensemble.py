@@ -3,8 +3,11 @@
 A dataset is built by a pure function of its config mapping. The ensemble calls that function on the base
 mapping and on perturbed copies of it:
 
-* ``perturbed-<seed>``: every float of the mapping multiplied by (1 + s * relative), s = +-1 drawn from a
-  seeded generator (parameters, initial state, time windows, solver settings alike);
+* ``perturbed-<seed>``: every field the run declares physical or numerical (``fields``: parameters, initial
+  state, solver settings; never output windows, sample spacings or counts) multiplied by (1 + s * relative).
+  The sign s = +-1 of each field is a hash of (seed, run id, the field's path) alone (``draw_sign``): it does
+  not depend on the order of the keys, on any other key of the mapping, or on ``1`` being written for
+  ``1.0``, so such an edit leaves every other run's members as they were;
 * ``step``: the step-controlling settings named in ``step_keys`` (tolerances, fixed steps, safety factors)
   multiplied by ``step_factor`` - a second time step for the time-stepping methods; left out when the
   mapping has none of them (the exact solver has no step), so it never duplicates the base run;
@@ -20,8 +23,10 @@ table takes its ``spread`` from these: a claim whose margin to its threshold is 
 from __future__ import annotations
 
 import copy
-from collections.abc import Callable, Mapping
+import hashlib
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, replace
+from fnmatch import fnmatchcase
 
 import numpy as np
 import xarray as xr
@@ -66,35 +71,73 @@ class EnsembleSpec:
         return cls(**data)
 
 
-def _scale_floats(node, factor: Callable[[], float], keys: tuple[str, ...] | None, under_key=None):
-    """Copy of a nested mapping with floats multiplied by ``factor()``; only keys in ``keys`` if given.
-    Integers and booleans are counts and switches, never perturbed."""
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def draw_sign(seed: int, run_id: str, field: str) -> float:
+    """The sign (+1.0 or -1.0) of one field's perturbation: the first bit of sha256 over (seed, run id,
+    field path) only. Independent of everything else in the mapping and of the machine."""
+    digest = hashlib.sha256(f"{int(seed)}\x1f{run_id}\x1f{field}".encode()).digest()
+    return 1.0 if digest[0] & 1 else -1.0
+
+
+def _field_name(path: str) -> str:
+    """The declared name of a path: list positions dropped (``values[2]`` is a ``values`` field)."""
+    return ".".join(part.split("[", 1)[0] for part in path.split("."))
+
+
+def declared(path: str, fields: Collection[str]) -> bool:
+    """Whether the value at ``path`` (dotted keys, ``[i]`` for list positions) is a declared field: a
+    pattern of ``fields`` (``fnmatch``, ``*`` within or across keys) matches the path or its tail after a
+    dot, so ``beam.length`` declares ``beam.length`` and ``defaults.beam.length`` alike."""
+    name = _field_name(path)
+    return any(fnmatchcase(name, p) or fnmatchcase(name, "*." + p) for p in fields)
+
+
+def _map_numbers(node, fn: Callable[[str, str, float], object], path: str = "", key: str = ""):
+    """Copy of a nested mapping with every number (not a bool) at ``path`` replaced by ``fn(path, key,
+    value)``; ``key`` is the mapping key the number (or its list) sits under."""
     if isinstance(node, Mapping):
-        return {k: _scale_floats(v, factor, keys, k) for k, v in node.items()}
-    if isinstance(node, list):
-        return [_scale_floats(v, factor, keys, under_key) for v in node]
-    if isinstance(node, float) and not isinstance(node, bool):
-        if keys is None or under_key in keys:
-            return node * factor()
+        return {k: _map_numbers(v, fn, f"{path}.{k}" if path else str(k), str(k)) for k, v in node.items()}
+    if isinstance(node, (list, tuple)):
+        return [_map_numbers(v, fn, f"{path}[{i}]", key) for i, v in enumerate(node)]
+    if _is_number(node):
+        return fn(path, key, node)
     return node
 
 
-def perturbed_mapping(mapping: Mapping, relative: float, seed: int) -> dict:
-    """Every float times (1 +- relative), the sign drawn per value from ``seed`` (reproducible)."""
-    rng = np.random.default_rng(seed)
-    return _scale_floats(copy.deepcopy(dict(mapping)), lambda: 1.0 + relative * rng.choice((-1.0, 1.0)), None)
+def perturbed_mapping(
+    mapping: Mapping, relative: float, seed: int, *, run_id: str, fields: Collection[str]
+) -> dict:
+    """Every declared field times (1 +- relative), the sign of each drawn by ``draw_sign(seed, run_id, its
+    path)``. A declared field written as an integer is perturbed as the float it stands for."""
+
+    def scale(path, _key, value):
+        if not declared(path, fields):
+            return value
+        return float(value) * (1.0 + relative * draw_sign(seed, run_id, path))
+
+    return _map_numbers(copy.deepcopy(dict(mapping)), scale)
 
 
 def step_mapping(mapping: Mapping, factor: float, keys: tuple[str, ...]) -> dict | None:
     """The mapping with its step/tolerance settings times ``factor``; None when it has none."""
-    scaled = _scale_floats(copy.deepcopy(dict(mapping)), lambda: factor, keys)
+    scaled = _map_numbers(
+        copy.deepcopy(dict(mapping)), lambda _p, key, v: float(v) * factor if key in keys else v
+    )
     return None if scaled == dict(mapping) else scaled
 
 
-def members(mapping: Mapping, spec: EnsembleSpec) -> list[tuple[str, dict, int | None]]:
+def members(
+    mapping: Mapping, spec: EnsembleSpec, *, run_id: str, fields: Collection[str]
+) -> list[tuple[str, dict, int | None]]:
     """(label, mapping, BLAS thread limit) of every member, the base run first."""
     out = [("base", dict(mapping), None)]
-    out += [(f"perturbed-{s}", perturbed_mapping(mapping, spec.relative, s), None) for s in spec.seeds]
+    out += [
+        (f"perturbed-{s}", perturbed_mapping(mapping, spec.relative, s, run_id=run_id, fields=fields), None)
+        for s in spec.seeds
+    ]
     stepped = step_mapping(mapping, spec.step_factor, spec.step_keys)
     if stepped is not None:
         out.append(("step", stepped, None))
@@ -171,16 +214,25 @@ def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:
 
 
 def ensemble_dataset(
-    build: Callable[[dict], xr.Dataset], mapping: Mapping, spec: EnsembleSpec | None
+    build: Callable[[dict], xr.Dataset],
+    mapping: Mapping,
+    spec: EnsembleSpec | None,
+    *,
+    run_id: str,
+    fields: Collection[str],
 ) -> xr.Dataset:
-    """``build(mapping)`` with the ensemble's member values attached (see the module docstring)."""
+    """``build(mapping)`` with the ensemble's member values attached (see the module docstring).
+
+    ``run_id`` names the run (its dataset path) and ``fields`` declares which fields of ``mapping`` are
+    physical or numerical (patterns, see ``declared``): together with the seed they decide every sign."""
     if spec is None:
         return build(dict(mapping))
-    runs = members(mapping, spec)
+    runs = members(mapping, spec, run_id=run_id, fields=fields)
     datasets = [_run(build, m, threads) for _, m, threads in runs]
     ds = stack_members(datasets, [label for label, _, _ in runs])
     ds.attrs["ensemble"] = (
-        f"{len(runs)} members: base, every float x (1 +- {spec.relative:g}) for seeds {list(spec.seeds)}, "
+        f"{len(runs)} members: base, every declared physical or numerical field x (1 +- {spec.relative:g}), "
+        f"signs hashed from (seed, {run_id!r}, field path) for seeds {list(spec.seeds)}, "
         f"step settings {list(spec.step_keys)} x {spec.step_factor:g} where present, "
         f"BLAS limited to {spec.blas_threads} thread(s)"
     )

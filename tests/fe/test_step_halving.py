@@ -12,7 +12,7 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.explicit import contact_omega, stable_time_step
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import ABS_FLOOR, REL_TOL, apply_step_halving, converged
-from stickslip.studies.fe import _scene_of, sweep_dataset, sweep_half_step
+from stickslip.studies.fe import PERTURBED_FIELDS, _scene_of, sweep_dataset, sweep_half_step
 
 FIG17 = FrictionTable.paper_fig17()
 #: the metrics the Section 11 penalty-sweep claims read
@@ -89,7 +89,13 @@ def test_penalty_sweep_members_pass_step_halving_or_are_excluded():
     with open("config/fe.yaml") as fh:
         cfg = yaml.safe_load(fh)["fe"]
     cfg["sweeps"]["penalty_sweep"].update(values=[1e3, 1e5, 1e7], t_end=0.01)
-    ds = ensemble_dataset(lambda c: sweep_dataset(c, "penalty_sweep", FIG17), cfg, EnsembleSpec(seeds=()))
+    ds = ensemble_dataset(
+        lambda c: sweep_dataset(c, "penalty_sweep", FIG17),
+        cfg,
+        EnsembleSpec(seeds=()),
+        run_id="results/fe/penalty_sweep.nc",
+        fields=PERTURBED_FIELDS,
+    )
     half = sweep_half_step(cfg, "penalty_sweep", FIG17)
     out = apply_step_halving(ds, half, along="penalty_stiffness")
     for q in CLAIMED:

@@ -10,6 +10,7 @@ from stickslip.io.claims import ClaimsError, check_claims, load_claims, required
 from stickslip.io.netcdf import run_dataset_variables
 from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
+from stickslip.studies.fe import effective_fe_config, job_config as fe_job_config
 from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.
@@ -18,7 +19,7 @@ PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
-validate_config(config, producible=PRODUCIBLE)
+validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")

@@ -8,8 +8,14 @@ FE_DEFAULT_READING = FE_READINGS[0]
 FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
-#: What every FE job reads (its params): editing config/fe.yaml or the long-run switch re-runs FE jobs.
-FE_CONFIG = {"fe": FE, "fe_long_runs": config.get("fe_long_runs", False)}
+#: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
+#: resolved (stickslip.studies.fe.job_config): a value re-runs exactly the jobs that read it.
+FE_EFFECTIVE = effective_fe_config(config)
+#: The scenes the studies start from (sweeps, convergence, stability, increments).
+FE_STUDY_SECTIONS = ("sweeps", "convergence", "stability", "increments")
+FE_STUDY_BASES = sorted(
+    {sw["base"] for sw in FE["sweeps"].values()} | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
+)
 
 
 rule fe_reading:
@@ -30,7 +36,9 @@ rule fe_reading:
     conda:
         CONDA_ENV
     params:
-        config=FE_CONFIG,
+        config=lambda wildcards: fe_job_config(
+            FE_EFFECTIVE, scenes=FE_SCENES, reading=wildcards.fe_reading, sections=["cross_scene"]
+        ),
         ensemble=ENSEMBLE,
     script:
         "../scripts/fe_reading.py"
@@ -54,7 +62,7 @@ rule fe_studies:
     conda:
         CONDA_ENV
     params:
-        config=FE_CONFIG,
+        config=fe_job_config(FE_EFFECTIVE, scenes=FE_STUDY_BASES, sections=FE_STUDY_SECTIONS),
         ensemble=ENSEMBLE,
     script:
         "../scripts/fe_studies.py"
@@ -85,7 +93,7 @@ rule fe_setup_fit:
     conda:
         CONDA_ENV
     params:
-        config=FE_CONFIG,
+        config=lambda wildcards: fe_job_config(FE_EFFECTIVE, scenes=[FE_SETUP_FITS[wildcards.fe_fit]]),
         ensemble=ENSEMBLE,
         base=lambda wildcards: FE_SETUP_FITS[wildcards.fe_fit],
         centre=next(c["value"] for c in CLAIMS if c["id"] == "s9_oscillation_centre"),
@@ -109,7 +117,7 @@ rule fe_model_comparison:
     conda:
         CONDA_ENV
     params:
-        config=FE_CONFIG,
+        config=fe_job_config(FE_EFFECTIVE, scenes=FE_SCENES, sections=["comparison"]),
     script:
         "../scripts/fe_comparison.py"
 

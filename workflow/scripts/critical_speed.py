@@ -7,7 +7,7 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.onedof import critical_speed_from_config
-from stickslip.studies.specs import baseline_spec
+from stickslip.studies.specs import PERTURBED_FIELDS, baseline_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
 config = snakemake.params.config
@@ -16,7 +16,11 @@ for reading, path in zip(snakemake.params.readings, snakemake.output):
     spec = baseline_spec(config, reading)
     claimed = path in snakemake.params.ensemble_outputs
     ds = ensemble_dataset(
-        partial(critical_speed_from_config, reading=reading), config, ensemble if claimed else None
+        partial(critical_speed_from_config, reading=reading),
+        config,
+        ensemble if claimed else None,
+        run_id=path,
+        fields=PERTURBED_FIELDS,
     )
     write_dataset(
         ds,

@@ -8,11 +8,13 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
 from stickslip.presentation.plots import eq6_figure  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
-from stickslip.studies.specs import baseline_spec  # noqa: E402
+from stickslip.studies.specs import PERTURBED_FIELDS, baseline_spec  # noqa: E402
 
 config = snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # closed form: no BLAS
-ds = ensemble_dataset(eq6_from_config, config, ensemble)
+ds = ensemble_dataset(
+    eq6_from_config, config, ensemble, run_id=snakemake.output.nc, fields=PERTURBED_FIELDS
+)
 write_dataset(
     ds,
     snakemake.output.nc,

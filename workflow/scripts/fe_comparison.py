@@ -6,7 +6,7 @@ from pathlib import Path
 from stickslip.fe.params import FrictionTable
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import INTERPRETATION, comparison_mapping, effective_fe_config, halved_step
+from stickslip.studies.fe import INTERPRETATION, comparison_mapping, halved_step
 from stickslip.studies.fe_comparison import (
     beam_metrics,
     comparison_dataset,
@@ -16,7 +16,7 @@ from stickslip.studies.fe_comparison import (
 )
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
+cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comparison section)
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 cont, beam, floors = {}, {}, {}

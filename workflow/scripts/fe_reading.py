@@ -11,14 +11,14 @@ from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
+    PERTURBED_FIELDS,
     cross_scene_dataset,
-    effective_fe_config,
     scene_dataset,
     scene_mapping,
 )
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = effective_fe_config(snakemake.params.config)  # noqa: F821
+cfg = snakemake.params.config  # noqa: F821  (this reading's scenes, resolved: studies.fe.job_config)
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
@@ -28,8 +28,14 @@ spec = replace(EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas
 built, mappings = {}, {}
 for path in snakemake.output.scenes:  # noqa: F821
     name = Path(path).stem
-    mappings[name] = scene_mapping(cfg, name, reading)
-    ds = ensemble_dataset(lambda mp, n=name: scene_dataset(mp, friction, n), mappings[name], spec)
+    mappings[name] = scene_mapping(cfg, name)
+    ds = ensemble_dataset(
+        lambda mp, n=name: scene_dataset(mp, friction, n),
+        mappings[name],
+        spec,
+        run_id=path,
+        fields=PERTURBED_FIELDS,
+    )
     ds = apply_step_halving(ds, step_member_values(ds))
     ds.attrs["fe_reading"] = reading
     print(

@@ -8,20 +8,22 @@ from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import HALF_STEP, apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import effective_fe_config, setup_fit_dataset, setup_fit_mapping
+from stickslip.studies.fe import PERTURBED_FIELDS, setup_fit_dataset, setup_fit_mapping
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 par = snakemake.params  # noqa: F821
-cfg = effective_fe_config(par.config)
+cfg = par.config  # the base scene, resolved (studies.fe.job_config)
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
 # dataset is bit-identical under any BLAS thread count (tests/fe/test_blas_independence.py), so the BLAS
 # member would only repeat the base run
 spec = replace(EnsembleSpec.from_mapping(par.ensemble).without_blas(), step_factor=HALF_STEP)
 fit, k = setup_fit_mapping(cfg, par.base, par.centre)
-ds = ensemble_dataset(lambda mp: setup_fit_dataset(mp, friction, k), fit, spec)
-ds = apply_step_halving(ds, step_member_values(ds))
 out = snakemake.output[0]  # noqa: F821
+ds = ensemble_dataset(
+    lambda mp: setup_fit_dataset(mp, friction, k), fit, spec, run_id=out, fields=PERTURBED_FIELDS
+)
+ds = apply_step_halving(ds, step_member_values(ds))
 write_dataset(ds, out, scene=fit, interpretation=ds.attrs["model_interpretation"], method={"kind": "fit"})
 print(
     f"setup fit on {par.base}: tip support {k:.4g} N/mm; not converged at half step: "

@@ -9,6 +9,7 @@ from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import (
     INTERPRETATION,
+    PERTURBED_FIELDS,
     convergence_dataset,
     scene_mapping,
     stability_dataset,
@@ -18,13 +19,19 @@ from stickslip.studies.fe import (
 from stickslip.studies.fe_comparison import increments_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config["fe"]  # noqa: F821
+cfg = snakemake.params.config  # noqa: F821  (the studies' sections and base scenes: studies.fe.job_config)
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (claimed: sweeps, stability, increments)
 for path in out.sweeps:
     name = Path(path).stem
-    ds = ensemble_dataset(lambda c, name=name: sweep_dataset(c, name, friction), cfg, ensemble)
+    ds = ensemble_dataset(
+        lambda c, name=name: sweep_dataset(c, name, friction),
+        cfg,
+        ensemble,
+        run_id=path,
+        fields=PERTURBED_FIELDS,
+    )
     ds = apply_step_halving(ds, sweep_half_step(cfg, name, friction), along=cfg["sweeps"][name]["coord"])
     method = {"integrator": "central_difference", "sweep": name}
     write_dataset(ds, path, scene=dict(cfg["sweeps"][name]), interpretation=INTERPRETATION, method=method)
@@ -34,7 +41,9 @@ for path in out.sweeps:
     )
 for kind, build in (("convergence", convergence_dataset), ("stability", stability_dataset)):
     spec = ensemble if kind == "stability" else None  # the convergence study is a spread measurement itself
-    ds = ensemble_dataset(lambda c, build=build: build(c, friction), cfg, spec)
+    ds = ensemble_dataset(
+        lambda c, build=build: build(c, friction), cfg, spec, run_id=out[kind], fields=PERTURBED_FIELDS
+    )
     write_dataset(ds, out[kind], scene=dict(cfg[kind]), interpretation=INTERPRETATION, method={"study": kind})
     print(f"{kind} written", flush=True)
 inc = cfg["increments"]
@@ -44,5 +53,7 @@ ds = ensemble_dataset(
     ),
     cfg,
     ensemble,
+    run_id=out.increments,
+    fields=PERTURBED_FIELDS,
 )
 write_dataset(ds, out.increments, scene=dict(inc), interpretation=INTERPRETATION, method={"kind": "eigen"})

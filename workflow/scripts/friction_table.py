@@ -6,11 +6,17 @@ from functools import partial
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.studies.onedof import friction_table_from_config
-from stickslip.studies.specs import run_spec
+from stickslip.studies.specs import PERTURBED_FIELDS, run_spec
 
 table, config = snakemake.params.table, snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
-ds = ensemble_dataset(partial(friction_table_from_config, table=table), config, ensemble)
+ds = ensemble_dataset(
+    partial(friction_table_from_config, table=table),
+    config,
+    ensemble,
+    run_id=snakemake.output.nc,
+    fields=PERTURBED_FIELDS,
+)
 tmp = snakemake.output.csv + ".tmp"
 with open(tmp, "w") as fh:
     fh.write("relative_velocity_mm_per_s,mu\n")

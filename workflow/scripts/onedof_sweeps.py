@@ -10,7 +10,7 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file, step_callback
 from stickslip.studies.onedof import sweep_from_config
-from stickslip.studies.specs import sweep_spec
+from stickslip.studies.specs import PERTURBED_FIELDS, sweep_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
 reading, config = snakemake.wildcards.reading, snakemake.params.config
@@ -25,6 +25,8 @@ for path in snakemake.output:
         partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress),
         config,
         ensemble if path in snakemake.params.ensemble_outputs else None,
+        run_id=path,
+        fields=PERTURBED_FIELDS,
     )
     write_dataset(
         ds,

@@ -65,7 +65,8 @@ class Tolerance(_Strict):
     """Half-width of the accepted band around the reported number: the larger of ``rel`` x |value| and
     ``abs``, and why that width."""
 
-    rel: NonNegative | None = None
+    # at most 100 %: a wider band accepts any number of the value's sign and zero (the claims use <= 25 %)
+    rel: Annotated[float, Field(ge=0, le=1, allow_inf_nan=False)] | None = None
     abs: NonNegative | None = None
     reason: Text
 

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import datetime as _dt
+import errno
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 from pathlib import Path
@@ -285,6 +287,28 @@ def publish(tmp: str | os.PathLike, path: str | os.PathLike) -> None:
     os.replace(tmp, path)
 
 
+#: Free bytes below which a failed write is reported as a full disk (the netCDF library says only
+#: "NetCDF: HDF error"): at least this much, or the dataset's in-memory size if larger, must be free.
+MIN_FREE_BYTES = 1 << 20
+
+
+class DiskFullError(OSError):
+    """A dataset could not be written because its file system has no space left."""
+
+    def __init__(self, path: Path, free: int, needed: int):
+        super().__init__(
+            errno.ENOSPC,
+            f"no space left on device writing {path}: {free} bytes free in {path.parent}, the dataset holds "
+            f"{needed} bytes (nothing was written under that name)",
+        )
+
+
+def _check_free_space(path: Path, needed: int) -> None:
+    free = shutil.disk_usage(path.parent).free
+    if free < max(needed, MIN_FREE_BYTES):
+        raise DiskFullError(path, free, needed)
+
+
 def write_dataset(
     ds: xr.Dataset,
     path: str | os.PathLike,
@@ -298,7 +322,9 @@ def write_dataset(
 
     Attributes the dataset already has are kept (``title`` given here is used only when the dataset has
     none). The temporary file is hidden (``.<name>.*.tmp``) and removed on any error, so a killed or failed
-    job never leaves a readable partial file under the target name.
+    job never leaves a readable partial file under the target name. A file system without room for it
+    raises ``DiskFullError`` ('no space left on device'), checked before writing and again when the write
+    fails (the netCDF library reports a full disk only as an HDF error).
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -312,14 +338,27 @@ def write_dataset(
     ds.attrs = _merged_attrs(ds.attrs, prov)
     ds = cf_fill_in(index_text_dimensions(ds))
     encoding = cf_encoding(ds)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    _check_free_space(path, int(ds.nbytes))
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as exc:
+        if exc.errno == errno.ENOSPC:
+            raise DiskFullError(path, shutil.disk_usage(path.parent).free, int(ds.nbytes)) from None
+        raise
     os.close(fd)
     try:
         ds.to_netcdf(tmp, format="NETCDF4", engine="netcdf4", encoding=encoding)
         seal(tmp)
         publish(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         Path(tmp).unlink(missing_ok=True)
+        if isinstance(exc, Exception):
+            # measured with the partial file gone: what is free is what the write could have had
+            free = shutil.disk_usage(path.parent).free
+            if (isinstance(exc, OSError) and exc.errno == errno.ENOSPC) or free < max(
+                int(ds.nbytes), MIN_FREE_BYTES
+            ):
+                raise DiskFullError(path, free, int(ds.nbytes)) from exc
         raise
     return path
 

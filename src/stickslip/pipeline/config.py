@@ -8,11 +8,12 @@ the friction table), each error naming the offending config key.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import re
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 
 from ..io.typed_errors import typed_errors
-from ..io.yaml_files import YamlFileError, load_yaml
+from ..io.yaml_files import YamlFileError, key_location, load_yaml
 from ..model.params import ParameterError
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
@@ -60,10 +61,32 @@ def load_config(paths: Iterable[str | Path]) -> dict:
     return drop_removed(config)
 
 
-def validate_config(config: dict, *, producible: Iterable[str] = ()) -> None:
+def located(message: str, sources: Sequence[str | Path]) -> str:
+    """Every line of an error message that starts with a config key (``fe.scenes.x.beam.length: ...``)
+    prefixed with the ``file:line`` of the config file that sets that key (``key_location``)."""
+    out = []
+    for line in message.splitlines():
+        key = re.sub(r" \([^)]*\)", "", line.split(": ", 1)[0])
+        where = key_location(key, sources) if re.fullmatch(r"[A-Za-z_][\w.\[\]-]*", key) else None
+        out.append(f"{where}: {line}" if where else line)
+    return "\n".join(out)
+
+
+def validate_config(
+    config: dict, *, producible: Iterable[str] = (), sources: Sequence[str | Path] = ()
+) -> None:
     """Raise ConfigError naming the key of the first bad value (all typed errors at once).
 
-    ``producible`` lists files a rule writes (a friction table need not exist before the run)."""
+    ``producible`` lists files a rule writes (a friction table need not exist before the run); ``sources``
+    the config files the config was loaded from, in order: each error line then starts with the file and
+    line that set its key."""
+    try:
+        _validate(config, list(producible))
+    except ConfigError as exc:
+        raise ConfigError(located(str(exc), sources)) from None
+
+
+def _validate(config: dict, producible: list[str]) -> None:
     from pydantic import ValidationError
 
     from .config_models import PipelineConfig
@@ -147,12 +170,32 @@ def _check_dense_maps(config: dict) -> None:
 MAX_FE_ELEMENT_INCREMENTS = 2.0e9
 
 
-def check_fe_lengths(mapping: dict, key: str, reading: str | None, allow_expensive: bool = False) -> None:
-    """A merged FE scene's windows fit inside its run and its estimated cost is within the guard: the
-    explicit step is at most the time an axial wave needs to cross one element (the cheapest case), so
-    elements x t_end / step is a lower bound of the work."""
+def fe_layer_key(fe_cfg: dict, scene: str, reading: str | None, dotted: str) -> str:
+    """The config key that sets ``dotted`` (``solver.output_dt``) of a scene under a reading: the scene's own,
+    else the reading's, else the defaults' (the layers of ``scene_mapping``)."""
+    section, _, name = dotted.partition(".")
+    layers = [(f"fe.scenes.{scene}", fe_cfg["scenes"].get(scene))]
+    if reading:
+        layers.append((f"fe.readings.{reading}", fe_cfg.get("readings", {}).get(reading)))
+    layers.append(("fe.defaults", fe_cfg.get("defaults")))
+    for prefix, layer in layers:
+        if name in ((layer or {}).get(section) or {}):
+            return f"{prefix}.{dotted}"
+    return f"fe.scenes.{scene}.{dotted}"
+
+
+def check_fe_lengths(
+    mapping: dict, key: str, reading: str | None, allow_expensive: bool = False, key_of=None
+) -> None:
+    """A merged FE scene's windows fit inside its run, it stores at most ``MAX_SAMPLES_PER_RUN`` samples
+    (like a 1-DOF scene), and its estimated cost is within the guard: the explicit step is at most the time
+    an axial wave needs to cross one element (the cheapest case), so elements x t_end / step is a lower
+    bound of the work. ``key_of(dotted)`` names the config key a value came from."""
+    from .config_models import MAX_SAMPLES_PER_RUN
+
     solver, output, beam = mapping.get("solver", {}), mapping.get("output", {}), mapping.get("beam", {})
     where = f"{key} (FE reading {reading})" if reading else key
+    key_of = key_of or (lambda dotted: f"{where}.{dotted}")
     t_end = solver.get("t_end")
     if t_end is None:
         return
@@ -163,7 +206,15 @@ def check_fe_lengths(mapping: dict, key: str, reading: str | None, allow_expensi
     checks += [(f"output.windows[{i}]", w[1], "<=") for i, w in enumerate(output.get("windows") or [])]
     for name, value, _ in checks:
         if value is not None and value > t_end:
-            raise ConfigError(f"{where}.{name}: {value!r} does not fit in solver.t_end = {t_end!r}")
+            raise ConfigError(
+                f"{key_of(name)}: {value!r} does not fit in solver.t_end = {t_end!r} ({where})"
+            )
+    output_dt = solver.get("output_dt")
+    if output_dt is not None and t_end / output_dt + 1 > MAX_SAMPLES_PER_RUN:
+        raise ConfigError(
+            f"{key_of('solver.output_dt')}: {output_dt!r} stores {t_end / output_dt + 1:.3g} samples over "
+            f"solver.t_end = {t_end!r} ({where}), more than the limit {MAX_SAMPLES_PER_RUN:.3g} per run"
+        )
     needed = ("n_elements", "length", "youngs_modulus_gpa", "density_kg_m3")
     if allow_expensive or any(beam.get(k) is None for k in needed):
         return
@@ -187,7 +238,11 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
     for name in fe_cfg["scenes"]:
         for reading in fe_cfg.get("readings") or [None]:
             check_fe_lengths(
-                scene_mapping(fe_cfg, name, reading), f"fe.scenes.{name}", reading, allow_expensive
+                scene_mapping(fe_cfg, name, reading),
+                f"fe.scenes.{name}",
+                reading,
+                allow_expensive,
+                key_of=lambda dotted, n=name, r=reading: fe_layer_key(fe_cfg, n, r, dotted),
             )
         mapping = scene_mapping(fe_cfg, name)
         try:
@@ -196,6 +251,22 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
             )
         except (ValueError, TypeError, KeyError) as exc:
             raise ConfigError(f"fe.scenes.{name}: {exc}") from None
+    # the studies run their base scene over their own window: it must hold the scene's output sampling
+    windows = [(f"fe.sweeps.{n}", sw["base"], sw.get("t_end")) for n, sw in fe_cfg["sweeps"].items()]
+    windows += [("fe.convergence", fe_cfg["convergence"]["base"], fe_cfg["convergence"]["t_end"])]
+    windows += [(f"fe.comparison ({s})", s, fe_cfg["comparison"]["t_end"]) for s in fe_cfg["scenes"]]
+    for key, base, t_end in windows:
+        if t_end is None:
+            continue
+        mapping = scene_mapping(fe_cfg, base)
+        for dotted in ("solver.output_dt", "output.bin_width"):
+            section, _, field = dotted.partition(".")
+            value = (mapping.get(section) or {}).get(field)
+            if value is not None and value > t_end:
+                raise ConfigError(
+                    f"{key.split(' ')[0]}.t_end: {t_end!r} is shorter than {dotted} = {value!r} of its base "
+                    f"scene {base} ({fe_layer_key(fe_cfg, base, None, dotted)})"
+                )
     table = fe_cfg["friction_table"]
     if table not in producible and not Path(table).is_file():
         raise ConfigError(

@@ -571,14 +571,39 @@ class FeScene(Section):
     output: FeOutput | None = None
 
 
+def fe_scene_parameter(path: str) -> str:
+    """A sweep's ``parameter``: ``<section>.<key>`` naming a numeric key of an FE scene's schema."""
+    sections = {"beam": Beam, "disc": Disc, "contact": Contact, "solver": FeSolver}
+    section, _, key = path.partition(".")
+    if section not in sections:
+        raise ValueError(f"{path!r}: the section must be one of {sorted(sections)}")
+    numeric = sorted(
+        name
+        for name, field in sections[section].model_fields.items()
+        if any(t in str(field.annotation) for t in ("float", "int")) and "bool" not in str(field.annotation)
+    )
+    if key not in numeric:
+        raise ValueError(f"{path!r}: {section} has no numeric key {key!r} (it has {', '.join(numeric)})")
+    return path
+
+
+#: A friction slope d mu / d v_r [s mm-1] of the stability study: |slope| x 0.5 mm/s (the slowest disc
+#: surface speed of the paper's scenes) at most 1, i.e. the friction coefficient changes by at most 1 over
+#: that speed; the paper's own slopes (sigma = 0.3, 0.5) and the study's (<= 0.3) are far inside.
+MAX_FRICTION_SLOPE = 2.0
+Slope = Annotated[float, Field(ge=-MAX_FRICTION_SLOPE, le=MAX_FRICTION_SLOPE, allow_inf_nan=False)]
+
+
 class FeSweep(Section):
     base: str
-    parameter: Annotated[str, Field(pattern=r"^(beam|disc|contact|solver)\.[a-z_]+$")]
+    parameter: str
     coord: str
     units: str | None = None
     long_name: str | None = None
     values: Annotated[list[Finite], Field(min_length=2)]
     t_end: Positive | None = None
+
+    _parameter = field_validator("parameter")(fe_scene_parameter)
 
 
 class Convergence(Section):
@@ -591,10 +616,20 @@ class Convergence(Section):
 class Stability(Section):
     base: str
     angles: Annotated[list[Angle], Field(min_length=1)]
-    slopes: Annotated[list[Finite], Field(min_length=1)]
+    slopes: Annotated[list[Slope], Field(min_length=1)]
     crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
     crosscheck_e_folds: Positive | None = None
     crosscheck_max_t_end: Positive | None = None
+
+    @model_validator(mode="after")
+    def crosscheck_slopes_bounded(self):
+        for i, (_, slope) in enumerate(self.crosscheck or []):
+            if abs(slope) > MAX_FRICTION_SLOPE:
+                raise ValueError(
+                    f"crosscheck[{i}][1]: friction slope {slope!r} outside [-{MAX_FRICTION_SLOPE}, "
+                    f"{MAX_FRICTION_SLOPE}] s mm-1"
+                )
+        return self
 
 
 class Reduced(Section):

@@ -34,6 +34,35 @@ from ..fe.scene import SceneParams, build_scene
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 from ..fe.step_halving import HALF_STEP
 
+#: The fields of an FE mapping (a scene's, or the ``fe`` section a study reads) that the perturbation
+#: ensemble perturbs (stickslip.ensemble.declared): the physical parameters and the numerical settings.
+#: Never the windows and samplings of the output (t_end, output_dt, bin_width, windows, e-fold budgets) nor
+#: counts (element numbers, meshes).
+PERTURBED_FIELDS = (
+    "beam.length",
+    "beam.thickness",
+    "beam.width",
+    "beam.youngs_modulus_gpa",
+    "beam.density_kg_m3",
+    "beam.poisson_ratio",
+    "beam.gravity_m_s2",
+    "disc.diameter",
+    "disc.speed_rev_per_min",
+    "disc.surface_speed_mm_s",
+    "contact.angle_deg",
+    "contact.penalty_stiffness",
+    "solver.safety_factor",
+    "solver.mass_damping",
+    "solver.stiffness_damping",
+    "sweeps.*.values",
+    "stability.angles",
+    "stability.slopes",
+    "stability.crosscheck",
+    "convergence.safety_factors",
+    "increments.safety_factors",
+    "increments.betas",
+)
+
 INTERPRETATION = (
     "2-D frame elements (axial bar + Euler-Bernoulli bending stiffness, Rayleigh rotary inertia rho*I), "
     "clamped "
@@ -146,6 +175,28 @@ def effective_fe_config(config: Mapping) -> dict:
         fe["control_readings_t_end"] = t_end  # the control readings' short window too
         fe.setdefault("comparison", {})["t_end"] = float(lr["comparison_t_end"])
     return fe
+
+
+def canonical(node):
+    """A nested mapping with its keys sorted at every level (lists keep their order)."""
+    if isinstance(node, Mapping):
+        return {k: canonical(node[k]) for k in sorted(node, key=str)}
+    if isinstance(node, (list, tuple)):
+        return [canonical(v) for v in node]
+    return node
+
+
+def job_config(
+    fe_cfg: Mapping, *, scenes=(), reading: str | None = None, sections=()
+) -> dict:
+    """The part of the (effective) ``fe`` config one job reads, resolved: every named scene merged over the
+    defaults and the reading (``scene_mapping``; None: the first reading), plus the named sections as they
+    are; keys sorted at every level. A rule passes this as its params, so a value re-runs exactly the jobs
+    that read it, and a reordering of keys in a file re-runs nothing. ``scene_mapping(job, name)`` returns
+    the resolved scene again (the result has no defaults or readings left to merge)."""
+    out = {"scenes": {name: scene_mapping(fe_cfg, name, reading) for name in scenes}}
+    out.update({key: fe_cfg[key] for key in sections})
+    return canonical(out)
 
 
 def comparison_mapping(fe_cfg: Mapping, name: str) -> dict:

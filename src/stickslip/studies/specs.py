@@ -23,6 +23,29 @@ from ..solvers import make_solver
 from ..solvers.base import sample_times
 from ..solvers.budget import BudgetedSolver
 
+#: The fields of a 1-DOF job's config that the perturbation ensemble perturbs (stickslip.ensemble.declared):
+#: the model's parameters wherever they are set, the readings' friction parameters, the solvers' step and
+#: tolerance settings, and the parameter values a sweep or the critical-speed continuation runs at. Never
+#: the windows and samplings of the output (t_end, output_dt, transient, count_window, eq6.f_max, the stick
+#: label's tolerance) nor counts (num, points, bins, budgets).
+PERTURBED_FIELDS = (
+    "params.*",
+    "readings.*.sigma",
+    "readings.*.plateau_speed",
+    "methods.*.rtol",
+    "methods.*.atol",
+    "methods.*.h",
+    "methods.*.max_step",
+    "methods.*.first_step",
+    "methods.*.eta",
+    "sweeps.*.values",
+    "sweeps.*.linked.*",
+    "sweeps.*.dense.start",
+    "sweeps.*.dense.stop",
+    "critical_speed.start",
+    "critical_speed.stop",
+)
+
 #: Run-length keys a scene (or a dense map) sets over ``onedof.defaults``.
 RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 #: Keys a reading may set on top of a scene's parameters (which sigma, which units, a friction plateau).
