@@ -39,7 +39,7 @@ rule fe_decks:
     conda:
         CONDA_ENV
     params:
-        config=FE_CONFIG,
+        config=fe_job_config(FE_EFFECTIVE, scenes=FE_SCENES, sections=["comparison"]),
     script:
         "../scripts/fe_decks.py"
 
