@@ -43,6 +43,7 @@ def test_burst_time_is_nan_without_separation():
         ((0.565, 0.560), (0.40, 0.41), False),  # apart by 38 %
         ((0.565, 0.536), (-0.1, 0.570), False),  # a sign differs
         ((0.565, float("nan")), (0.523, 0.570), False),  # a value missing
+        ((float("nan"),) * 2, (float("nan"),) * 2, True),  # neither model separates: no burst in both
     ],
 )
 def test_window_agreement_rule(beam, continuum, expected):

@@ -144,7 +144,8 @@ def step_pair(ds: xr.Dataset, name: str) -> tuple[float, float]:
 WINDOW_QUANTITIES = ("first_mode_growth_rate", "separation_burst_time")
 #: the rule of the window rows' agreement column
 WINDOW_RULE = (
-    "all four values (beam and continuum, each at dt and dt/2) finite and of one sign, and the two models' "
+    "none of the four values (beam and continuum, each at dt and dt/2) finite: both models say it does not "
+    "happen (no separation, no growth segment); else all four finite and of one sign, and the two models' "
     "[min, max] ranges over dt and dt/2 overlap (the models differ by no more than the step moves either) "
     f"or their dt/dt/2 means differ by <= {REL_TOL:g} relatively"
 )
@@ -153,6 +154,8 @@ WINDOW_RULE = (
 def window_agrees(beam: tuple[float, float], continuum: tuple[float, float], rel: float = REL_TOL) -> bool:
     """WINDOW_RULE for (dt, dt/2) pairs of one quantity in the two models."""
     v = np.array([*beam, *continuum], dtype=float)
+    if np.all(np.isnan(v)):
+        return True
     if not np.all(np.isfinite(v)) or np.any(v == 0) or len(set(np.sign(v))) != 1:
         return False
     b, c = v[:2], v[2:]
