@@ -147,6 +147,7 @@ rule fe_readings_claims:
     """Every FE claim row evaluated under every FE reading (the claims table checks the default one)."""
     input:
         claims="config/claims/sections_09_12.yaml",
+        comparison="results/fe/model_comparison.csv",
         data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
         + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
         + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
