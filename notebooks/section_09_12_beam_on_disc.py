@@ -180,7 +180,8 @@ def _fmt(row):
     return "background-color: #d8f0d8" if row["agreement"] else "background-color: #f6d5d5"
 
 
-print("agreement rule:", comparison["agreement_rule"].iloc[0])
+for window, rule in comparison.groupby("window")["agreement_rule"].first().items():
+    print(f"agreement rule ({window} window):", rule)
 display(
     comparison.drop(columns="agreement_rule")
     .style.apply(lambda r: [_fmt(r)] * len(r), axis=1)

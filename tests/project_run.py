@@ -126,10 +126,13 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
 
     import numpy as np
 
+    from stickslip.io.claim_models import annotate, read_comparison
     from stickslip.io.claims import evaluate_all, load_claims, read_table
     from stickslip.io.netcdf import read_dataset
 
-    claims = load_claims(glob(str(workdir / "config" / "claims" / "*.yaml")))
+    # as the claims table: rows the beam may not decide (the model comparison) stay undecided
+    comparison = read_comparison(workdir / "results" / "fe" / "model_comparison.csv")
+    claims = annotate(load_claims(glob(str(workdir / "config" / "claims" / "*.yaml"))), comparison)
     table = read_table(workdir / "results" / "claims" / "deviations.csv")
     readings = sorted({r["reading"] for r in table} - {""})
 

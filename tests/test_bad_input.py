@@ -503,24 +503,33 @@ BAD_CLAIMS_IN_CONTEXT = {
         ["zz_value", "expected.consistent_captoin", "not a reading"],
     ),
     "claims_fe_row_without_its_other_speed": (
-        [_with(VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc")],
+        [_with(VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc", model="beam")],
         ["zz_value", "15p2rpm", "twin", "one_speed"],
     ),
     "claims_twin_that_does_not_exist": (
         [
             _with(
-                VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc", twin="zz_gone"
+                VALUE_ROW,
+                dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc",
+                model="beam",
+                twin="zz_gone",
             )
         ],
         ["zz_value", "twin", "zz_gone"],
     ),
     "claims_twin_at_the_same_speed": (
         [
-            _with(VALUE_ROW, dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc", twin="zz_b"),
+            _with(
+                VALUE_ROW,
+                dataset="results/fe/lower_face_drop/section9_kinematic_15p2rpm.nc",
+                model="beam",
+                twin="zz_b",
+            ),
             _with(
                 VALUE_ROW,
                 id="zz_b",
                 dataset="results/fe/lower_face_drop/section11_penalty_15p2rpm.nc",
+                model="beam",
                 twin="zz_value",
             ),
         ],

@@ -56,6 +56,8 @@ PRIORITY = {
     "methods_work_precision": 30,
     "methods_failure_map": 15,
     "fe_model_comparison": 14,
+    # the continuum over a claim's window: ~45 s of CPU, the longest FE job; started early so it is no tail
+    "fe_continuum_window": 30,
     "onedof_sweeps": 10,
     "fe_figures": 10,
     "fe_studies": 10,

@@ -101,10 +101,41 @@ rule fe_setup_fit:
         "../scripts/fe_setup_fit.py"
 
 
-rule fe_model_comparison:
-    """Continuum strip (the paper's kind of model) and beam on every paper scene, same window."""
+#: scenes the continuum also runs over a claim's window (config fe.comparison.claim_windows)
+FE_WINDOW_SCENES = list(FE["comparison"].get("claim_windows") or {})
+
+
+rule fe_continuum_window:
+    """The continuum strip over a claim's window at dt and dt/2 (step-halving member as its ensemble): the
+    model that decides claims where the beam is not adequate, and the check of the beam where it is."""
     input:
         friction=FE_FRICTION,
+    output:
+        "results/fe/continuum_window/{scene}.nc",
+    log:
+        "results/logs/fe_continuum_window/{scene}.log",
+    benchmark:
+        "results/benchmarks/fe_continuum_window/{scene}.tsv"
+    wildcard_constraints:
+        scene="|".join(FE_WINDOW_SCENES),
+    priority: PRIORITY["fe_continuum_window"]
+    conda:
+        CONDA_ENV
+    params:
+        config=lambda wildcards: fe_job_config(
+            FE_EFFECTIVE, scenes=[wildcards.scene], sections=["comparison"]
+        ),
+    script:
+        "../scripts/fe_continuum_window.py"
+
+
+rule fe_model_comparison:
+    """Continuum strip (the paper's kind of model) and beam on every paper scene, same window; over a
+    claim's window the continuum runs of fe_continuum_window against the default reading's beam."""
+    input:
+        friction=FE_FRICTION,
+        window=expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES),
+        beam=expand(f"results/fe/{FE_DEFAULT_READING}/{{scene}}.nc", scene=FE_WINDOW_SCENES),
     output:
         continuum=expand("results/fe/continuum/{scene}.nc", scene=FE_SCENES),
         table="results/fe/model_comparison.csv",
@@ -126,11 +157,14 @@ rule fe_readings_claims:
     """Every FE claim row evaluated under every FE reading (the claims table checks the default one)."""
     input:
         claims="config/claims/sections_09_12.yaml",
+        comparison="results/fe/model_comparison.csv",
         data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
         + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
         + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
         + ["results/fe/continuum_increments.nc", "results/fe/peer_calculix.nc"]
-        + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS],
+        + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS]
+        # the continuum rows (one reading: never re-pointed per FE reading)
+        + expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES),
     output:
         "results/fe/readings_claims.csv",
     log:
@@ -224,6 +258,7 @@ FE_DATASETS = (
     + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
     + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
     + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS]
+    + expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES)
     + [
         "results/fe/model_comparison.csv",
         "results/fe/continuum_increments.nc",

@@ -4,7 +4,7 @@ import csv
 from pathlib import Path
 
 from stickslip.fe.params import FrictionTable
-from stickslip.io.netcdf import write_dataset
+from stickslip.io.netcdf import read_dataset, write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.fe import INTERPRETATION, comparison_mapping, halved_step
 from stickslip.studies.fe_comparison import (
@@ -13,13 +13,14 @@ from stickslip.studies.fe_comparison import (
     comparison_rows,
     continuum_dataset,
     noise_floors,
+    window_rows,
 )
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comparison section)
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
-cont, beam, floors = {}, {}, {}
+cont, beam, floors, half = {}, {}, {}, {}
 for path in snakemake.output.continuum:  # noqa: F821
     name = Path(path).stem
     mapping = comparison_mapping(cfg, name)
@@ -27,9 +28,14 @@ for path in snakemake.output.continuum:  # noqa: F821
     cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
     write_dataset(cont[name], path, scene=mapping, interpretation=INTERPRETATION, method={"mesh": [nx, ny]})
     beam[name] = beam_metrics(mapping, friction)
-    floors[name] = noise_floors(beam[name], beam_metrics(halved_step(mapping), friction))
+    half[name] = beam_metrics(halved_step(mapping), friction)
+    floors[name] = noise_floors(beam[name], half[name])
     print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
-rows = comparison_rows(cont, beam, cmp.get("notes", {}), floors)
+rows = comparison_rows(cont, beam, cmp.get("notes", {}), floors, half)
+# over a claim's window: the continuum runs of rule fe_continuum_window against the default reading's beam
+window = {Path(p).stem: read_dataset(p) for p in snakemake.input.window}  # noqa: F821
+beam_window = {Path(p).stem: read_dataset(p) for p in snakemake.input.beam}  # noqa: F821
+rows += window_rows(window, beam_window, cmp.get("notes", {}))
 with open(snakemake.output.table, "w", newline="") as f:  # noqa: F821
     w = csv.DictWriter(f, fieldnames=list(rows[0]))
     w.writeheader()

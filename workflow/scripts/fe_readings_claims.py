@@ -6,12 +6,15 @@ from dataclasses import asdict
 from functools import lru_cache
 
 from stickslip.fe.readings import claims_per_reading
+from stickslip.io.claim_models import annotate, read_comparison
 from stickslip.io.claims import load_claims
 from stickslip.io.netcdf import read_dataset
 from stickslip.io.progress import log_to_file
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-claims = load_claims([snakemake.input.claims])  # noqa: F821
+# the model comparison (default reading) decides which model may decide a row, in every reading alike
+comparison = read_comparison(snakemake.input.comparison)  # noqa: F821
+claims = annotate(load_claims([snakemake.input.claims]), comparison)  # noqa: F821
 results = claims_per_reading(
     claims,
     snakemake.params.readings,

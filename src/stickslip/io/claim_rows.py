@@ -34,6 +34,22 @@ EVIDENCE_CLASSES = {
 Evidence = Literal["evidence", "by_construction", "relabel", "fit"]
 Status = Literal["reproduced", "deviates", "indistinguishable", "not-comparable"]
 
+#: The models a beam-on-disc row (one reading a dataset under ``results/fe/``) can be decided by, declared on
+#: every such row (``model``). The claims table decides a ``beam`` row only where the model comparison
+#: (results/fe/model_comparison.csv) finds beam and continuum agreeing for its scene and quantity
+#: (stickslip.io.claim_models).
+MODELS = {
+    "beam": "frame elements with rotary inertia (results/fe/<reading>/, the sweeps, studies and fits)",
+    "continuum": "the 100 x 1 plane-stress strip, the paper's own kind of model (results/fe/continuum*)",
+    "reduced": "the Craig-Bampton reduced beam",
+    "closed_form": "a formula of the stated inputs (a unit conversion, a stable-step count): no simulation",
+    "peer": "the continuum strip beside CalculiX, an established FE code, on the strip's linear states",
+}
+Model = Literal["beam", "continuum", "reduced", "closed_form", "peer"]
+#: where the datasets of the beam-on-disc scenes live, and those of the continuum strip among them
+FE_PREFIX = "results/fe/"
+CONTINUUM_PREFIX = "results/fe/continuum"
+
 #: The paper's numbered figures (Figure 1 to Figure 36); a claim's ``figures`` name some of them.
 PAPER_FIGURES = range(1, 37)
 
@@ -125,6 +141,12 @@ class ClaimRow(_Strict):
     )
     coord_scale: Literal["log"] | None = None
     min_relative_change: NonNegative | None = None
+    model: Model | None = Field(None, description="the model that decides a beam-on-disc row (MODELS)")
+
+    def dataset_paths(self) -> list[str]:
+        """Every dataset the row reads, its subject (``dataset`` or ``lhs``) first."""
+        refs = [self.dataset] + [o.dataset for o in (self.lhs, self.rhs) if o is not None]
+        return [p for p in refs if p is not None]
 
     @model_validator(mode="after")
     def _fits_its_kind(self):
@@ -144,6 +166,16 @@ class ClaimRow(_Strict):
             raise ValueError(f"evidence_note: a {self.evidence} row says why it is not evidence")
         if self.evidence == "evidence" and self.evidence_note is not None:
             raise ValueError("evidence_note: only a row that is not evidence carries one")
+        paths = self.dataset_paths()
+        fe = any(p.startswith(FE_PREFIX) for p in paths)
+        if fe and self.model is None:
+            raise ValueError(f"model: a beam-on-disc row (dataset under {FE_PREFIX}) names its model")
+        if not fe and self.model is not None:
+            raise ValueError(f"model: only a beam-on-disc row (dataset under {FE_PREFIX}) names one")
+        if self.model in ("beam", "continuum") and (paths[0].startswith(CONTINUUM_PREFIX)) != (
+            self.model == "continuum"
+        ):
+            raise ValueError(f"model: a {self.model} row's subject dataset is {paths[0]}")
         bad = [f for f in self.figures if f not in PAPER_FIGURES]
         if bad:
             raise ValueError(f"figures: {bad[0]} is not a figure of the paper (1-{PAPER_FIGURES[-1]})")

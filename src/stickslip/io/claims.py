@@ -36,10 +36,13 @@ from pathlib import Path
 
 import numpy as np
 
+from .claim_models import MODEL_VALUES, NOT_ADEQUATE
+
 STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
 
 #: A claim is decided only when its margin to the threshold exceeds this many ensemble spreads.
 MARGIN_FACTOR = 3.0
+
 ENSEMBLE_SUFFIX = "_ensemble"  # stickslip.ensemble.SUFFIX (io may not import from the orchestration layer)
 KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
@@ -482,6 +485,8 @@ def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) ->
     if status == "not-comparable":
         if failures:
             why = "the solver run failed"
+        elif claim.get(NOT_ADEQUATE):
+            why = "the beam is not the paper's model here (model comparison)"
         elif claim.get("comparable", True) is False:
             why = "the paper contradicts this sentence elsewhere"
         elif m.withheld:
@@ -533,9 +538,13 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
 
     m = MEASURE[claim["kind"]](claim, reading, recording_open)
     failures = solver_failures(opened)
-    status, detail = status_of(m, claim.get("comparable", True) is not False, failures)
+    adequate = not claim.get(NOT_ADEQUATE)  # set by stickslip.io.claim_models.annotate
+    status, detail = status_of(m, claim.get("comparable", True) is not False and adequate, failures)
+    if not adequate and not failures:
+        detail = f"{claim[NOT_ADEQUATE]} | {detail}"
     members = member_failures(opened)
     caveats = [f"{len(members)} sweep runs failed: " + "; ".join(members)] if members else []
+    caveats += [claim[MODEL_VALUES]] if claim.get(MODEL_VALUES) else []
     expected = _per_reading(claim["expected"], reading, default="(not pinned)")
     return ClaimResult(
         claim=claim["id"],

@@ -645,6 +645,9 @@ class Comparison(Section):
     mesh: Mesh
     t_end: Positive
     notes: dict[str, str] | None = None
+    claim_windows: dict[str, Positive] | None = Field(
+        None, description="scene -> t_end [s]: the continuum also runs these over a claim window (dt, dt/2)"
+    )
 
 
 class Increments(Section):
@@ -693,6 +696,7 @@ class Fe(Section):
         refs = [(f"fe.sweeps.{n}.base", sw.base) for n, sw in self.sweeps.items()]
         refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
         refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
+        refs += [(f"fe.comparison.claim_windows.{n}", n) for n in self.comparison.claim_windows or {}]
         check_refs(refs, self.scenes, "fe.scenes")
         return self
 

@@ -110,6 +110,10 @@ UNITS = {
     "stick_end_time": ("s", "time of the last stick sample"),
     "first_stick_duration": ("s", "duration of the initial stick phase"),
     "horizontal_vertical_correlation": ("1", "correlation of horizontal and vertical displacement"),
+    "separation_burst_time": (
+        "s",
+        "start of the first separation burst (first 5 ms window separated >= half the run's largest share)",
+    ),
     "horizontal_amplitude_growth_ratio": ("1", "last-window over second-window horizontal half peak-to-peak"),
     "horizontal_nearest_mode_ratio": ("1", "horizontal dominant frequency over nearest natural frequency"),
     "vertical_nearest_mode_ratio": ("1", "vertical dominant frequency over nearest natural frequency"),
@@ -204,6 +208,15 @@ def comparison_mapping(fe_cfg: Mapping, name: str) -> dict:
     return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"t_end": fe_cfg["comparison"]["t_end"]}})
 
 
+def window_mapping(fe_cfg: Mapping, name: str) -> dict:
+    """Scene mapping (default reading) over the claim window ``fe_cfg['comparison']['claim_windows']
+    [name]``: the continuum's run over the window of the claims its comparison rows license."""
+    windows = fe_cfg["comparison"].get("claim_windows") or {}
+    if name not in windows:
+        raise ValueError(f"comparison.claim_windows.{name}: no such claim window ({sorted(windows)})")
+    return deep_merge(scene_mapping(fe_cfg, name), {"solver": {"t_end": float(windows[name])}})
+
+
 def contact_held_modes(scene, n_modes: int = 40) -> tuple[np.ndarray, np.ndarray]:
     """Natural frequencies [Hz] and mode shapes (free-DOF columns) of the beam with the contact held
     (bilateral normal constraint)."""
@@ -295,18 +308,24 @@ def linear_growth_rate(scene, frequency: float, solver) -> float:
     return float(lam[np.argmin(np.abs(np.abs(lam.imag) / (2 * np.pi) - frequency))].real)
 
 
-def first_mode_growth(scene, r, frequency: float, solver) -> tuple[dict, tuple]:
-    """The first contact-held mode's growth at node 1: metrics (the growth rate fitted to the leading
-    segment of its horizontal amplitude, stickslip.fe.metrics, and the linear estimate of that rate,
-    linear_growth_rate) and the amplitude series (window centres [s], amplitudes [mm]) per MODE_WINDOW."""
+def mode_growth(r, frequency: float) -> tuple[dict, tuple]:
+    """Growth of node 1's horizontal amplitude at ``frequency`` [Hz] (any model's trajectory): metrics (the
+    growth rate fitted to the leading segment, stickslip.fe.metrics, its end, the frequency) and the
+    amplitude series (window centres [s], amplitudes [mm]) per MODE_WINDOW."""
     tc, amp = mode_amplitude(r.t, r.x - r.x[0], frequency, MODE_WINDOW)
     rate, end = leading_growth_rate(tc, amp)
     return {
         "first_mode_growth_rate": rate,
         "first_mode_growth_end": end,
-        "first_mode_growth_rate_linear": linear_growth_rate(scene, frequency, solver),
         "first_mode_frequency": float(frequency),
     }, (tc, amp)
+
+
+def first_mode_growth(scene, r, frequency: float, solver) -> tuple[dict, tuple]:
+    """The first contact-held mode's growth at node 1 (mode_growth) and the linear estimate of its rate
+    (linear_growth_rate)."""
+    m, series = mode_growth(r, frequency)
+    return {**m, "first_mode_growth_rate_linear": linear_growth_rate(scene, frequency, solver)}, series
 
 
 def run_scene(

@@ -13,10 +13,12 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from ..fe.metrics import trajectory_metrics
 from ..fe.params import FrictionTable
 from ..fe.scene import SceneParams
-from .fe import INTERPRETATION, result_dataset, run_scene
+from ..fe.step_halving import HALF_STEP, REL_TOL, apply_step_halving
+from .fe import INTERPRETATION, mode_growth, result_dataset, run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -71,8 +73,10 @@ def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: 
 def continuum_dataset(
     mapping: Mapping, friction: FrictionTable, *, nx: int = 100, ny: int = 1, name: str = ""
 ) -> xr.Dataset:
-    """Pure build: run the continuum strip for the scene mapping; same variables as the beam's dataset."""
-    from ..fe.continuum import integrate_continuum
+    """Pure build: run the continuum strip for the scene mapping; the beam dataset's trajectory metrics, and
+    the growth of the strip's own first contact-held mode at node 1 (the beam's first_mode_* variables
+    but the linear estimate)."""
+    from ..fe.continuum import integrate_continuum, natural_frequencies
 
     p = _params(mapping)
     scene = continuum_scene_from_mapping(mapping, friction, nx, ny)
@@ -84,6 +88,8 @@ def continuum_dataset(
         initial_state=p.solver.initial_state,
     )
     m = trajectory_metrics(r)
+    growth, r.extra["first_mode_amplitude"] = mode_growth(r, float(natural_frequencies(scene, 1)[0]))
+    m.update(growth)
     out = dict(mapping.get("output", {}) or {})
     ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
     ds.attrs.update(
@@ -99,9 +105,99 @@ def continuum_dataset(
             ),
             "method": f"explicit central difference, dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
             "diverged": int(r.extra.get("diverged", False)),
+            "t_end": float(p.solver.t_end),
         }
     )
     return ds
+
+
+def continuum_window_dataset(
+    mapping: Mapping, friction: FrictionTable, *, nx: int = 100, ny: int = 1, name: str = ""
+) -> xr.Dataset:
+    """The continuum strip over a claim's window, as a claims dataset: the base run and its step-halving
+    member (dt/2) as the perturbation ensemble (``<metric>_ensemble``, so a claim's spread holds the step's
+    effect), every metric checked by stickslip.fe.step_halving (``<metric>_half_step``, NaN and
+    ``<metric>_full_step`` where not converged). No perturbed members: at ~16 s CPU per simulated second
+    (dt/2: ~26 s) they are not affordable, and the beam's show a 1e-12 perturbation moves its metrics far
+    less than the step does."""
+    spec = EnsembleSpec(seeds=(), step_factor=HALF_STEP, blas_threads=None)
+    ds = ensemble_dataset(  # no perturbed members: the run id and fields decide no sign here
+        lambda mp: continuum_dataset(mp, friction, nx=nx, ny=ny, name=name),
+        mapping,
+        spec,
+        run_id=f"results/fe/continuum_window/{name}.nc",
+        fields=(),
+    )
+    ds = apply_step_halving(ds, step_member_values(ds))
+    ds.attrs["model"] = "continuum"
+    return ds
+
+
+def step_pair(ds: xr.Dataset, name: str) -> tuple[float, float]:
+    """(value at dt, value at dt/2) of a step-halved metric: ``<name>_full_step`` where the check removed
+    it, else ``<name>``; ``<name>_half_step`` (NaN when the dataset has none)."""
+    full = ds[f"{name}_full_step"] if f"{name}_full_step" in ds else ds.get(name)
+    half = ds.get(f"{name}_half_step")
+    return (
+        float(full) if full is not None else float("nan"),
+        float(half) if half is not None else float("nan"),
+    )
+
+
+#: quantities compared over a claim's window (beam dataset of the default reading vs continuum window run)
+WINDOW_QUANTITIES = ("first_mode_growth_rate", "separation_burst_time")
+#: the rule of the window rows' agreement column
+WINDOW_RULE = (
+    "none of the four values (beam and continuum, each at dt and dt/2) finite: both models say it does not "
+    "happen (no separation, no growth segment); else all four finite and of one sign, and the two models' "
+    "[min, max] ranges over dt and dt/2 overlap (the models differ by no more than the step moves either) "
+    f"or their dt/dt/2 means differ by <= {REL_TOL:g} relatively"
+)
+
+
+def window_agrees(beam: tuple[float, float], continuum: tuple[float, float], rel: float = REL_TOL) -> bool:
+    """WINDOW_RULE for (dt, dt/2) pairs of one quantity in the two models."""
+    v = np.array([*beam, *continuum], dtype=float)
+    if np.all(np.isnan(v)):
+        return True
+    if not np.all(np.isfinite(v)) or np.any(v == 0) or len(set(np.sign(v))) != 1:
+        return False
+    b, c = v[:2], v[2:]
+    overlap = b.min() <= c.max() and c.min() <= b.max()
+    return bool(overlap or abs(b.mean() - c.mean()) <= rel * abs(c.mean()))
+
+
+def window_rows(
+    continuum: Mapping[str, xr.Dataset],
+    beam: Mapping[str, xr.Dataset],
+    notes: Mapping[str, str] | None = None,
+) -> list[dict]:
+    """One row per (scene, WINDOW_QUANTITIES) over the claim's window: both models' values at dt and dt/2,
+    the agreement under WINDOW_RULE and, where they disagree, the config's note or one stating the numbers."""
+    notes = notes or {}
+    rows = []
+    for scene, cds in continuum.items():
+        for q in WINDOW_QUANTITIES:
+            c, b = step_pair(cds, q), step_pair(beam[scene], q)
+            ok = window_agrees(b, c)
+            rows.append(
+                {
+                    "scene": scene,
+                    "quantity": q,
+                    "continuum": c[0],
+                    "beam": b[0],
+                    "relative_difference": relative_difference(c[0], b[0]),
+                    "noise_floor": max(abs(c[1] - c[0]), abs(b[1] - b[0])),
+                    "agreement": ok,
+                    "agreement_rule": WINDOW_RULE,
+                    "note": "" if ok else _note(notes, scene, q, c[0], b[0]),
+                    "window": "claim",
+                    "t_end": float(cds.attrs.get("t_end", np.nan)),
+                    "continuum_half_step": c[1],
+                    "beam_half_step": b[1],
+                }
+            )
+    return rows
 
 
 def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
@@ -129,17 +225,30 @@ def agrees(continuum: float, beam: float, noise_floor: float = 0.0, rel: float =
     return bool(abs(relative_difference(continuum, beam)) <= rel)
 
 
+def _note(notes: Mapping[str, str], scene: str, q: str, continuum: float, beam: float) -> str:
+    """The config's note for a disagreeing (scene, quantity) (keys ``scene.quantity``, ``scene``,
+    ``quantity``), else one that states the numbers: no disagreeing row goes without a note."""
+    text = " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes)
+    return text or (
+        f"beam {beam:.4g} vs continuum {continuum:.4g} do not agree (no explanation in fe.comparison.notes)"
+    )
+
+
 def comparison_rows(
     continuum: Mapping[str, xr.Dataset],
     beam: Mapping[str, Mapping],
     notes: Mapping[str, str] | None = None,
     floors: Mapping[str, Mapping] | None = None,
+    beam_half_step: Mapping[str, Mapping] | None = None,
 ) -> list[dict]:
     """One row per (scene, quantity): continuum, beam, relative difference, the noise floor (``floors``
-    [scene][quantity], 0 when not measured), the agreement flag and its rule, and the config's note for
-    the scene (or the quantity) where they do not agree."""
+    [scene][quantity], 0 when not measured), the agreement flag and its rule, and for a row that does not
+    agree the config's note for the scene (or the quantity), or one stating the numbers (_note). Columns
+    shared with window_rows: ``window`` ("short"), ``t_end``, the beam's value at half the step
+    (``beam_half_step``[scene][quantity], NaN when not given) and the continuum's (not run: NaN)."""
     notes = notes or {}
     floors = floors or {}
+    beam_half_step = beam_half_step or {}
     rows = []
     for scene, ds in continuum.items():
         ok_of = {}
@@ -159,21 +268,24 @@ def comparison_rows(
                     "noise_floor": floor,
                     "agreement": ok,
                     "agreement_rule": AGREEMENT_RULE,
-                    "note": ""
-                    if ok
-                    else " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes),
+                    "note": "" if ok else _note(notes, scene, q, c, b),
+                    "window": "short",
+                    "t_end": float(ds.attrs.get("t_end", np.nan)),
+                    "continuum_half_step": float("nan"),
+                    "beam_half_step": float(beam_half_step.get(scene, {}).get(q, np.nan)),
                 }
             )
     return rows
 
 
 def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], beam: Mapping[str, Mapping]):
-    """The comparison table as a dataset (scene x quantity), with the CPU times of both models."""
+    """The comparison table as a dataset (scene x quantity), with the CPU times of both models; the rows over
+    a claim's window (window_rows) as ``window_*`` variables (window_dataset)."""
     scenes = list(continuum)
     qs = list(QUANTITIES)
     keys = ("continuum", "beam", "relative_difference", "noise_floor", "agreement")
     arr = {k: np.full((len(scenes), len(qs)), np.nan) for k in keys}
-    for r in rows:
+    for r in (r for r in rows if r.get("window", "short") == "short"):
         i, j = scenes.index(r["scene"]), qs.index(r["quantity"])
         for k in arr:
             arr[k][i, j] = float(r[k])
@@ -228,7 +340,49 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
             "method": "both models from the same scene mapping and window",
         }
     )
-    return ds
+    window = [r for r in rows if r.get("window") == "claim"]
+    return ds.merge(window_dataset(window)) if window else ds
+
+
+def window_dataset(rows: list[dict]) -> xr.Dataset:
+    """The rows over a claim's window (window_rows) as ``window_scene x window_quantity (x time_step)``."""
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    qs = list(dict.fromkeys(r["quantity"] for r in rows))
+    shape = (len(scenes), len(qs))
+    beam, cont = np.full((*shape, 2), np.nan), np.full((*shape, 2), np.nan)
+    ok, t_end = np.zeros(shape, "i1"), np.full(len(scenes), np.nan)
+    for r in rows:
+        i, j = scenes.index(r["scene"]), qs.index(r["quantity"])
+        beam[i, j] = r["beam"], r["beam_half_step"]
+        cont[i, j] = r["continuum"], r["continuum_half_step"]
+        ok[i, j] = bool(r["agreement"])
+        t_end[i] = r["t_end"]
+    dims = ("window_scene", "window_quantity", "time_step")
+    return xr.Dataset(
+        {
+            "window_beam_value": (
+                dims,
+                beam,
+                {"units": "1", "long_name": "beam model value (quantity's units)"},
+            ),
+            "window_continuum_value": (
+                dims,
+                cont,
+                {"units": "1", "long_name": "continuum strip value (quantity's units)"},
+            ),
+            "window_agreement": (
+                dims[:2],
+                ok,
+                {"units": "1", "long_name": "beam and continuum agree", "rule": WINDOW_RULE},
+            ),
+            "window_t_end": ("window_scene", t_end, {"units": "s", "long_name": "claim window of both runs"}),
+        },
+        coords={
+            "window_scene": ("window_scene", scenes),
+            "window_quantity": ("window_quantity", qs),
+            "time_step": ("time_step", ["dt", "dt/2"], {"long_name": "explicit time step"}),
+        },
+    )
 
 
 def increments_dataset(

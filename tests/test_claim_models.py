@@ -1,0 +1,114 @@
+"""The model that decides a beam-on-disc claim: named on every row, and the beam never deciding where the
+model comparison finds it disagreeing with the continuum (the paper's kind of model)."""
+
+import csv
+
+import pytest
+import xarray as xr
+from pydantic import ValidationError
+
+from stickslip.io.claim_models import annotate, read_comparison
+from stickslip.io.claim_rows import ClaimRow
+from stickslip.io.claims import evaluate, load_claims
+
+BEAM = "results/fe/lower_face_drop/s10.nc"
+CONT = "results/fe/continuum_window/s10.nc"
+ROW = {
+    "id": "c",
+    "section": "10",
+    "figure": "Fig. 27",
+    "figures": [27],
+    "quote": "q",
+    "kind": "value",
+    "dataset": BEAM,
+    "variable": "max_horizontal_displacement",
+    "value": 1e-4,
+    "unit": "mm",
+    "tolerance": {"rel": 0.25, "reason": "test"},
+    "expected": "deviates",
+    "evidence": "evidence",
+    "model": "beam",
+}
+
+
+def _comparison(tmp_path, rows):
+    path = tmp_path / "model_comparison.csv"
+    keys = ["scene", "quantity", "continuum", "beam", "agreement", "note", "window", "t_end"]
+    keys += ["beam_half_step", "continuum_half_step"]
+    with path.open("w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in keys})
+    return read_comparison(path)
+
+
+def test_a_beam_on_disc_row_names_a_model_that_matches_its_dataset():
+    ClaimRow.model_validate(ROW)
+    with pytest.raises(ValidationError, match="names its model"):
+        ClaimRow.model_validate({k: v for k, v in ROW.items() if k != "model"})
+    with pytest.raises(ValidationError, match="subject dataset"):
+        ClaimRow.model_validate({**ROW, "model": "continuum"})
+    with pytest.raises(ValidationError, match="subject dataset"):
+        ClaimRow.model_validate({**ROW, "dataset": CONT})
+    with pytest.raises(ValidationError, match="only a beam-on-disc row"):
+        ClaimRow.model_validate({**ROW, "dataset": "results/onedof/x.nc"})
+
+
+def test_every_beam_on_disc_row_of_the_project_names_its_model():
+    rows = [c for c in load_claims(["config/claims/sections_09_12.yaml"])]
+    fe = [
+        c
+        for c in rows
+        if any(
+            p.startswith("results/fe/")
+            for p in ClaimRow.model_validate({k: v for k, v in c.items() if k != "_file"}).dataset_paths()
+        )
+    ]
+    assert fe and all(c["model"] in ("beam", "continuum", "reduced", "closed_form") for c in fe)
+    # Section 10 is decided by the model of its literal setup (upper face held): the continuum
+    assert all(c["model"] == "continuum" for c in rows if c["section"] == "10")
+
+
+def test_a_beam_row_whose_comparison_disagrees_is_not_decided(tmp_path):
+    ds = xr.Dataset({"max_horizontal_displacement": 3e-4})
+    disagree = {"scene": "s10", "quantity": "horizontal_amplitude", "continuum": "1e-8", "beam": "3e-4"}
+    disagree |= {"agreement": "False", "note": "not the same model", "window": "short"}
+    (row,) = annotate([ROW], _comparison(tmp_path, [disagree]))
+    result = evaluate(row, "", lambda path: ds)
+    assert result.status == "not-comparable"
+    assert "the beam is not adequate here" in result.reason and "not the same model" in result.reason
+    # the same row where the models agree is decided as before
+    agree = {**disagree, "agreement": "True", "note": ""}
+    (row,) = annotate([ROW], _comparison(tmp_path, [agree]))
+    assert evaluate(row, "", lambda path: ds).status == "deviates"
+    # the continuum's own row is never held back by the beam's disagreement
+    (row,) = annotate([{**ROW, "dataset": CONT, "model": "continuum"}], _comparison(tmp_path, [disagree]))
+    assert evaluate(row, "", lambda path: ds).status == "deviates"
+
+
+def test_a_beam_operand_on_the_other_side_of_a_continuum_row_is_checked_too(tmp_path):
+    row = {k: v for k, v in ROW.items() if k not in ("dataset", "variable", "value", "unit", "tolerance")}
+    row |= {"kind": "compare", "relation": ">", "model": "continuum"}
+    row |= {"lhs": {"dataset": CONT, "variable": "max_horizontal_displacement"}}
+    row |= {"rhs": {"dataset": BEAM, "variable": "max_horizontal_displacement"}}
+    ClaimRow.model_validate(row)
+    disagree = {"scene": "s10", "quantity": "horizontal_amplitude", "continuum": "1", "beam": "2"}
+    disagree |= {"agreement": "False", "note": "n", "window": "short"}
+    (annotated,) = annotate([row], _comparison(tmp_path, [disagree]))
+    assert evaluate(annotated, "", lambda path: xr.Dataset({"max_horizontal_displacement": 1.0})).status == (
+        "not-comparable"
+    )
+
+
+def test_a_growth_verdict_cites_both_models_at_both_steps(tmp_path):
+    window = {"scene": "s10", "quantity": "first_mode_growth_rate", "continuum": "0.523", "beam": "0.565"}
+    window |= {"agreement": "True", "note": "", "window": "claim", "t_end": "1.0"}
+    window |= {"beam_half_step": "0.536", "continuum_half_step": "0.570"}
+    row = {**ROW, "kind": "compare", "relation": ">", "rhs": {"value": 0.0}}
+    row = {k: v for k, v in row.items() if k not in ("dataset", "variable", "value", "unit", "tolerance")}
+    row["lhs"] = {"dataset": BEAM, "variable": "first_mode_growth_rate"}
+    (annotated,) = annotate([row], _comparison(tmp_path, [window]))
+    result = evaluate(annotated, "", lambda path: xr.Dataset({"first_mode_growth_rate": 0.565}))
+    assert result.status == "reproduced"
+    assert "beam 0.565/0.536, continuum 0.523/0.57 (agree)" in result.reason
