@@ -176,9 +176,19 @@ def run_mapping(c: dict):
     )  # fmt: skip
 
 
+def float_fields(node, path: str = "") -> list[str]:
+    """Dotted paths of every float setting of a case mapping (integers such as step counts stay exact): the
+    fields its round-off ensemble perturbs."""
+    if isinstance(node, dict):
+        return [f for k, v in node.items() for f in float_fields(v, f"{path}.{k}" if path else str(k))]
+    return [path] if isinstance(node, float) else []
+
+
 def run_case(name: str, relative: float = 0.0, seed: int = 0):
     c = case_mappings()[name]
-    return run_mapping(perturbed_mapping(c, relative, seed) if relative else c)
+    if not relative:
+        return run_mapping(c)
+    return run_mapping(perturbed_mapping(c, relative, seed, run_id=name, fields=float_fields(c)))
 
 
 # -------------------------------------------------------------------------------------------- summaries
