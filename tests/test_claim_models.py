@@ -65,7 +65,7 @@ def test_every_beam_on_disc_row_of_the_project_names_its_model():
             for p in ClaimRow.model_validate({k: v for k, v in c.items() if k != "_file"}).dataset_paths()
         )
     ]
-    assert fe and all(c["model"] in ("beam", "continuum", "reduced", "closed_form") for c in fe)
+    assert fe and all(c["model"] in ("beam", "continuum", "reduced", "closed_form", "peer") for c in fe)
     # Section 10 is decided by the model of its literal setup (upper face held): the continuum
     assert all(c["model"] == "continuum" for c in rows if c["section"] == "10")
 

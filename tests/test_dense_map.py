@@ -111,7 +111,7 @@ def test_chunk_size_making_too_many_jobs_names_the_key():
     [
         ({"name": "dampening", "values": [1.0]}, r"axes\[0\]\.name: 'dampening' is not a parameter"),
         ({"name": "damping", "start": -1.0, "stop": 1.0, "num": 3}, r"axes\[0\] \(damping = -1\): damping"),
-        ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]: num: missing"),
+        ({"name": "damping", "start": 0.1, "stop": 1.0}, r"axes\[0\]\.num: missing"),
         (
             {"name": "damping", "start": 0.0, "stop": 1.0, "num": 3, "spacing": "log"},
             r"axes\[0\]: log spacing",
@@ -133,7 +133,7 @@ def test_an_axis_swept_twice_names_the_key():
     config = small_config()
     axes = config["dense_map"]["maps"]["speed_damping"]["axes"]
     axes.append(dict(axes[0]))
-    with pytest.raises(ConfigError, match=r"speed_damping: axes\[2\]\.name: 'belt_velocity' is swept twice"):
+    with pytest.raises(ConfigError, match=r"speed_damping\.axes\[2\]\.name: 'belt_velocity' is swept twice"):
         validate_config(config, producible=TABLE)
 
 
