@@ -20,7 +20,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Timer, Trajectory
+from .base import (
+    SLIP_BACKWARD,
+    SLIP_FORWARD,
+    STICK,
+    SolverError,
+    SolverStats,
+    Timer,
+    Trajectory,
+    reading_model,
+)
 
 
 @dataclass
@@ -37,6 +46,7 @@ class MoreauJean:
         return {"h": self.h, "theta": self.theta}
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        model = reading_model(model, self.name)
         if not self.h > 0:
             raise ValueError(f"h: must be > 0, got {self.h!r}")
         if not 0.0 <= self.theta <= 1.0:
