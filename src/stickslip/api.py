@@ -56,11 +56,22 @@ def project_root(root: str | Path | None = None) -> Path:
 
 def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path | None = None) -> dict:
     """The config the Snakefile builds: every ``config/*.yaml`` of the project, then ``configfiles`` in
-    order (a null removes an entry). Not yet validated."""
-    from .pipeline.config import load_config
+    order (a null removes an entry). Not yet validated.
+
+    Built in the Snakefile's order, key order included: Snakemake reads the ``--configfile`` files first,
+    then the Snakefile merges everything over them, so an overlay's keys come first in every mapping. The
+    perturbation ensemble draws its signs in the mapping's key order (``ensemble.perturbed_mapping``), so
+    only this order gives the pipeline's ensemble members."""
+    from .io.yaml_files import load_yaml
+    from .pipeline.config import drop_removed, load_config, merge
 
     base = project_root(root)
-    return load_config(sorted((base / "config").glob("*.yaml")) + [Path(p) for p in configfiles])
+    overlays = [Path(p) for p in configfiles]
+    config: dict = {}
+    for path in overlays:  # what Snakemake's own --configfile loading gives the Snakefile
+        config = merge(config, load_yaml(path) or {})
+    config = merge(config, load_config(sorted((base / "config").glob("*.yaml")) + overlays))
+    return drop_removed(config)
 
 
 def _validated(config: dict) -> dict:
