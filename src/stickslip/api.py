@@ -168,6 +168,7 @@ def simulate(
     output: str | Path | None = None,
     configfiles: Sequence[str | Path] = (),
     root: str | Path | None = None,
+    config: dict | None = None,
     **params: float,
 ) -> xr.Dataset:
     """One 1-DOF run: time series, the paper's metrics (amplitude, frequency, stick and slip time, ...),
@@ -180,12 +181,13 @@ def simulate(
     mapping (``{"kind": "stribeck", "mu_k": 0.3, "v_s": 0.5}``; ``mu_s`` defaults to the run's) or a law of
     ``stickslip.model.laws``. ``ensemble`` adds the config's perturbation ensemble (``<metric>_ensemble``),
     built over this run's config. ``output`` writes the dataset with the pipeline's writer and returns it as
-    read back (checksum verified). A bad value raises ``ConfigError`` naming its config key."""
+    read back (checksum verified). ``config``: the project config already loaded (``load_project_config``)
+    instead of reading ``configfiles``. A bad value raises ``ConfigError`` naming its config key."""
     from .ensemble import ensemble_dataset
     from .studies.onedof import scene_run_dataset
     from .studies.specs import run_spec
 
-    config = load_project_config(configfiles, root)
+    config = config if config is not None else load_project_config(configfiles, root)
     baseline = config["onedof"]["baseline"]
     run = {
         k: v

@@ -201,6 +201,8 @@ def paper_values(config: dict, root: Path) -> dict[str, list[tuple[float, str]]]
 
     out: dict[str, list[tuple[float, str]]] = {}
     for path in sorted((root / "config" / "claims").glob("*.yaml")):
+        if target not in path.read_text():  # parse only the files with a claim on the baseline's dataset
+            continue
         for row in load_yaml(path) or []:
             if row.get("kind") == "value" and row.get("dataset") == target and row.get("variable") in METRICS:
                 out.setdefault(row["variable"], []).append((float(row["value"]), row["id"]))
@@ -218,6 +220,8 @@ def cmd_run(args) -> int:
     run = {k: getattr(args, k) for k in RUN_LENGTHS if getattr(args, k) is not None}
     law = _law(args.law)
     try:
+        root = api.project_root(args.root)
+        config = api.load_project_config(args.configfile, root)
         ds = api.simulate(
             args.scene,
             reading=args.reading,
@@ -225,13 +229,11 @@ def cmd_run(args) -> int:
             law=law,
             ensemble=args.ensemble,
             output=args.output,
-            configfiles=args.configfile,
-            root=args.root,
+            root=root,
+            config=config,
             **run,
             **params,
         )
-        root = api.project_root(args.root)
-        config = api.load_project_config(args.configfile, root)
         reading = args.reading or config["onedof"]["baseline"]["reading"]
         base, where = baseline_metrics(config, reading, root)
     except ConfigError as exc:
