@@ -20,7 +20,7 @@ from stickslip.model.params import BeltParams, ParameterError
 from stickslip.pipeline.config import ConfigError
 from stickslip.solvers import make_solver
 
-from project_run import shared_small_run
+from project_run import ROOT, shared_small_run
 
 BASE = BeltParams.from_mapping(
     dict(
@@ -187,3 +187,28 @@ def test_fe_output_equals_the_pipelines_scene_dataset(tmp_path_factory, tmp_path
     assert "ensemble_member" in ds.dims  # the ensemble and the step-halving check, as rule fe_reading
     pipeline = work / "results" / "fe" / "lower_face_drop" / "section9_kinematic_0p5mm_s.nc"
     assert data_differences(out, pipeline) == []
+
+
+def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, capsys):
+    """Two claims on Fig. 2 (one reproduced, one deviating): verdict 'partly', with the reasons."""
+    import csv
+
+    from stickslip.io.claims import FIELDS
+
+    (tmp_path / "config").symlink_to(ROOT / "config")
+    table = tmp_path / "results" / "claims" / "deviations.csv"
+    table.parent.mkdir(parents=True)
+    rows = [
+        {"claim": "s3_frequency", "reading": "consistent_caption", "status": "deviates", "reason": "0.28 Hz"},
+        {"claim": "s3_stick_velocity", "reading": "consistent_caption", "status": "reproduced", "reason": ""},
+        {"claim": "s6_something_else", "reading": "consistent_caption", "status": "deviates", "reason": "x"},
+    ]
+    with open(table, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=FIELDS, restval="")
+        writer.writeheader()
+        writer.writerows(rows)
+    assert main(["claims", "--figure", "2", "--root", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("Fig. 2: partly in reading consistent_caption")
+    assert "- s3_frequency: deviates" in out and "reason: 0.28 Hz" in out
+    assert "s6_something_else" not in out  # not a claim about Fig. 2
