@@ -95,3 +95,21 @@ clean:
 slurm-test: $(STAMP)
 	$(BIN)/uv pip install --quiet --python $(BIN)/python -e '.[pipeline,test,slurm]'
 	STICKSLIP_SLURM_TEST=1 $(BIN)/python -m pytest -q -rA tests/slurm
+
+# Every target with one line on what it does, then the console command (docs/USAGE.md).
+.PHONY: help
+help:
+	@echo "make targets:"
+	@echo "  setup       create .venv from the lock (requirements/lock.txt), then install the project"
+	@echo "  figures     rebuild every result with snakemake -j$(JOBS) (results/index.html answers the paper)"
+	@echo "  test        the whole test suite on $(JOBS) cores (incl. the claims check)"
+	@echo "  lint        ruff, snakefmt --check, snakemake --lint"
+	@echo "  report      the pipeline, then results/report.html (every figure captioned)"
+	@echo "  bench       every benchmarks/bench_*.py"
+	@echo "  repair      rebuild every dataset whose content checksum fails, and what depends on it"
+	@echo "  lock        re-resolve the lock to the newest allowed versions"
+	@echo "  clean       remove results/ and .snakemake/"
+	@echo "  slurm-test  opt-in: a small chunked map through a local SLURM"
+	@echo "  help        this list"
+	@echo "your own scenario (after make setup): .venv/bin/stickslip --help"
+	@echo "  stickslip run --mu-s 0.6 --damping 1.0 | fe --scene ... | claims --figure 2 | show FILE.nc"

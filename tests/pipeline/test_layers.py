@@ -27,3 +27,14 @@ def test_a_science_module_never_reaches_presentation_or_the_pipeline(path):
     assert not above, (
         f"{path.relative_to(PACKAGE)} reaches {sorted(str(p.relative_to(PACKAGE)) for p in above)}"
     )
+
+
+WORKFLOW = SRC.parent / "workflow" / "scripts"
+
+
+@pytest.mark.parametrize("script", sorted(WORKFLOW.glob("*.py")), ids=lambda p: p.name)
+def test_no_pipeline_job_reaches_the_api_or_the_command_line(script):
+    """``stickslip/__init__`` loads ``simulate``/``simulate_fe`` by name; no job's code may count them (an
+    edit of the command line or the API must re-run no pipeline job)."""
+    reached = {p.name for p in dependency_files([script], SRC) if p.parent == PACKAGE} & {"api.py", "cli.py"}
+    assert not reached, f"{script.name} reaches {sorted(reached)}"

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .. import __version__
+from .._version import __version__
 from ..analysis.metrics import Metric
 from ..solvers.base import Trajectory
 

@@ -391,3 +391,21 @@ class LawModel:
     def static_force(self) -> float:
         """N mu_static: the largest friction force stick can supply [N]."""
         return self.params.normal_force * self.law.static
+
+    @property
+    def slip_friction(self) -> SlipFriction:
+        """The law at this model's normal force, as ``force(v, v_b)`` (what the metrics of a run read)."""
+        return SlipFriction(self.law, self.params.normal_force)
+
+
+@dataclass(frozen=True)
+class SlipFriction:
+    """A law's slip force as a function of mass and belt velocity, ``force(v, v_b)`` [N]: the interface of the
+    readings' friction (``friction.py``) that ``analysis.friction_curve`` reads."""
+
+    law: FrictionLaw
+    normal_force: float
+
+    def force(self, velocity, belt_velocity):
+        vr = np.asarray(velocity, dtype=float) - np.asarray(belt_velocity, dtype=float)
+        return self.law.force(vr, self.normal_force)

@@ -170,6 +170,7 @@ class Scene(RunLengths):
     figure: str | None = None
     description: str | None = None
     params: BeltParameters | None = None
+    law: Law | None = None  # any friction law replacing the reading's (as in sweeps; switch solver only)
 
 
 class Eq6(Section):
@@ -306,6 +307,9 @@ class Onedof(Section):
         check_refs(methods, self.methods, "onedof.methods")
         for name, sweep in self.sweeps.items():
             needs_switch(f"onedof.sweeps.{name}", sweep.law, sweep.method or base.method, self.methods)
+        for name, fig in self.figures.items():  # a scene with its own law runs only under the switch solver
+            for method in fig.methods:
+                needs_switch(f"onedof.figures.{name}", self.scenes[fig.scene].law, method, self.methods)
         for name, scene in self.scenes.items():
             for rname, reading in self.readings.items():
                 check_run_lengths(

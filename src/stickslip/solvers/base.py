@@ -141,3 +141,26 @@ def check_settings(solver) -> None:
     method = getattr(solver, "method", None)
     if method is not None and method not in IVP_METHODS:
         raise ValueError(f"method: {method!r} is not one of {IVP_METHODS}")
+
+
+def reading_model(model, solver: str):
+    """The model a solver of the paper's readings (exact, sign-RK, smoothed, Karnopp, Moreau) integrates.
+
+    Those solvers need the readings' affine friction (``model.friction``). A ``LawModel`` of an affine law is
+    that law's ``consistent`` reading and is converted; any other friction law (Stribeck, Coulomb, rational,
+    tabulated) is solved by the switch solver only, and the error says so by name instead of failing later
+    on a missing attribute."""
+    law = getattr(model, "law", None)
+    if law is None or hasattr(model, "friction"):
+        return model
+    from ..model.equations import BeltModel
+    from ..model.laws import AffineLaw, LawModel
+    from ..model.params import ParameterError
+
+    if isinstance(model, LawModel) and isinstance(law, AffineLaw):
+        params = model.params.with_(mu_s=law.mu_s, sigma=law.sigma, plateau_speed=law.plateau_speed)
+        return BeltModel.build(params, "consistent")
+    raise ParameterError(
+        f"solver: {solver!r} integrates the paper's affine friction readings only; a {law.kind!r} friction "
+        "law needs the 'switch' solver (make_solver('switch'), or a method whose solver is 'switch')"
+    )

@@ -17,7 +17,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, reading_model
 from .events import (
     EventDrivenSolver,
     Segment,
@@ -79,6 +79,9 @@ class ExactSwitchSolver(EventDrivenSolver):
     @property
     def settings(self) -> dict:
         return {"samples_per_period": self.samples_per_period, "graze_tolerance": self.graze_tolerance}
+
+    def _integrated(self, model):
+        return reading_model(model, self.name)
 
     def _phase(self, model, mode, t, x, v, t_limit, stats):
         if mode == STICK:

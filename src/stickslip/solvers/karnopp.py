@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.equations import BeltModel
-from .base import Trajectory
+from .base import Trajectory, reading_model
 from .ivp import default_t_eval, integrate
 
 
@@ -33,6 +33,7 @@ class Karnopp:
         return {"eta": self.eta, "method": self.method, "rtol": self.rtol, "atol": self.atol}
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        model = reading_model(model, self.name)
         if self.eta <= 0:
             raise ValueError(f"eta: must be > 0, got {self.eta!r}")
         t_eval = default_t_eval(t_end, t_eval)

@@ -29,6 +29,7 @@ from .base import (
     Timer,
     Trajectory,
     default_t_eval,
+    reading_model,
 )
 
 
@@ -46,6 +47,7 @@ class MoreauJean:
         return {"h": self.h, "theta": self.theta}
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        model = reading_model(model, self.name)
         if not self.h > 0:
             raise ValueError(f"h: must be > 0, got {self.h!r}")
         if not 0.0 < self.theta <= 1.0:  # the range check_settings enforces at parse time

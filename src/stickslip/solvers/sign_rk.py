@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.equations import BeltModel
-from .base import Trajectory
+from .base import Trajectory, reading_model
 from .ivp import default_t_eval, integrate
 
 
@@ -36,6 +36,7 @@ class SignRungeKutta:
         }
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        model = reading_model(model, self.name)
         return integrate(
             model,
             model.rhs,

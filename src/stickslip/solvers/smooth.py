@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.equations import BeltModel
-from .base import Trajectory
+from .base import Trajectory, reading_model
 from .ivp import default_t_eval, integrate
 
 REGULARIZATIONS = ("tanh", "arctan")
@@ -57,6 +57,7 @@ class SmoothedSign:
         }
 
     def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
+        model = reading_model(model, self.name)
         t_eval = default_t_eval(t_end, t_eval)
         sgn, dsgn = smooth_sign(self.regularization, self.eps)
         p, f, m = model.params, model.friction, model.mass

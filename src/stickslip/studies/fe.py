@@ -609,11 +609,11 @@ def shape_variables(scene, q_static: np.ndarray) -> dict:
     return out
 
 
-def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "") -> xr.Dataset:
+def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "", progress=None) -> xr.Dataset:
     """Pure build of one scene's dataset from its merged config mapping (the ensemble contract:
     ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
-    and ``bin_width`` [s]."""
-    r, m, scene = run_scene(mapping, friction, midspan=True)
+    and ``bin_width`` [s]; ``progress(done, total)`` sees the time steps (``run_scene``)."""
+    r, m, scene = run_scene(mapping, friction, midspan=True, progress=progress)
     out = dict(mapping.get("output", {}) or {})
     ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
     ds = ds.assign(shape_variables(scene, r.q_static))

@@ -27,7 +27,7 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     if "stick_fraction" in ds:
         ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
     if traj.ok:
-        friction, normal = spec.model.friction, spec.params.normal_force
+        friction, normal = spec.friction, spec.params.normal_force
         extra = extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, friction, normal)
         for name, value in extra.items():
             ds[name] = ((), value, metric_attrs(name))

@@ -17,7 +17,7 @@ import numpy as np
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..analysis.sweep import SweepAxis, chunk_count, grid_size, run_points
 from ..model.equations import BeltModel
-from ..model.laws import FrictionLaw, law_from_config
+from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
 from ..solvers import make_solver
 from ..solvers.base import sample_times
@@ -74,10 +74,21 @@ class RunSpec:
     solver_settings: dict
     figure: str
     description: str
+    law: FrictionLaw | None = None
+    """The scene's own friction law (``onedof.scenes.<scene>.law``, switch solver); None: the reading's."""
 
     @property
-    def model(self) -> BeltModel:
+    def model(self) -> BeltModel | LawModel:
+        if self.law is not None:
+            return LawModel(self.params, self.law)
         return BeltModel.build(self.params, self.variant)
+
+    @property
+    def friction(self):
+        """The friction the metrics read (``force(v, v_b)``): the reading's, or the scene's law at N."""
+        if self.law is not None:
+            return self.model.slip_friction
+        return self.model.friction
 
     def solver(self):
         """The configured method; with ``budget: {max_rhs: N}`` a stall becomes a failed run."""
@@ -96,7 +107,7 @@ class RunSpec:
         return sample_times(self.t_end, self.output_dt)
 
     def interpretation(self) -> dict:
-        return {
+        out = {
             "reading": self.reading,
             "variant": self.variant,
             "sigma": self.params.sigma,
@@ -104,9 +115,13 @@ class RunSpec:
             "plateau_speed": self.params.plateau_speed,
             "equation": EQUATIONS[self.variant],
         }
+        if self.law is not None:  # the scene's law replaces the reading's friction (mu_s, sigma unused)
+            out["friction_law"] = repr(self.law)
+            out["equation"] = "M x'' + C x' + K x = F, F from friction_law (the reading's friction unused)"
+        return out
 
     def scene_attrs(self) -> dict:
-        return {
+        out = {
             "name": self.scene,
             "figure": self.figure,
             "description": self.description,
@@ -115,6 +130,9 @@ class RunSpec:
             "transient": self.transient,
             **self.params.as_dict(),
         }
+        if self.law is not None:
+            out["friction_law"] = repr(self.law)
+        return out
 
 
 def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
@@ -144,8 +162,14 @@ def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
         solver_settings=dict(method_cfg),
         figure=str(scene_cfg.get("figure") or ""),
         description=str(scene_cfg.get("description") or ""),
+        law=_law(scene_cfg, f"onedof.scenes.{scene}"),
     )
     spec.solver()  # the solver checks its settings at construction: fail now, naming the method
+    if spec.law is not None and spec.solver_settings.get("solver") != "switch":
+        raise ParameterError(
+            f"onedof.scenes.{scene}.law: a {spec.law.kind!r} friction law is solved by the 'switch' solver "
+            f"only; method {method!r} uses {spec.solver_settings.get('solver')!r}"
+        )
     return spec
 
 
