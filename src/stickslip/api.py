@@ -59,9 +59,8 @@ def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path
     order (a null removes an entry). Not yet validated.
 
     Built in the Snakefile's order, key order included: Snakemake reads the ``--configfile`` files first,
-    then the Snakefile merges everything over them, so an overlay's keys come first in every mapping. The
-    perturbation ensemble draws its signs in the mapping's key order (``ensemble.perturbed_mapping``), so
-    only this order gives the pipeline's ensemble members."""
+    then the Snakefile merges everything over them, so an overlay's keys come first in every mapping (the
+    perturbation ensemble does not depend on it: its signs are drawn by run id and field path)."""
     from .io.yaml_files import load_yaml
     from .pipeline.config import drop_removed, load_config, merge
 
@@ -184,8 +183,9 @@ def simulate(
     read back (checksum verified). ``config``: the project config already loaded (``load_project_config``)
     instead of reading ``configfiles``. A bad value raises ``ConfigError`` naming its config key."""
     from .ensemble import ensemble_dataset
+    from .pipeline.catalogue import onedof_dataset
     from .studies.onedof import scene_run_dataset
-    from .studies.specs import run_spec
+    from .studies.specs import PERTURBED_FIELDS, run_spec
 
     config = config if config is not None else load_project_config(configfiles, root)
     baseline = config["onedof"]["baseline"]
@@ -210,10 +210,12 @@ def simulate(
         from .pipeline.config import ConfigError
 
         raise ConfigError(str(exc)) from None
-    ds = ensemble_dataset(
+    ds = ensemble_dataset(  # signs drawn by name: the run's dataset path in the pipeline's catalogue
         lambda cfg: scene_run_dataset(run_spec(cfg, name, reading, method)),
         config,
         _ensemble_spec(config, ensemble),
+        run_id=onedof_dataset(name, reading, method),
+        fields=PERTURBED_FIELDS,
     )
     attrs = {
         "scene": spec.scene_attrs(),
@@ -285,7 +287,13 @@ def simulate_fe(
     from .fe.params import FrictionTable
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError
-    from .studies.fe import INTERPRETATION, effective_fe_config, scene_dataset, scene_mapping
+    from .studies.fe import (
+        INTERPRETATION,
+        PERTURBED_FIELDS,
+        effective_fe_config,
+        scene_dataset,
+        scene_mapping,
+    )
     from .studies.fe_comparison import continuum_dataset
 
     config = load_project_config(configfiles, root)
@@ -328,7 +336,10 @@ def simulate_fe(
     if ensemble:
         spec = EnsembleSpec.from_mapping(config.get("ensemble")).without_blas()
         spec = replace(spec, step_factor=HALF_STEP)
-    ds = ensemble_dataset(build, mapping, spec)
+    # signs drawn by name: the scene's dataset path as rule fe_reading writes it
+    ds = ensemble_dataset(
+        build, mapping, spec, run_id=f"results/fe/{reading}/{name}.nc", fields=PERTURBED_FIELDS
+    )
     if ensemble:
         ds = apply_step_halving(ds, step_member_values(ds))
     ds.attrs["fe_reading"] = reading
