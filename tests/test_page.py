@@ -396,3 +396,13 @@ def test_a_figure_card_shows_the_image_of_that_figure_alone_first():
     best = Source("results/figures/fig02/plateau_text.png", [2, 3], "plateau_text", "r")
     other = Source("results/figures/fig02/consistent_text.png", [2], "consistent_text", "r")
     assert sorted([other, best], key=lambda s: image_rank(s, "plateau_text", [], []))[0] is best
+
+
+def test_an_unidentified_inverse_quantity_is_shown_as_a_range_never_a_point():
+    from stickslip.presentation.page import range_text
+
+    row = {"best_sigma": "", "lower_sigma": "0.19", "upper_sigma": "1.5", "identifiable_sigma": "0",
+           "open_sigma": "above", "best_k": "7.8", "lower_k": "6.5", "upper_k": "9.5", "identifiable_k": "1"}  # fmt: skip
+    assert range_text(row, "sigma") == "sigma: range 0.19–1.5 (open above)"
+    assert range_text(row, "k") == "k = 7.8 [6.5, 9.5]"
+    assert range_text(row, "absent") == ""

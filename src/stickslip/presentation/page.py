@@ -203,6 +203,24 @@ def make_thumbnails(jobs, workers: int = 2) -> None:
         list(pool.map(lambda job: thumbnail(*job), jobs))
 
 
+#: Per-quantity columns of the inverse study's tables, shown as one range_text cell each.
+RANGE_PREFIXES = ("best_", "stated_", "lower_", "upper_", "identifiable_", "open_")
+KEPT_COLUMNS = ("identifiable_dimensions",)
+
+
+def range_text(row: dict, quantity: str) -> str:
+    """``q = best [lo, hi]`` for an identified quantity, ``q: range lo-hi (open above)`` for one that is not
+    (never a point), from an inverse table's best_/lower_/upper_/identifiable_/open_ columns."""
+    lo, hi = fmt(row.get(f"lower_{quantity}")), fmt(row.get(f"upper_{quantity}"))
+    best = fmt(row.get(f"best_{quantity}"))
+    if not (lo or hi or best):
+        return ""
+    if str(row.get(f"identifiable_{quantity}", "1")) in ("0", "0.0", "False"):
+        opened = row.get(f"open_{quantity}") or ""
+        return f"{quantity}: range {lo}–{hi}" + (f" (open {opened})" if opened else "")
+    return f"{quantity} = {best} [{lo}, {hi}]" if lo or hi else f"{quantity} = {best}"
+
+
 class PageBuilder:
     """Gathers every card's content from a run's results (paths relative to ``workdir``)."""
 
@@ -281,15 +299,19 @@ class PageBuilder:
             mine = [r for r in rows if r.get("figure") in names]
             if not mine:
                 continue
-            columns = [c for c in mine[0] if not c.startswith(("best_", "stated_"))]
+            ranged = [c[len("lower_") :] for c in mine[0] if c.startswith("lower_")]
+            columns = [c for c in mine[0] if not c.startswith(RANGE_PREFIXES) or c in KEPT_COLUMNS]
+            rows = [[fmt(r[c]) if c not in ("figure", "family") else r[c] for c in columns] for r in mine]
+            if ranged:  # one readable cell instead of five columns per quantity
+                columns.append("values (a point) or ranges (not identifiable)")
+                for row, r in zip(rows, mine):
+                    row.append("; ".join(filter(None, (range_text(r, q) for q in ranged))))
             out.append(
                 {
                     "table": table,
                     "href": self.href(self.results / "inverse" / table),
                     "columns": columns,
-                    "rows": [
-                        [fmt(r[c]) if c not in ("figure", "family") else r[c] for c in columns] for r in mine
-                    ],
+                    "rows": rows,
                     "verdicts": sorted(
                         {(r.get("family", ""), r.get("verdict", "")) for r in mine if r.get("verdict")}
                     ),
