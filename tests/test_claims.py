@@ -267,3 +267,16 @@ def test_a_comparison_needs_its_margin_beyond_three_spreads_not_only_unanimous_m
     assert evaluate(row, "", lambda p: members(0.033, 0.030, 0.046)).status == "indistinguishable"
     assert evaluate(row, "", lambda p: members(0.40, 0.39, 0.34)).status == "reproduced"
     assert evaluate(row, "", lambda p: members(0.0, 0.0, 0.0)).status == "deviates"  # robustly none
+
+
+def test_two_numbers_equal_to_a_tenth_of_a_percent_are_not_ordered():
+    """A comparison of two runs that both settle at the same rest position (0.8502 vs 0.85) is undecided
+    even when the perturbation ensemble moves neither: the run resolves numbers to 0.1 % at best."""
+    row = {**ROW, "kind": "compare", "lhs": {"dataset": "a.nc", "variable": "amp"}, "relation": ">",
+           "rhs": {"dataset": "b.nc", "variable": "amp"}}  # fmt: skip
+    for key in ("dataset", "variable", "value", "unit", "tolerance"):
+        row.pop(key)
+    sets = {"a.nc": xr.Dataset({"amp": 0.8502}), "b.nc": xr.Dataset({"amp": 0.85})}
+    assert evaluate(row, "", lambda p: sets[p]).status == "indistinguishable"
+    sets["a.nc"] = xr.Dataset({"amp": 0.86})
+    assert evaluate(row, "", lambda p: sets[p]).status == "reproduced"

@@ -42,6 +42,10 @@ STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
 
 #: A claim is decided only when its margin to the threshold exceeds this many ensemble spreads.
 MARGIN_FACTOR = 3.0
+#: ... and this fraction of the numbers it compares: every metric is read off a sampled trajectory over a
+#: finite window (sample spacing, where the window ends), which the perturbation ensemble does not vary, so
+#: two numbers that agree to 0.1 % (a rest position reached in both runs, 0.75 vs 0.75) are not ordered.
+RESOLUTION = 1e-3
 
 ENSEMBLE_SUFFIX = "_ensemble"  # stickslip.ensemble.SUFFIX (io may not import from the orchestration layer)
 KINDS = ("value", "ratio", "compare", "trend")
@@ -303,6 +307,8 @@ class Measurement:
     spread: float = float("nan")
     #: what was computed but not used (values withheld by the step-halving check), for the reason
     withheld: list = field(default_factory=list)
+    #: size of the numbers the decision compares (the resolution floor is RESOLUTION x scale)
+    scale: float = 1.0
 
 
 def _tolerance_band(claim: dict, reported: float) -> float:
@@ -336,6 +342,7 @@ def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurem
         r = out.reported
         out.deviation = (out.measured - r) / abs(r) if r != 0 else out.measured - r
         out.holds, out.margin = decide_value(claim, out.measured)
+        out.scale = abs(r)
         out.spread = spread_of(members)
         out.detail = f"measured {out.measured:.4g} vs reported {r:.4g} ({100 * out.deviation:+.1f} %)"
     return out
@@ -358,6 +365,7 @@ def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measur
         difference = _pairwise(np.subtract, lhs, rhs)  # the decision variable: lhs - rhs against 0
         out.holds = bool(RELATIONS[rel](out.measured, out.reference))
         out.margin = abs(float(difference[0]))
+        out.scale = max(abs(out.measured), abs(out.reference))
         out.spread = spread_of(difference)
         out.detail = f"{out.measured:.4g} {rel} {out.reference:.4g} is {out.holds}"
     return out
@@ -467,6 +475,9 @@ def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[st
             else f"margin {m.margin:.3g} < {MARGIN_FACTOR:g} x spread {m.spread:.3g}"
         )
         return "indistinguishable", f"{m.detail} - {why}: below the numerical noise"
+    if m.margin < RESOLUTION * m.scale:
+        why = f"margin {m.margin:.3g} < {RESOLUTION:g} x {m.scale:.3g}: the numbers agree to 0.1 %"
+        return "indistinguishable", f"{m.detail} - {why}, below what a sampled run resolves"
     return ("reproduced" if m.holds else "deviates"), m.detail
 
 
