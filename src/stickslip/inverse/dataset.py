@@ -19,6 +19,7 @@ from .conflicts import CONFLICT_NFEV
 from .fit import laplace_sd
 from .identify import PROFILE_THRESHOLD, combination_rows, flat_extent, on_ridge, parameter_ranges
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS
+from .profile import PL_THRESHOLD, quantity_ranges
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
@@ -35,12 +36,18 @@ COMBINATION_KEYS = {
 }
 
 IDENTIFIABILITY_METHOD = (
-    "chi-square profiles at the best fit along every direction of the free log10 parameters: the structural "
-    "null space (sets with the same motion) and the right-singular vectors of the residual Jacobian in the "
-    f"identifiable coordinates; a direction is a ridge when chi-square stays within delta chi2 = "
-    f"{PROFILE_THRESHOLD:g} (one reading precision) of its minimum up to the parameter bounds on both sides, "
-    "or when the figure has fewer numbers than identifiable coordinates (no first-order constraint); "
-    "identifiable dimensions = free parameters - ridges (stickslip.inverse.identify)"
+    "two analyses at the best fit, the smaller count wins. (1) straight-line chi-square profiles along every "
+    "direction of the free log10 parameters (the structural null space, sets with the same motion, and the "
+    "right-singular vectors of the residual Jacobian); a direction is a ridge when chi-square stays within "
+    f"delta chi2 = {PROFILE_THRESHOLD:g} (one reading precision) up to the bounds on both sides, or when the "
+    "figure has fewer numbers than identifiable coordinates (stickslip.inverse.identify). (2) profile "
+    "likelihood (Raue et al., Bioinformatics 2009): each free parameter the motion determines and each "
+    "combination K/M, C/M, mu_s N/M is fixed on a grid and chi-square re-minimised over the others; it is "
+    f"identifiable when its profile exceeds delta chi2 = {PL_THRESHOLD:.2f} (95 % pointwise, one parameter) "
+    "on both sides within the bounds, else a range; flat quantities are fixed one at a time and the others "
+    "profiled again until all are identifiable, the number fixed being the flat dimensions "
+    "(stickslip.inverse.profile). A parameter or combination that is not identifiable is a range "
+    "(flat_lower..flat_upper, best_fit NaN), never a point"
 )
 CONFLICT_METHOD = (
     "subsets of the figure's reported numbers by increasing size up to conflict_search_max_size; a subset "
@@ -65,33 +72,63 @@ class _Analysis:
     lower: np.ndarray
     upper: np.ndarray
     ridge: np.ndarray
+    """Not identifiable: reported as the range lower..upper, never as a point."""
     combo_point: dict
     combo_lower: dict
     combo_upper: dict
     dims: float
+    opens: dict = field(default_factory=dict)
+    """Name (free parameter or combination) -> (open below, open above): the range reaches the bounds."""
+    combo_ridge: dict = field(default_factory=dict)
 
 
 def analyse(r: dict) -> _Analysis:
-    """Ranges along the flat set for the parameters and combinations of one fitted problem (computed once,
-    kept in ``r``)."""
+    """Ranges of the parameters and combinations of one fitted problem, from the straight-line profiles and
+    the profile likelihood together (computed once, kept in ``r``)."""
     if "analysis" not in r:
         r["analysis"] = _analyse(r)
     return r["analysis"]
 
 
 def _analyse(r: dict) -> _Analysis:
-    p, fit, ident = r["problem"], r["fit"], r["identification"]
+    p, fit, ident, pid = r["problem"], r["fit"], r["identification"], r.get("profile")
     v = np.asarray(fit.free_values, dtype=float)
     combos = p.combinations(v)
     if ident is None:
         nan = np.full(len(p.free), np.nan)
         return _Analysis(v, nan, nan, np.zeros(len(p.free), bool), combos, {}, {}, np.nan)
     lower, upper = parameter_ranges(p, v, ident)
+    ridge = on_ridge(lower, upper)
     rows = combination_rows(p)
     ext = flat_extent(p, v, ident, np.array(list(rows.values()))) if rows else np.zeros((0, 2))
     c_lo = {n: combos[n] * 10.0 ** e[0] for n, e in zip(rows, ext) if n in combos}
     c_hi = {n: combos[n] * 10.0 ** e[1] for n, e in zip(rows, ext) if n in combos}
-    return _Analysis(v, lower, upper, on_ridge(lower, upper), combos, c_lo, c_hi, float(ident.dimensions))
+    c_ridge = {n: bool(on_ridge(c_lo[n], c_hi[n])) for n in c_lo}
+    dims, opens = float(ident.dimensions), {}
+    if pid is not None:
+        eye = {q: row for q, row in zip(p.free, np.eye(len(p.free)))}
+        combo_rows = {n: rows[n] for n in c_lo if len(COMBINATIONS[n]) > 1}
+        ranges = quantity_ranges(p, v, pid, {**eye, **combo_rows})
+        for i, q in enumerate(p.free):
+            lower[i], upper[i] = min(lower[i], ranges[q].lower), max(upper[i], ranges[q].upper)
+            ridge[i] = ridge[i] or _unidentified(ranges[q])
+        for n in combo_rows:
+            q = ranges[n]
+            c_lo[n], c_hi[n] = min(c_lo[n], q.lower), max(c_hi[n], q.upper)
+            c_ridge[n] = c_ridge[n] or _unidentified(q)
+        opens = {n: (q.open_lower, q.open_upper) for n, q in ranges.items()}
+        for n in c_lo:  # a one-parameter combination (sigma, v_p) is that parameter
+            (q,) = COMBINATIONS[n] if len(COMBINATIONS[n]) == 1 else (None,)
+            if q in p.free:
+                i = p.free.index(q)
+                c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
+        dims = float(min(ident.dimensions, pid.dimensions))
+    return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge)
+
+
+def _unidentified(q) -> bool:
+    """Profiled: its profile stays within the threshold to a bound; otherwise: its range reaches a bound."""
+    return not q.identifiable if q.profiled else bool(q.open_lower or q.open_upper)
 
 
 # -- the shared arrays, computed once per dataset ----------------------------------------------------------
@@ -159,6 +196,45 @@ class _Context:
                 out["laplace"][f] = _pad(r["region"].laplace_sd_log10, p.free)
         return out
 
+    def open_flags(self, names) -> np.ndarray:
+        """(family x name) 0 bounded, 1 open below, 2 open above, 3 both (see QuantityRange)."""
+        out = np.zeros((len(self.families), len(names)), dtype=np.int8)
+        for f, _, _, a in self.each():
+            for j, n in enumerate(names):
+                lo, hi = a.opens.get(n, (False, False))
+                out[f, j] = int(lo) + 2 * int(hi)
+        return out
+
+    @cached_property
+    def quantities(self) -> list:
+        """Names of every quantity a profile likelihood was computed for, over the families."""
+        names = [n for r in self.results.values() if r.get("profile") for n in r["profile"].profiles]
+        return list(dict.fromkeys(names)) or [""]
+
+    @cached_property
+    def likelihood_profiles(self) -> dict:
+        """(family x quantity x point) offsets and profiled chi-square, NaN-padded."""
+        n = max(
+            [
+                len(pr.t)
+                for r in self.results.values()
+                if r.get("profile")
+                for pr in r["profile"].profiles.values()
+            ]
+            + [1]
+        )
+        shape = (len(self.families), len(self.quantities), n)
+        out = {"t": np.full(shape, np.nan), "chi2": np.full(shape, np.nan)}
+        out["fixed"] = np.zeros(shape[:2], dtype=np.int8)
+        for f, _, r, _ in self.each():
+            pid = r.get("profile")
+            for j, name in enumerate(self.quantities):
+                pr = pid.profiles.get(name) if pid else None
+                if pr is not None:
+                    out["t"][f, j, : len(pr.t)], out["chi2"][f, j, : len(pr.t)] = pr.t, pr.chi2
+                    out["fixed"][f, j] = int(name in pid.fixed)
+        return out
+
     def combination(self, c: str) -> dict:
         """best / lower / upper / stated of one combination (per family)."""
         nf = len(self.families)
@@ -167,7 +243,7 @@ class _Context:
             p = r["problem"]
             if c in a.combo_point:
                 lo[f], hi[f] = a.combo_lower.get(c, np.nan), a.combo_upper.get(c, np.nan)
-                moves = bool(on_ridge(lo[f], hi[f])) or not np.isfinite(lo[f])
+                moves = bool(a.combo_ridge.get(c, False)) or not np.isfinite(lo[f])
                 point[f] = np.nan if moves else a.combo_point[c]
                 stated[f] = p.combinations(p.stated_free).get(c, np.nan)
         return {"best_fit": point, "flat_lower": lo, "flat_upper": hi, "stated": stated}
@@ -241,11 +317,14 @@ class _Context:
 
 #: Per-parameter kinds: each is one variable per parameter, ``<kind>_<parameter>`` (one unit per variable).
 PARAMETER_KINDS = {
-    "best_fit": "best-fitting value where the numbers pin it (NaN along a ridge: see flat_lower/upper)",
+    "best_fit": "best-fitting value where the numbers identify it (NaN where it is a range: see "
+    "flat_lower/upper)",
     "fit_point": "one member of the best-fitting set (the one closest to the stated set); not an "
     "estimate where the parameter lies on a ridge",
-    "flat_lower": "lowest value over the flat set (chi-square within the threshold) in the bounds",
-    "flat_upper": "highest value over the flat set (chi-square within the threshold) in the bounds",
+    "flat_lower": "lowest value over the sets within the threshold in the bounds (identifiable: the profile-"
+    "likelihood confidence interval; a range: its lower end)",
+    "flat_upper": "highest value over the sets within the threshold in the bounds (identifiable: the profile-"
+    "likelihood confidence interval; a range: its upper end)",
     "stated": "value as stated in the paper",
     "lower_bound": "lower physical bound (config inverse.bounds)",
     "upper_bound": "upper physical bound (config inverse.bounds)",
@@ -286,6 +365,7 @@ class Var:
 
 FAM, FP, FC, FD = ("family",), ("family", "parameter"), ("family", "claim"), ("family", "direction")
 FLAG01 = np.array([0, 1], dtype=np.int8)
+OPEN_FLAGS = np.array([0, 1, 2, 3], dtype=np.int8)
 
 
 def _parameter_vars() -> list[Var]:
@@ -319,7 +399,7 @@ PARAMETER_SPREADS = [
         "on_ridge",
         FP,
         "1",
-        "parameter moves along a flat direction (1): reported as flat_lower..flat_upper, never a point",
+        "parameter not identifiable (1): reported as the range flat_lower..flat_upper, never a point",
         lambda c: c.parameters["ridge"],
         {"flag_values": FLAG01, "flag_meanings": "pinned on_ridge"},
     ),
@@ -336,6 +416,14 @@ PARAMETER_SPREADS = [
         },
     ),
     Var("laplace_sd_log10", FP, "1", "Laplace spread of log10 parameter", lambda c: c.parameters["laplace"]),
+    Var(
+        "range_open",
+        FP,
+        "1",
+        "side(s) where the parameter's range reaches its bound within the threshold (unbounded by the data)",
+        lambda c: c.open_flags(PARAMS),
+        {"flag_values": OPEN_FLAGS, "flag_meanings": "bounded open_below open_above open_both"},
+    ),
 ]
 
 
@@ -351,6 +439,50 @@ def _combination_vars() -> list[Var]:
         for name in COMBINATIONS
         for kind, text in COMBINATION_KINDS.items()
     ]
+
+
+def _combination_open_vars() -> list[Var]:
+    return [
+        Var(
+            f"range_open_{COMBINATION_KEYS[name]}",
+            FAM,
+            "1",
+            f"{name}: side(s) where its range reaches the bounds within the threshold",
+            lambda c, name=name: c.open_flags([name])[:, 0],
+            {"flag_values": OPEN_FLAGS, "flag_meanings": "bounded open_below open_above open_both"},
+        )
+        for name, combo in COMBINATIONS.items()
+        if len(combo) > 1
+    ]
+
+
+FQ = ("family", "quantity")
+LIKELIHOOD_PROFILES = [
+    Var(
+        "likelihood_profile_offset",
+        (*FQ, "profile_point"),
+        "1",
+        "log10 change of the quantity from the best fit at each point of its profile likelihood",
+        lambda c: c.likelihood_profiles["t"],
+    ),
+    Var(
+        "likelihood_profile_chi_square",
+        (*FQ, "profile_point"),
+        "1",
+        "chi-square re-minimised over the other parameters with the quantity fixed (inf: no set within the "
+        "bounds; a point within the threshold stops at the first set found there)",
+        lambda c: c.likelihood_profiles["chi2"],
+        {"threshold_delta_chi2": PL_THRESHOLD, "confidence": "0.95 pointwise, one parameter"},
+    ),
+    Var(
+        "likelihood_profile_fixed",
+        FQ,
+        "1",
+        "quantity fixed at its best fit to count a flat dimension (1)",
+        lambda c: c.likelihood_profiles["fixed"],
+        {"flag_values": FLAG01, "flag_meanings": "profiled fixed"},
+    ),
+]
 
 
 def _direction(key: str):
@@ -621,6 +753,8 @@ def variables() -> list[Var]:
         _parameter_vars()
         + PARAMETER_SPREADS
         + _combination_vars()
+        + _combination_open_vars()
+        + LIKELIHOOD_PROFILES
         + DIRECTIONS
         + RESIDUALS
         + CONFLICTS
@@ -643,6 +777,7 @@ def _coords(c: _Context) -> dict:
         "claim_unit": ("claim", [o.unit for o in obs], "unit of the reported number"),
         "claim_metric": ("claim", [o.metric for o in obs], "measured metric"),
         "claim_figure": ("claim", [o.figure for o in obs], "figure of the reported number"),
+        "quantity": ("quantity", c.quantities, "quantity profiled (free parameter or combination)"),
     }
     return {key: (dim, *text(values, long_name)) for key, (dim, values, long_name) in table.items()}
 

@@ -13,12 +13,13 @@ import time
 import numpy as np
 
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
-from .dataset import analyse, figure_dataset
+from .dataset import COMBINATION_KEYS, analyse, figure_dataset
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
 from .identify import identify
-from .problem import Problem, build_problem
+from .problem import COMBINATIONS, Problem, build_problem
+from .profile import profile_identify
 
 
 def settings_of(config: dict) -> dict:
@@ -55,6 +56,10 @@ def fit_problem(
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
             source = "conflict search"
     ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
+    # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
+    # the straight-line analysis only
+    profiled = np.isfinite(fit.chi2) and problem.name != "joint"
+    profile = profile_identify(forward, fit.free_values) if profiled else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     refit = loo and settings["loo"] == "refit"
     if refit:
@@ -72,6 +77,7 @@ def fit_problem(
         "residual_noise": noise,
         "conflicts": search,
         "identification": ident,
+        "profile": profile,
         "fit_source": source,
         "forward": forward,
         "cpu": time.process_time() - t0,
@@ -160,12 +166,19 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
-            if a.ridge[i]:  # along a ridge: a range, never a point
-                row[f"lower_{param}"] = float(f"{a.lower[i]:.4g}")
-                row[f"upper_{param}"] = float(f"{a.upper[i]:.4g}")
-            else:
-                row[f"best_{param}"] = float(f"{fit.free_values[i]:.4g}")
+            row.update(
+                _range_columns(
+                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], a.opens.get(param)
+                )
+            )
             row[f"stated_{param}"] = float(p.stated_free[i])
+        stated = p.combinations(p.stated_free)
+        for combo, key in COMBINATION_KEYS.items():
+            if len(COMBINATIONS[combo]) == 1 or combo not in a.combo_lower:  # one parameter: its own columns
+                continue
+            point, lo, hi = a.combo_point[combo], a.combo_lower[combo], a.combo_upper[combo]
+            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], a.opens.get(combo)))
+            row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
         search = r["conflicts"]
         row.update(
             worst_residual=round(fit.worst, 3) if math.isfinite(fit.worst) else "inf",
@@ -181,6 +194,22 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
         )
         rows.append(row)
     return rows
+
+
+def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
+    """Summary columns of one parameter or combination: best_ (empty where it is a range, never a point),
+    lower_/upper_ (a range, or the confidence interval of an identifiable one), identifiable_ (1/0) and
+    open_ (the side(s) where the range reaches the bounds within the threshold: unbounded by the data)."""
+    lo, hi = opens or (False, False)
+    return {
+        f"best_{key}": "" if ridge else float(f"{value:.4g}"),
+        f"lower_{key}": float(f"{lower:.4g}"),
+        f"upper_{key}": float(f"{upper:.4g}"),
+        f"identifiable_{key}": int(not ridge),
+        f"open_{key}": {(False, False): "", (True, False): "below", (False, True): "above"}.get(
+            (lo, hi), "both"
+        ),
+    }
 
 
 def misprint_tables(config: dict, claims: dict, joint: dict[str, dict], settings: dict) -> tuple[list, list]:
