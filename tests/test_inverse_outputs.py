@@ -81,13 +81,15 @@ def test_a_parameter_that_is_not_identified_is_a_range_never_a_point(study):
     rows = list(csv.DictReader((study / "summary.csv").open()))
     for row in rows:
         for param in PARAMS:
-            if not row.get(f"lower_{param}"):
+            if not row.get(f"identifiable_{param}"):
                 continue  # not free in this fit
             point = row[f"best_{param}"]
             assert (point == "") == (row[f"identifiable_{param}"] == "0"), (row["figure"], param)
             assert row[f"open_{param}"] in ("", "below", "above", "both")
-            if point:
+            if point and row[f"lower_{param}"]:  # an identified parameter: its interval holds the point
                 assert float(row[f"lower_{param}"]) <= float(point) <= float(row[f"upper_{param}"])
+            elif not point:  # a range has both ends
+                assert float(row[f"lower_{param}"]) < float(row[f"upper_{param}"]), (row["figure"], param)
 
 
 def test_conflicts_csv_equals_the_datasets(study):

@@ -203,8 +203,8 @@ def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
     lo, hi = opens or (False, False)
     return {
         f"best_{key}": "" if ridge else float(f"{value:.4g}"),
-        f"lower_{key}": float(f"{lower:.4g}"),
-        f"upper_{key}": float(f"{upper:.4g}"),
+        f"lower_{key}": float(f"{lower:.4g}") if np.isfinite(lower) else "",  # "": no interval measured
+        f"upper_{key}": float(f"{upper:.4g}") if np.isfinite(upper) else "",
         f"identifiable_{key}": int(not ridge),
         f"open_{key}": {(False, False): "", (True, False): "below", (False, True): "above"}.get(
             (lo, hi), "both"
