@@ -80,6 +80,8 @@ class _Analysis:
     opens: dict = field(default_factory=dict)
     """Name (free parameter or combination) -> (open below, open above): the range reaches the bounds."""
     combo_ridge: dict = field(default_factory=dict)
+    note: str = ""
+    """Why the dimension count is not given (the fit was not at the minimum its profiles found)."""
 
 
 def analyse(r: dict) -> _Analysis:
@@ -123,6 +125,13 @@ def _analyse(r: dict) -> _Analysis:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
         dims = float(min(ident.dimensions, pid.dimensions))
+        if pid.floor < fit.chi2 - pid.threshold:  # a profile went deeper than the fit: not a minimum
+            note = (
+                f"not counted: a profile reached chi2 {pid.floor:.4g}, below the fit's {fit.chi2:.4g} by more "
+                f"than the threshold {pid.threshold:g}, so the fit is not at the minimum its flat directions "
+                "are counted from"
+            )
+            return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, np.nan, opens, c_ridge, note)
     return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge)
 
 

@@ -163,6 +163,7 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
+            "dimensions_note": a.note,
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
