@@ -31,11 +31,14 @@
 # **What can be identified at all.** Divided by M the equation of motion is
 # x'' + (C/M) x' + (K/M) x = −(μ_s N/M)(sgn v_r − σ v_r), so one figure can only ever fix K/M, C/M, μ_s N/M, σ
 # (and v_p). A sweep (Figs. 10–14) or the joint fit, where some runs fix a parameter, identifies more. What
-# the numbers *do* fix is measured, not assumed: χ² is profiled at the best fit along every direction (the
-# structural ones and the Jacobian's singular directions); a direction along which χ² stays within Δχ² = 1
-# (one reading precision) up to the parameter bounds is a **ridge**, and so is every direction beyond the
-# number of reported numbers. Identifiable dimensions = free parameters − ridges. A parameter that moves along
-# a ridge is given as the **range** it spans over the flat set, never as a point.
+# the numbers *do* fix is measured, not assumed, twice: (1) χ² is profiled at the best fit along straight
+# lines (the structural directions and the Jacobian's singular directions; a line within Δχ² = 1 up to the
+# bounds is a **ridge**, and so is every direction beyond the number of reported numbers); (2) the **profile
+# likelihood** (Raue et al. 2009): σ, K/M, C/M, μ_s N/M (and any parameter the motion fixes alone) are each
+# fixed on a grid and χ² is re-minimised over everything else, which follows a valley that *curves* in log10
+# coordinates — Fig. 2's C ↔ (μ_s N, σ) ridge is one, invisible to the straight lines. Threshold Δχ² = 3.84
+# (95 % pointwise). Identifiable dimensions: the smaller count of the two. A parameter that is not identified
+# is given as the **range** it spans over the sets within the threshold, never as a point.
 #
 # **Verdict**: *consistent* when the best fit puts every number within its reading precision (|residual| ≤ 1).
 
@@ -62,24 +65,30 @@ display(Markdown(f"Study run in **{settings['mode']}** mode: {settings}"))
 # %% [markdown]
 # ## 1. Per figure: are the reported numbers consistent under some parameter set?
 #
-# One row per figure and family: the identifiable dimensions, the fitted parameters — a value where the
-# numbers pin it, the range `lo–hi` over the flat set where it lies on a ridge — with the stated value in
-# brackets, the worst residual (in reading-precision units) and which claim it belongs to.
+# One row per figure and family: the identifiable dimensions, the fitted parameters and the combinations
+# K/M, C/M, μ_s N/M — a value with its 95 % profile-likelihood interval `[lo–hi]` where the numbers identify
+# it, a **range** `lo–hi` (no point) where they do not, marked *open below / above* where the range runs to
+# the parameter bounds within the threshold — with the stated value in brackets, the worst residual (in
+# reading-precision units) and which claim it belongs to.
 
 # %%
 params = ["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
 symbols = dict(zip(params, ["σ", "C", "μ_s", "N", "K", "M", "v_p"]))
+symbols.update(K_over_M="K/M", C_over_M="C/M", mu_s_N_over_M="μ_s N/M")
 
 
 def pairs(row):
     out = []
-    for p in params:
+    for p in symbols:
         best, stated = row.get(f"best_{p}"), row.get(f"stated_{p}")
-        lo, hi = row.get(f"lower_{p}"), row.get(f"upper_{p}")
+        lo, hi, side = row.get(f"lower_{p}"), row.get(f"upper_{p}"), row.get(f"open_{p}")
+        if pd.isna(lo):
+            continue  # not free in this fit
         if pd.notna(best):
-            out.append(f"{symbols[p]} {best:.3g} ({stated:g})")
-        elif pd.notna(lo):
-            out.append(f"{symbols[p]} {lo:.3g}–{hi:.3g} ridge ({stated:g})")
+            out.append(f"{symbols[p]} {best:.3g} [{lo:.3g}–{hi:.3g}] ({stated:g})")
+        else:
+            opens = f", open {side}" if isinstance(side, str) and side else ""
+            out.append(f"{symbols[p]} range {lo:.3g}–{hi:.3g}{opens} ({stated:g})")
     return ", ".join(out)
 
 
@@ -109,12 +118,13 @@ display(
 )
 
 # %% [markdown]
-# ### What the numbers identify: χ² profiles along every direction
+# ### What the numbers identify: straight-line profiles and the profile likelihood
 #
-# For each fit: the free parameters, the ridges by kind (*structural*: the same motion exactly;
+# For each fit: the free parameters, the straight-line ridges by kind (*structural*: the same motion exactly;
 # *unconstrained*: beyond the number of reported numbers; *profiled*: a singular direction of the Jacobian
-# along which χ² stays within the threshold up to the bounds) and the identifiable dimensions that remain. The
-# method, as stored in every dataset:
+# along which χ² stays within the threshold up to the bounds), the quantities the profile likelihood found
+# flat (one fixed per flat dimension) and the identifiable dimensions that remain. The method, as stored in
+# every dataset:
 
 # %%
 display(Markdown(f"> {data['joint'].identifiable_dimensions.attrs['comment']}"))
@@ -143,7 +153,10 @@ for name in FIGURES:
                 )
                 if np.any(ridge & (kind == 2))
                 else np.nan,
-                "ranges over the flat set": ", ".join(flat_ranges),
+                "flat by profile likelihood (fixed)": ", ".join(
+                    str(q) for q, f in zip(ds.quantity.values, sub.likelihood_profile_fixed.values) if f
+                ),
+                "ranges (never points)": ", ".join(flat_ranges),
             }
         )
 display(pd.DataFrame(rows).round(4).style.hide(axis="index"))

@@ -23,6 +23,9 @@ that is pinned. What the reported numbers identify is decided here by the data's
    so its profile alone would miss it). The number of identifiable dimensions is the number of free
    parameters minus the number of ridges.
 
+Curved valleys (a ridge that bends in log10 coordinates) are found by the profile likelihood of
+``inverse.profile``; this module sees their tangent only.
+
 Along the ridges a parameter is not a point: its *range* is the extent of the flat set within the bounds,
 a linear programme over the ridge directions (structural ridges free, a profiled one within its profiled
 interval; bounds and the plateau constraint sigma v_p <= 1 are linear in log10). Limits, stated where the

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from ..io.netcdf import publish, write_dataset
-from .study import INTERPRETATION
+from .dataset import INTERPRETATION
 
 
 def write_csv(rows: list[dict], path) -> Path:

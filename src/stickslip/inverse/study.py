@@ -7,33 +7,19 @@ parameters) and changes none of its pins.
 
 from __future__ import annotations
 
-import json
 import math
 import time
-from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
 
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
+from .dataset import COMBINATION_KEYS, analyse, figure_dataset
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
-from .identify import (
-    PROFILE_THRESHOLD,
-    combination_rows,
-    flat_extent,
-    identify,
-    on_ridge,
-    parameter_ranges,
-)
-from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem, build_problem
-
-INTERPRETATION = (
-    "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
-    "(claims table values; noise = each claim's reading precision) are reproduced jointly by the exact "
-    "event-driven solver. The claims table (stated parameters) is unchanged by this study."
-)
+from .identify import identify
+from .problem import COMBINATIONS, Problem, build_problem
+from .profile import profile_identify
 
 
 def settings_of(config: dict) -> dict:
@@ -70,6 +56,10 @@ def fit_problem(
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
             source = "conflict search"
     ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
+    # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
+    # the straight-line analysis only
+    profiled = np.isfinite(fit.chi2) and problem.name != "joint"
+    profile = profile_identify(forward, fit.free_values) if profiled else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     refit = loo and settings["loo"] == "refit"
     if refit:
@@ -87,6 +77,7 @@ def fit_problem(
         "residual_noise": noise,
         "conflicts": search,
         "identification": ident,
+        "profile": profile,
         "fit_source": source,
         "forward": forward,
         "cpu": time.process_time() - t0,
@@ -101,502 +92,6 @@ def residual_noise(problem: Problem, free_values) -> float:
     fine = Forward(problem, {"output_dt": dt / 2}).residuals(free_values)
     d = np.abs(fine - coarse)
     return float(np.max(d[np.isfinite(d)])) if np.any(np.isfinite(d)) else np.nan
-
-
-def _pad(values: np.ndarray, free: tuple, fill=np.nan) -> np.ndarray:
-    out = np.full(len(PARAMS), fill, dtype=float)
-    for i, p in enumerate(free):
-        out[PARAMS.index(p)] = values[i]
-    return out
-
-
-COMBINATION_KEYS = {
-    "K/M": "K_over_M",
-    "C/M": "C_over_M",
-    "mu_s N/M": "mu_s_N_over_M",
-    "sigma": "sigma",
-    "v_p": "v_p",
-}
-
-IDENTIFIABILITY_METHOD = (
-    "chi-square profiles at the best fit along every direction of the free log10 parameters: the structural "
-    "null space (sets with the same motion) and the right-singular vectors of the residual Jacobian in the "
-    f"identifiable coordinates; a direction is a ridge when chi-square stays within delta chi2 = "
-    f"{PROFILE_THRESHOLD:g} (one reading precision) of its minimum up to the parameter bounds on both sides, "
-    "or when the figure has fewer numbers than identifiable coordinates (no first-order constraint); "
-    "identifiable dimensions = free parameters - ridges (stickslip.inverse.identify)"
-)
-CONFLICT_METHOD = (
-    "subsets of the figure's reported numbers by increasing size up to conflict_search_max_size; a subset "
-    "conflicts when the best fit to it alone (least squares, "
-    f"at most {CONFLICT_NFEV} iterations, from the best witness) leaves a residual above 1; minimal: no "
-    "conflicting proper subset (stickslip.inverse.conflicts)"
-)
-
-
-@dataclass
-class _Analysis:
-    """The per-family numbers of one problem the datasets and tables are made of."""
-
-    fit_point: np.ndarray
-    lower: np.ndarray
-    upper: np.ndarray
-    ridge: np.ndarray
-    combo_point: dict
-    combo_lower: dict
-    combo_upper: dict
-    dims: float
-
-
-def analyse(r: dict) -> _Analysis:
-    """Ranges along the flat set for the parameters and combinations of one fitted problem (computed once,
-    kept in ``r``)."""
-    if "analysis" not in r:
-        r["analysis"] = _analyse(r)
-    return r["analysis"]
-
-
-def _analyse(r: dict) -> _Analysis:
-    p, fit, ident = r["problem"], r["fit"], r["identification"]
-    v = np.asarray(fit.free_values, dtype=float)
-    combos = p.combinations(v)
-    if ident is None:
-        nan = np.full(len(p.free), np.nan)
-        return _Analysis(v, nan, nan, np.zeros(len(p.free), bool), combos, {}, {}, np.nan)
-    lower, upper = parameter_ranges(p, v, ident)
-    rows = combination_rows(p)
-    ext = flat_extent(p, v, ident, np.array(list(rows.values()))) if rows else np.zeros((0, 2))
-    c_lo = {n: combos[n] * 10.0 ** e[0] for n, e in zip(rows, ext) if n in combos}
-    c_hi = {n: combos[n] * 10.0 ** e[1] for n, e in zip(rows, ext) if n in combos}
-    return _Analysis(v, lower, upper, on_ridge(lower, upper), combos, c_lo, c_hi, float(ident.dimensions))
-
-
-def figure_dataset(name: str, results: dict[str, dict], settings: dict) -> xr.Dataset:
-    """One figure (or the joint problem), both families along ``family``; every variable has units."""
-    families = list(results)
-    first = results[families[0]]["problem"]
-    claims = [o.claim for o in first.observations]
-    nf, npar = len(families), len(PARAMS)
-    analyses = {fam: analyse(results[fam]) for fam in families}
-    n_samples = max(
-        [len(r["region"].samples_free) for r in results.values() if r["region"] is not None] + [1]
-    )
-    walkers = int(settings["walkers"])
-    fam_d, fp, fc = ("family",), ("family", "parameter"), ("family", "claim")
-    data = {}
-
-    def put(key, dims, values, units, long_name, **attrs):
-        data[key] = (dims, values, {"units": units, "long_name": long_name, **attrs})
-
-    # per parameter (each its own variable: one unit per variable)
-    kinds = {
-        "best_fit": "best-fitting value where the numbers pin it (NaN along a ridge: see flat_lower/upper)",
-        "fit_point": "one member of the best-fitting set (the one closest to the stated set); not an "
-        "estimate where the parameter lies on a ridge",
-        "flat_lower": "lowest value over the flat set (chi-square within the threshold) in the bounds",
-        "flat_upper": "highest value over the flat set (chi-square within the threshold) in the bounds",
-        "stated": "value as stated in the paper",
-        "lower_bound": "lower physical bound (config inverse.bounds)",
-        "upper_bound": "upper physical bound (config inverse.bounds)",
-    }
-    arrays = {k: np.full((nf, npar), np.nan) for k in kinds}
-    ridge = np.zeros((nf, npar), dtype=np.int8)
-    sd, laplace = np.full((nf, npar), np.nan), np.full((nf, npar), np.nan)
-    samples = np.full((nf, n_samples, npar), np.nan)
-    for f, fam in enumerate(families):
-        r, a = results[fam], analyses[fam]
-        p = r["problem"]
-        arrays["fit_point"][f] = _pad(a.fit_point, p.free)
-        arrays["best_fit"][f] = _pad(np.where(a.ridge, np.nan, a.fit_point), p.free)
-        arrays["flat_lower"][f] = _pad(a.lower, p.free)
-        arrays["flat_upper"][f] = _pad(a.upper, p.free)
-        arrays["stated"][f] = _pad(p.stated_free, p.free)
-        arrays["lower_bound"][f] = _pad(np.array([p.bounds[k][0] for k in p.free]), p.free)
-        arrays["upper_bound"][f] = _pad(np.array([p.bounds[k][1] for k in p.free]), p.free)
-        ridge[f] = _pad(a.ridge.astype(float), p.free, fill=0).astype(np.int8)
-        if np.all(np.isfinite(r["fit"].jacobian)):
-            laplace[f] = sd[f] = _pad(laplace_sd(p, r["fit"].jacobian), p.free)
-        if r["region"] is not None:
-            for i, s in enumerate(r["region"].samples_free):
-                samples[f, i] = _pad(s, p.free)
-            sd[f] = _pad(r["region"].sd_log10, p.free)
-            laplace[f] = _pad(r["region"].laplace_sd_log10, p.free)
-    for kind, long_name in kinds.items():
-        for j, param in enumerate(PARAMS):
-            put(f"{kind}_{param}", fam_d, arrays[kind][:, j], UNITS[param], f"{SYMBOLS[param]}: {long_name}")
-    for j, param in enumerate(PARAMS):
-        put(
-            f"samples_{param}",
-            ("family", "sample"),
-            samples[:, :, j],
-            UNITS[param],
-            f"{SYMBOLS[param]}: posterior samples (emcee, after burn-in)",
-            comment="each sample is the set closest to the stated one with its motion",
-        )
-    put(
-        "on_ridge",
-        fp,
-        ridge,
-        "1",
-        "parameter moves along a flat direction (1): reported as flat_lower..flat_upper, never a point",
-        flag_values=np.array([0, 1], dtype=np.int8),
-        flag_meanings="pinned on_ridge",
-    )
-    put(
-        "posterior_sd_log10",
-        fp,
-        sd,
-        "1",
-        "posterior spread of log10 parameter",
-        comment="sampled if the chain is >= 50 autocorrelation times long, else the Laplace (Gauss-Newton) "
-        "spread; in the identifiable directions only (a ridge's extent is flat_lower..flat_upper)",
-    )
-    put("laplace_sd_log10", fp, laplace, "1", "Laplace spread of log10 parameter")
-
-    # identifiable combinations, each with its own unit
-    combos = list(COMBINATIONS)
-    for c in combos:
-        key = COMBINATION_KEYS[c]
-        point, lo, hi, stated = (np.full(nf, np.nan) for _ in range(4))
-        for f, fam in enumerate(families):
-            a, p = analyses[fam], results[fam]["problem"]
-            if c in a.combo_point:
-                lo[f], hi[f] = a.combo_lower.get(c, np.nan), a.combo_upper.get(c, np.nan)
-                moves = bool(on_ridge(lo[f], hi[f])) or not np.isfinite(lo[f])
-                point[f] = np.nan if moves else a.combo_point[c]
-                stated[f] = p.combinations(p.stated_free).get(c, np.nan)
-        units = COMBINATION_UNITS[c]
-        put(f"best_fit_{key}", fam_d, point, units, f"{c} at the best fit (NaN where it moves along a ridge)")
-        put(f"flat_lower_{key}", fam_d, lo, units, f"{c}: lowest over the flat set")
-        put(f"flat_upper_{key}", fam_d, hi, units, f"{c}: highest over the flat set")
-        put(f"stated_{key}", fam_d, stated, units, f"{c} as stated")
-
-    # profiles along every direction
-    nd = npar
-    vec = np.full((nf, nd, npar), np.nan)
-    dir_vals = {
-        k: np.full((nf, nd), np.nan) for k in ("s", "kind", "tlo", "thi", "blo", "bhi", "rise", "ridge")
-    }
-    for f, fam in enumerate(families):
-        ident, p = results[fam]["identification"], results[fam]["problem"]
-        if ident is None:
-            continue
-        for i, pr in enumerate(ident.profiles):
-            vec[f, i] = _pad(pr.direction, p.free, fill=0.0)
-            kind = 0 if pr.structural else (1 if pr.unconstrained else 2)
-            row = (
-                pr.singular_value,
-                kind,
-                pr.t_lower,
-                pr.t_upper,
-                pr.bound_lower,
-                pr.bound_upper,
-                pr.rise,
-                pr.ridge,
-            )
-            for k, value in zip(dir_vals, row):
-                dir_vals[k][f, i] = float(value)
-    fd = ("family", "direction")
-    put(
-        "direction_vector",
-        ("family", "direction", "parameter"),
-        vec,
-        "1",
-        "unit direction in log10 of the free parameters",
-    )
-    put(
-        "direction_singular_value",
-        fd,
-        dir_vals["s"],
-        "1",
-        "singular value of the residual Jacobian (per log10 unit); 0: structural or unconstrained",
-    )
-    put(
-        "direction_kind",
-        fd,
-        dir_vals["kind"],
-        "1",
-        "how the direction was found",
-        flag_values=np.array([0.0, 1.0, 2.0]),
-        flag_meanings="structural unconstrained profiled",
-        comment="structural: exactly the same motion; unconstrained: beyond the number of reported numbers; "
-        "profiled: a singular direction of the Jacobian",
-    )
-    put(
-        "profile_t_lower",
-        fd,
-        dir_vals["tlo"],
-        "1",
-        "lower end [log10 units] of the interval within the threshold",
-    )
-    put(
-        "profile_t_upper",
-        fd,
-        dir_vals["thi"],
-        "1",
-        "upper end [log10 units] of the interval within the threshold",
-    )
-    put(
-        "profile_reaches_lower_bound",
-        fd,
-        dir_vals["blo"],
-        "1",
-        "within the threshold down to the parameter bounds (1) or not (0)",
-    )
-    put(
-        "profile_reaches_upper_bound",
-        fd,
-        dir_vals["bhi"],
-        "1",
-        "within the threshold up to the parameter bounds (1) or not (0)",
-    )
-    put(
-        "profile_rise",
-        fd,
-        dir_vals["rise"],
-        "1",
-        "largest chi-square rise above the profile's minimum within the interval",
-    )
-    put("direction_is_ridge", fd, dir_vals["ridge"], "1", "ridge (1): not identifiable")
-
-    # per claim (dimensionless; the reported numbers with their units are in numbers.csv)
-    resid, resid_stated, loo = (np.full((nf, len(claims)), np.nan) for _ in range(3))
-    for f, fam in enumerate(families):
-        r = results[fam]
-        resid[f] = r["fit"].residuals
-        resid_stated[f] = r["stated_residuals"]
-        if r["loo"] is not None:
-            loo[f] = r["loo"]
-    put("residual", fc, resid, "1", "(measured - reported) / reading precision at the best fit")
-    put(
-        "residual_stated",
-        fc,
-        resid_stated,
-        "1",
-        "(measured - reported) / reading precision with the stated parameters",
-    )
-    put(
-        "loo_residual",
-        fc,
-        loo,
-        "1",
-        "leave-one-out residual (number left out of the fit)",
-        comment="method: "
-        + (settings["loo"] if name == "joint" else "linear")
-        + " (linear: r_i / (1 - h_ii) at the best fit; refit: the problem refitted without it)",
-    )
-
-    # minimal conflicting subsets
-    n_conf = max([len(r["conflicts"].conflicts) for r in results.values() if r["conflicts"]] + [1])
-    member = np.zeros((nf, n_conf, len(claims)), dtype=np.int8)
-    size, worst_c = np.zeros((nf, n_conf)), np.full((nf, n_conf), np.nan)
-    searched = {k: np.full(nf, np.nan) for k in ("max_size", "fitted", "count")}
-    for f, fam in enumerate(families):
-        search = results[fam]["conflicts"]
-        if search is None:
-            continue
-        searched["max_size"][f], searched["fitted"][f] = search.max_size, search.subsets_fitted
-        searched["count"][f] = len(search.conflicts)
-        for i, c in enumerate(search.conflicts):
-            member[f, i, list(c.members)] = 1
-            size[f, i], worst_c[f, i] = len(c.members), c.worst
-    put(
-        "conflict_member",
-        ("family", "conflict", "claim"),
-        member,
-        "1",
-        "claim belongs to the minimal conflicting subset (1)",
-        comment=CONFLICT_METHOD,
-    )
-    put(
-        "conflict_size",
-        ("family", "conflict"),
-        size,
-        "1",
-        "numbers in the minimal conflicting subset (0: no subset)",
-    )
-    put(
-        "conflict_worst_residual",
-        ("family", "conflict"),
-        worst_c,
-        "1",
-        "smallest worst |residual| any fit to the subset alone reached (> 1)",
-    )
-    put(
-        "conflict_search_max_size",
-        fam_d,
-        searched["max_size"],
-        "1",
-        "largest subset size searched (NaN: not searched, the fit is consistent)",
-    )
-    put(
-        "conflict_subsets_fitted",
-        fam_d,
-        searched["fitted"],
-        "1",
-        "subsets fitted alone (the others had a witness or held a conflict)",
-    )
-    put("conflict_count", fam_d, searched["count"], "1", "minimal conflicting subsets found")
-
-    # per family
-    def scalar(fn):
-        return np.array([fn(results[fam], analyses[fam]) for fam in families], dtype=float)
-
-    put(
-        "worst_residual",
-        fam_d,
-        scalar(lambda r, a: r["fit"].worst),
-        "1",
-        "largest |residual| at the best fit",
-    )
-    put(
-        "chi_square",
-        fam_d,
-        scalar(lambda r, a: r["fit"].chi2),
-        "1",
-        "sum of squared residuals at the best fit",
-    )
-    put(
-        "consistent",
-        fam_d,
-        scalar(lambda r, a: r["fit"].consistent).astype(np.int8),
-        "1",
-        "verdict",
-        flag_values=np.array([0, 1], dtype=np.int8),
-        flag_meanings="inconsistent consistent",
-    )
-    put(
-        "fit_source",
-        fam_d,
-        scalar(lambda r, a: r["fit_source"] == "conflict search").astype(np.int8),
-        "1",
-        "where the best fit comes from",
-        flag_values=np.array([0, 1], dtype=np.int8),
-        flag_meanings="least_squares conflict_search_witness",
-    )
-    put(
-        "identifiable_dimensions",
-        fam_d,
-        scalar(lambda r, a: a.dims),
-        "1",
-        "identifiable parameter directions",
-        comment=IDENTIFIABILITY_METHOD,
-        threshold_delta_chi2=PROFILE_THRESHOLD,
-    )
-    put(
-        "ridge_directions",
-        fam_d,
-        scalar(lambda r, a: len(r["problem"].free) - a.dims),
-        "1",
-        "flat directions (ridges) of the free parameters",
-    )
-    put(
-        "motion_dimensions",
-        fam_d,
-        scalar(lambda r, a: r["problem"].identifiable_basis().shape[1]),
-        "1",
-        "directions that change the motion at all (rank of the combination map)",
-    )
-    put(
-        "free_parameters",
-        fam_d,
-        scalar(lambda r, a: len(r["problem"].free)),
-        "1",
-        "free parameters of the fit",
-    )
-    region = {
-        "infeasible": lambda r, a: r["region"].infeasible_fraction if r["region"] else np.nan,
-        "converged": lambda r, a: float(r["region"].converged) if r["region"] else np.nan,
-        "steps": lambda r, a: r["region"].steps if r["region"] else np.nan,
-    }
-    put(
-        "infeasible_fraction",
-        fam_d,
-        scalar(region["infeasible"]),
-        "1",
-        "fraction of sampler proposals that were infeasible",
-    )
-    put(
-        "forward_evaluations",
-        fam_d,
-        scalar(lambda r, a: r["forward"].evaluations),
-        "1",
-        "forward-model evaluations",
-    )
-    put(
-        "chain_converged",
-        fam_d,
-        scalar(region["converged"]),
-        "1",
-        "chain >= 50 autocorrelation times (1) or not (0)",
-    )
-    put("chain_steps", fam_d, scalar(region["steps"]), "1", "emcee steps per walker")
-    put("cpu_time", fam_d, scalar(lambda r, a: r["cpu"]), "s", "process CPU time of the fit")
-    acc = np.full((nf, walkers), np.nan)
-    tau = np.full((nf, npar), np.nan)
-    loglik = np.full((nf, n_samples), np.nan)
-    for f, fam in enumerate(families):
-        reg = results[fam]["region"]
-        if reg is not None:
-            acc[f, : len(reg.acceptance)] = reg.acceptance
-            tau[f, : len(reg.autocorr_time)] = reg.autocorr_time
-            loglik[f, : len(reg.log_likelihood)] = reg.log_likelihood
-    put("acceptance_fraction", ("family", "walker"), acc, "1", "emcee acceptance fraction per walker")
-    put(
-        "autocorr_time",
-        ("family", "coordinate"),
-        tau,
-        "1",
-        "integrated autocorrelation time [steps] per identifiable coordinate",
-    )
-    put("sample_log_likelihood", ("family", "sample"), loglik, "1", "log-likelihood of each sample")
-    ds = xr.Dataset(
-        data,
-        coords={
-            "family": ("family", np.array(families, dtype=object), {"long_name": "model family"}),
-            "parameter": (
-                "parameter",
-                np.array(PARAMS, dtype=object),
-                {"long_name": "parameter (BeltParams field)"},
-            ),
-            "parameter_units": (
-                "parameter",
-                np.array([UNITS[p] for p in PARAMS], dtype=object),
-                {"long_name": "units of the parameter"},
-            ),
-            "parameter_symbol": (
-                "parameter",
-                np.array([SYMBOLS[p] for p in PARAMS], dtype=object),
-                {"long_name": "symbol of the parameter"},
-            ),
-            "claim": ("claim", np.array(claims, dtype=object), {"long_name": "claim id (config/claims)"}),
-            "claim_unit": (
-                "claim",
-                np.array([o.unit for o in first.observations], dtype=object),
-                {"long_name": "unit of the reported number"},
-            ),
-            "claim_metric": (
-                "claim",
-                np.array([o.metric for o in first.observations], dtype=object),
-                {"long_name": "measured metric"},
-            ),
-            "claim_figure": (
-                "claim",
-                np.array([o.figure for o in first.observations], dtype=object),
-                {"long_name": "figure of the reported number"},
-            ),
-        },
-    )
-    ds.attrs.update(
-        title=f"FIT (inverse study): {first.title}",
-        interpretation=INTERPRETATION,
-        figure=name,
-        settings=json.dumps(settings, sort_keys=True),
-        runs=json.dumps([{"name": r.name, "overrides": r.overrides} for r in first.runs], default=str),
-        identifiability_method=IDENTIFIABILITY_METHOD,
-        conflict_method=CONFLICT_METHOD,
-    )
-    return ds
 
 
 def number_rows(name: str, results: dict[str, dict]) -> list[dict]:
@@ -668,15 +163,23 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
+            "dimensions_note": a.note,
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
-            if a.ridge[i]:  # along a ridge: a range, never a point
-                row[f"lower_{param}"] = float(f"{a.lower[i]:.4g}")
-                row[f"upper_{param}"] = float(f"{a.upper[i]:.4g}")
-            else:
-                row[f"best_{param}"] = float(f"{fit.free_values[i]:.4g}")
+            row.update(
+                _range_columns(
+                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], a.opens.get(param)
+                )
+            )
             row[f"stated_{param}"] = float(p.stated_free[i])
+        stated = p.combinations(p.stated_free)
+        for combo, key in COMBINATION_KEYS.items():
+            if len(COMBINATIONS[combo]) == 1 or combo not in a.combo_lower:  # one parameter: its own columns
+                continue
+            point, lo, hi = a.combo_point[combo], a.combo_lower[combo], a.combo_upper[combo]
+            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], a.opens.get(combo)))
+            row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
         search = r["conflicts"]
         row.update(
             worst_residual=round(fit.worst, 3) if math.isfinite(fit.worst) else "inf",
@@ -692,6 +195,22 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
         )
         rows.append(row)
     return rows
+
+
+def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
+    """Summary columns of one parameter or combination: best_ (empty where it is a range, never a point),
+    lower_/upper_ (a range, or the confidence interval of an identifiable one), identifiable_ (1/0) and
+    open_ (the side(s) where the range reaches the bounds within the threshold: unbounded by the data)."""
+    lo, hi = opens or (False, False)
+    return {
+        f"best_{key}": "" if ridge else float(f"{value:.4g}"),
+        f"lower_{key}": float(f"{lower:.4g}") if np.isfinite(lower) else "",  # "": no interval measured
+        f"upper_{key}": float(f"{upper:.4g}") if np.isfinite(upper) else "",
+        f"identifiable_{key}": int(not ridge),
+        f"open_{key}": {(False, False): "", (True, False): "below", (False, True): "above"}.get(
+            (lo, hi), "both"
+        ),
+    }
 
 
 def misprint_tables(config: dict, claims: dict, joint: dict[str, dict], settings: dict) -> tuple[list, list]:

@@ -1,0 +1,485 @@
+"""Identifiability by profile likelihood (Raue et al., Bioinformatics 25:1923, 2009).
+
+The straight-line profiles of ``identify`` follow a flat valley along its tangent only; a valley that curves
+in log10 coordinates rises along that line although chi-square is constant along the valley itself. Here a
+quantity q (a free parameter, or a combination K/M, C/M, mu_s N/M of them: a row over the free log10
+parameters) is *fixed* on a grid and chi-square is *re-minimised over everything else*:
+
+    PL_q(t) = min { chi2(u) : row . u = row . u0 + t, u within the bounds }.
+
+* Coordinates: the motion depends on the identifiable coordinates w only (``Problem.identifiable_basis``),
+  so the minimisation runs over the k - 1 coordinates of w that keep the row fixed (least squares,
+  ``PL_NFEV`` evaluations, started from the previous grid point extrapolated linearly); a set
+  outside the bounds is moved along the structural null space (the same motion) into them where a linear
+  programme finds room, else it is infeasible.
+* Grid: t = +-t1 2^j outward from the best fit, t1 from the linearised spread of q (Gauss-Newton, at least
+  ``PL_FIRST_STEP``), the last point on the bound of q; a side ends at the first point above the threshold.
+  A grid point is *within* as soon as a set within the threshold is found (the profile there is at most
+  that chi-square), so a flat profile costs about one run per point.
+* Threshold: ``PL_THRESHOLD`` = 3.84, the 95 % quantile of chi-square with one degree of freedom: the
+  pointwise 95 % confidence interval of q (its likelihood-ratio interval). Residuals are in reading-precision
+  units, so chi-square is the data's own.
+* q is *identifiable* when its profile exceeds the threshold on both sides within the bounds; its interval
+  is then a confidence interval around the best fit. Otherwise q is a *range* (never a point): the side that
+  stays within the threshold up to the bound is *open* (the data do not bound it there).
+* Dimensions: fix one non-identifiable quantity at its best fit and profile the others again, until every
+  one is identifiable (Raue et al.'s resolution of a non-identifiability); the number fixed is the number of
+  flat dimensions of the motion, and k minus it the identifiable dimensions.
+
+Limits: a grid point is judged by a local minimisation with a fixed budget, so a flat set reachable only
+through a barrier is not seen (the profile is then an upper bound of PL_q); the grid doubles outward, so a
+dip narrower than a step is not seen.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import least_squares, linprog
+from scipy.stats import chi2 as chi2_distribution
+
+from .fit import _fun
+from .forward import Forward
+from .identify import JACOBIAN_STEP
+from .problem import COMBINATIONS, Problem
+
+#: Confidence of the profile-likelihood intervals (pointwise, one parameter).
+PL_CONFIDENCE = 0.95
+#: Delta chi-square of PL_CONFIDENCE for one degree of freedom (3.84).
+PL_THRESHOLD = float(chi2_distribution.ppf(PL_CONFIDENCE, 1))
+#: Forward evaluations of the least-squares re-minimisation at one grid point (k - 1 <= 6 coordinates: one
+#: Jacobian and a few steps; a flat profile stops at its first evaluation within the threshold).
+PL_NFEV = 3
+#: A re-minimisation stops early at chi-square within this fraction of the threshold (the next grid point is
+#: extrapolated from it, so it should lie near the valley floor, not at its edge).
+PL_CLOSE = 0.25
+#: A set closer than this to the bounds [log10 units, a factor 1.023] ends a valley on the bounds.
+PL_EDGE = 0.01
+#: Halvings of a step that overshot before a side of the profile ends.
+PL_HALVINGS = 2
+#: A side ends on a rise of the profile (the data bound it) only if its last point within the threshold has
+#: risen by this fraction of it: a smooth rise, stepped to 1/8 of a step by the halvings, ends above it; a
+#: valley the re-minimisation cannot follow further (an exact ridge stays at the floor) does not.
+PL_RISE = 0.25
+#: A profiled quantity moves along a flat dimension, and is a range, when its spread over the sets the open
+#: profiles found within the threshold exceeds this multiple of its linearised 95 % interval at the best fit
+#: (the error bar a point would claim; 2 leaves room for the valley's own width and the Jacobian's noise).
+PL_FLAT_FACTOR = 2.0
+#: Largest grid step [log10 units]: the next set is extrapolated from the last ones, which a curved valley
+#: allows over a short step only.
+PL_MAX_STEP = 0.2
+#: Smallest first grid step [log10 units].
+PL_FIRST_STEP = 0.01
+#: A row whose component outside the identifiable subspace exceeds this is not profiled (structural).
+ROW_SPACE_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class LikelihoodProfile:
+    name: str
+    row: np.ndarray
+    """The profiled quantity as a row over the free log10 parameters."""
+    t: np.ndarray
+    """Offsets [log10 units] from the best fit evaluated, ascending."""
+    chi2: np.ndarray
+    """Profile at each offset (within: the first set found within the threshold; inf: infeasible)."""
+    points: np.ndarray
+    """The free parameter set reached at each offset (rows as ``t``)."""
+    t_lower: float
+    t_upper: float
+    """Interval of offsets within the threshold, connected to the best fit."""
+    open_lower: bool
+    open_upper: bool
+    """Within the threshold up to the bound of the quantity on that side."""
+    evaluations: int
+
+    @property
+    def identifiable(self) -> bool:
+        return not (self.open_lower or self.open_upper)
+
+    def within(self, floor: float, threshold: float) -> np.ndarray:
+        """Free parameter sets of the profile inside [t_lower, t_upper] (within the threshold)."""
+        keep = (self.t >= self.t_lower) & (self.t <= self.t_upper) & (self.chi2 <= floor + threshold)
+        return self.points[keep]
+
+
+@dataclass(frozen=True)
+class ProfileIdentification:
+    profiles: dict
+    """Name -> LikelihoodProfile of the first round (every other quantity free)."""
+    fixed: tuple
+    """Quantities fixed, one per flat dimension, in the order they were fixed."""
+    motion_dimensions: int
+    threshold: float
+    floor: float
+    """Smallest chi-square seen (the best fit's, or lower where a profile found one)."""
+    evaluations: int
+    jacobian_w: np.ndarray | None = None
+    """d residual / d identifiable coordinate at the best fit (central differences)."""
+
+    @property
+    def dimensions(self) -> int:
+        return self.motion_dimensions - len(self.fixed)
+
+
+class _Within(Exception):
+    def __init__(self, z):
+        self.z = z
+
+
+def profiled_rows(problem: Problem) -> dict[str, np.ndarray]:
+    """Quantities to profile: every free parameter the motion determines on its own, and every combination
+    (K/M, C/M, mu_s N/M, ...) that involves a parameter the motion does not determine on its own."""
+    basis = problem.identifiable_basis()
+    eye = np.eye(len(problem.free))
+
+    def in_row_space(row):
+        return np.linalg.norm(row - basis @ (basis.T @ row)) <= ROW_SPACE_TOL * np.linalg.norm(row)
+
+    rows = {p: eye[i] for i, p in enumerate(problem.free) if in_row_space(eye[i])}
+    for name, combo in COMBINATIONS.items():
+        row = np.array([float(combo.get(p, 0)) for p in problem.free])
+        if name in rows or not np.any(row) or not in_row_space(row):
+            continue
+        if any(row[i] and p not in rows for i, p in enumerate(problem.free)):
+            rows[name] = row
+    return rows
+
+
+class _Space:
+    """Moves in the identifiable coordinates through the best fit, kept within the bounds."""
+
+    def __init__(self, problem: Problem, u0: np.ndarray):
+        self.p, self.u0 = problem, u0
+        self.basis = problem.identifiable_basis()
+        n, k = self.basis.shape
+        self.null = np.linalg.svd(self.basis.T, full_matrices=True)[2][k:].T if k < n else np.zeros((n, 0))
+        self.lo, self.hi = problem.log_bounds
+        self.plateau = problem.nonnegative_plateau and "plateau_speed" in problem.free
+        self.jacobian_w, self.r0 = None, None
+
+    def jacobian(self, forward: Forward) -> np.ndarray:
+        """d residual / d w at the best fit by central differences (step JACOBIAN_STEP), once."""
+        if self.jacobian_w is None:
+            self.r0 = forward.residuals(10.0**self.u0)
+            cols = []
+            for e in self.basis.T * JACOBIAN_STEP:
+                up, down = forward.residuals(10.0 ** (self.u0 + e)), forward.residuals(10.0 ** (self.u0 - e))
+                cols.append((up - down) / (2 * JACOBIAN_STEP))
+            self.jacobian_w = np.array(cols).T
+        return self.jacobian_w
+
+    def _constraints(self, u) -> tuple[np.ndarray, np.ndarray]:
+        """A_ub s <= b_ub for a shift s along the null space keeping u + N s within the bounds."""
+        a, b = [self.null, -self.null], [self.hi - u, u - self.lo]
+        if self.plateau:
+            i, j = self.p.free.index("sigma"), self.p.free.index("plateau_speed")
+            a.append((self.null[i] + self.null[j])[None, :])
+            b.append(np.array([-(u[i] + u[j])]))
+        return np.vstack(a), np.concatenate(b)
+
+    def feasible(self, w) -> np.ndarray:
+        """log10 free values with coordinates w: through the best fit, else shifted into the bounds."""
+        u = self.u0 + self.basis @ w
+        if self.p.in_bounds(10.0**u) or self.null.shape[1] == 0:
+            return u
+        a, b = self._constraints(u)
+        res = linprog(np.zeros(self.null.shape[1]), A_ub=a, b_ub=b, bounds=(None, None), method="highs")
+        return u + self.null @ res.x if res.status == 0 else u
+
+    def extent(self, u, rows: np.ndarray) -> np.ndarray:
+        """(lower, upper) of each row . u over the structural shifts of u within the bounds."""
+        out = np.tile((rows @ u)[:, None], (1, 2))
+        if self.null.shape[1] == 0:
+            return out
+        a, b = self._constraints(u)
+        for n, row in enumerate(rows):
+            c = row @ self.null
+            if np.linalg.norm(c) <= ROW_SPACE_TOL:
+                continue
+            for col, sign in ((0, 1.0), (1, -1.0)):
+                res = linprog(sign * c, A_ub=a, b_ub=np.maximum(b, 0.0), bounds=(None, None), method="highs")
+                out[n, col] += sign * res.fun if res.status == 0 else np.nan
+        return out
+
+    def slack(self, u) -> float:
+        """Largest distance [log10] to the box bounds of any set with the motion of u (structural shifts)."""
+        k = self.null.shape[1]
+        if k == 0:
+            return float(np.min(np.minimum(u - self.lo, self.hi - u)))
+        ones = np.ones((len(u), 1))
+        a = np.vstack([np.hstack([-self.null, ones]), np.hstack([self.null, ones])])
+        b = np.concatenate([u - self.lo, self.hi - u])
+        c = np.r_[np.zeros(k), -1.0]
+        res = linprog(c, A_ub=a, b_ub=b, bounds=[(None, None)] * (k + 1), method="highs")
+        return float(-res.fun) if res.status == 0 else 0.0
+
+    def row_limits(self, row) -> tuple[float, float]:
+        """(lowest, highest) offset of row . u from the best fit over the bounds box."""
+        lo = np.sum(np.where(row > 0, row * self.lo, row * self.hi)) - row @ self.u0
+        hi = np.sum(np.where(row > 0, row * self.hi, row * self.lo)) - row @ self.u0
+        return float(lo), float(hi)
+
+
+def _first_step(space: _Space, g: np.ndarray, threshold: float, limit: float) -> float:
+    """Offset where the linearised profile rises by half the threshold (Gauss-Newton spread of g . w)."""
+    jw = space.jacobian_w
+    if jw is None or not np.all(np.isfinite(jw)):
+        return max(PL_FIRST_STEP, limit / 8)
+    var = float(g @ np.linalg.pinv(jw.T @ jw) @ g) / float(g @ g) ** 2
+    step = np.sqrt(threshold / 2 * var) if var > 0 else limit / 8
+    return float(np.clip(step, PL_FIRST_STEP, max(min(limit / 8, PL_MAX_STEP), PL_FIRST_STEP)))
+
+
+def profile_row(
+    forward: Forward,
+    space: _Space,
+    name: str,
+    row: np.ndarray,
+    floor: float,
+    fixed=(),
+    pool: list | None = None,
+    threshold: float = PL_THRESHOLD,
+) -> LikelihoodProfile | None:
+    """The profile likelihood of one quantity (see the module text); None where the fixed quantities
+    already determine it. ``pool``: log10 sets already found within the threshold (by other profiles),
+    tried as starts where the extrapolated one fails; the sets found here are added to it."""
+    g = space.basis.T @ row
+    cons = np.array([space.basis.T @ f for f in fixed]).reshape(-1, len(g))
+    full = np.vstack([cons, g])
+    _, s, vt = np.linalg.svd(full, full_matrices=True)
+    rank = int(np.sum(s > 1e-10 * max(s.max(), 1.0)))
+    if rank <= len(cons):
+        return None
+    q = vt[rank:].T  # the coordinates that keep every fixed quantity and this one
+    along = np.linalg.pinv(full) @ np.r_[np.zeros(len(cons)), 1.0]  # moves g . w by 1, keeps the others
+    evals = forward.evaluations
+    walk = _Walk(forward, space, (g, q, along), [] if pool is None else pool, threshold, floor)
+    ends, opens = [], []
+    for sign in (-1.0, 1.0):
+        t_lo, t_hi = space.row_limits(row)
+        limit = (-t_lo if sign < 0 else t_hi) * (1 - 1e-9)
+        t_in, reached = walk.side(sign, limit, _first_step(space, g, threshold, limit), bool(fixed))
+        ends.append(sign * t_in)
+        opens.append(reached)
+    order = np.argsort(walk.t, kind="stable")
+    return LikelihoodProfile(
+        name=name,
+        row=row,
+        t=np.array(walk.t)[order],
+        chi2=np.array(walk.chi2)[order],
+        points=10.0 ** np.array(walk.u)[order],
+        t_lower=ends[0],
+        t_upper=ends[1],
+        open_lower=opens[0],
+        open_upper=opens[1],
+        evaluations=forward.evaluations - evals,
+    )
+
+
+class _Walk:
+    """The grid of one profile: every point evaluated (t, chi-square, set), stepping out side by side."""
+
+    def __init__(self, forward, space, coordinates, pool, threshold, floor):
+        self.g, self.q, self.along = coordinates  # the quantity, the free coordinates, the step along it
+        self.fun, self.space, self.pool = _fun(forward, space.p), space, pool
+        self.threshold, self.floor = threshold, floor
+        self.jq = space.jacobian(forward) @ self.q if self.q.shape[1] else None
+        self.t, self.chi2, self.u = [0.0], [floor], [space.u0]
+
+    def side(self, sign: float, limit: float, step: float, constrained: bool) -> tuple[float, bool]:
+        """(last offset within the threshold, whether the data leave that side open) stepping out: open when
+        the bound of the quantity is reached within the threshold, when the valley runs into the bounds of
+        the others (no set within the bounds found, or the last set within the threshold lies within PL_EDGE
+        of them), or when the profile had not risen (PL_RISE) before the step that left the threshold."""
+        zs, ts, u_in, c_in = [np.zeros(self.q.shape[1])], [0.0], self.space.u0, self.chi2[0]
+        t_in, reached, halvings, grow = 0.0, limit <= 0, 0, 2.0
+        while not reached:
+            t = min(t_in + step, limit)
+            u, c, z = self.attempt(
+                sign * t, _predict(zs, ts, t, self.jq, self.space, self.along * sign * t), zs[-1]
+            )
+            self.t.append(sign * t), self.chi2.append(c), self.u.append(u)
+            if not c <= self.floor + self.threshold:
+                if halvings < PL_HALVINGS:  # a curved valley may have been overshot: shorter steps on
+                    step, halvings, grow = step / 2, halvings + 1, 1.0
+                    continue
+                flat = c_in < self.floor + PL_RISE * self.threshold  # had not risen: no data bound
+                return t_in, bool(np.isinf(c) or flat or self.space.slack(u_in) < PL_EDGE)
+            self.floor = min(self.floor, c)
+            if not constrained:
+                self.pool.append(u)
+            zs.append(z), ts.append(t)
+            t_in, reached, step, u_in, c_in = t, t >= limit, min(grow * step, PL_MAX_STEP), u, c
+        return t_in, reached
+
+    def attempt(self, t: float, predicted, previous):
+        """The best of the re-minimisations from the extrapolated start, else from the previous point's, else
+        from the nearest pooled set; stops at the first within the threshold."""
+        w_fixed = self.along * t
+        best = self.point(w_fixed, predicted)
+        for start in (previous, *self.from_pool(w_fixed)):
+            if best[1] <= self.floor + self.threshold or start is None:
+                break
+            if start is previous and np.allclose(previous, predicted):
+                continue
+            best = min(best, self.point(w_fixed, start), key=lambda x: x[1])
+        return best
+
+    def point(self, w_fixed, z0):
+        return _minimise(
+            self.fun, self.space, w_fixed, self.q, z0, self.floor + PL_CLOSE * self.threshold, PL_NFEV
+        )
+
+    def from_pool(self, w_fixed) -> list:
+        """Start (z) at the pooled set closest to this value of the quantity, if one is within PL_MAX_STEP."""
+        if not self.pool or self.q.shape[1] == 0:
+            return []
+        ws = (np.array(self.pool) - self.space.u0) @ self.space.basis
+        gap = np.abs(ws @ self.g - w_fixed @ self.g)
+        near = int(np.argmin(gap))
+        return [self.q.T @ ws[near]] if gap[near] <= PL_MAX_STEP else []
+
+
+def _predict(zs, ts, t, jq, space: _Space, w_fixed) -> np.ndarray:
+    """Start of the re-minimisation at offset t: the last three sets extrapolated quadratically (two:
+    linearly), else the Gauss-Newton step from the best fit (the valley's tangent)."""
+    if len(zs) >= 3:
+        return np.array([np.polyval(np.polyfit(ts[-3:], c, 2), t) for c in np.array(zs[-3:]).T]).reshape(-1)
+    if len(zs) >= 2:
+        return zs[-1] + (zs[-1] - zs[-2]) * (t - ts[-1]) / (ts[-1] - ts[-2])
+    if jq is None or not np.all(np.isfinite(jq)):
+        return zs[-1]
+    jw_fixed = space.jacobian_w @ w_fixed
+    return np.linalg.lstsq(jq, -(space.r0 + jw_fixed), rcond=None)[0]
+
+
+def _minimise(fun, space: _Space, w_fixed, q, z0, target: float, nfev: int):
+    """(log10 set, chi-square, z) of the smallest chi-square found over w = w_fixed + q z, stopping at the
+    first set within ``target``."""
+
+    def residuals(z):
+        r = fun(space.feasible(w_fixed + q @ z))
+        if float(r @ r) <= target:
+            raise _Within(np.array(z, dtype=float))
+        return r
+
+    try:
+        if q.shape[1] == 0:
+            residuals(np.zeros(0))
+            z = np.zeros(0)
+        else:
+            z = least_squares(residuals, z0, method="trf", diff_step=JACOBIAN_STEP, max_nfev=nfev).x
+    except _Within as hit:
+        z = hit.z
+    u = space.feasible(w_fixed + q @ z)
+    r = fun(u)
+    chi2 = float(r @ r)
+    return u, (chi2 if space.p.in_bounds(10.0**u) else np.inf), z
+
+
+def profile_identify(forward: Forward, free_values) -> ProfileIdentification:
+    """Profile every quantity of ``profiled_rows`` at a best fit; fix flat ones one by one (module text)."""
+    p = forward.problem
+    u0 = np.log10(np.asarray(free_values, dtype=float))
+    space = _Space(p, u0)
+    r0 = forward.residuals(10.0**u0)
+    floor = float(r0 @ r0)
+    evals = forward.evaluations
+    rows = profiled_rows(p)
+    profiles, pool = {}, []
+    for name, row in rows.items():
+        pr = profile_row(forward, space, name, row, floor, pool=pool)
+        if pr is not None:
+            profiles[name] = pr
+            floor = min(floor, float(np.min(pr.chi2)))
+    fixed = []
+    flat = [n for n, pr in profiles.items() if not pr.identifiable]
+    while flat:
+        fixed.append(flat[0])
+        again = []
+        for name in flat[1:]:
+            pr = profile_row(forward, space, name, rows[name], floor, [rows[f] for f in fixed], pool)
+            if pr is not None and not pr.identifiable:
+                again.append(name)
+        flat = again
+    k = space.basis.shape[1]
+    return ProfileIdentification(
+        profiles, tuple(fixed), k, PL_THRESHOLD, floor, forward.evaluations - evals + 1, space.jacobian_w
+    )
+
+
+def profile_ranges(problem: Problem, free_values, pid: ProfileIdentification, rows: np.ndarray) -> np.ndarray:
+    """(lower, upper) log10 change of each row . u from the best fit over the sets the profiles found within
+    the threshold, each moved along the structural null space within the bounds."""
+    u0 = np.log10(np.asarray(free_values, dtype=float))
+    space = _Space(problem, u0)
+    rows = np.atleast_2d(np.asarray(rows, dtype=float))
+    points = [u0] + [np.log10(x) for pr in pid.profiles.values() for x in pr.within(pid.floor, pid.threshold)]
+    ext = np.array([space.extent(u, rows) for u in points])  # points x rows x 2
+    base = rows @ u0
+    return np.column_stack([np.nanmin(ext[:, :, 0], axis=0) - base, np.nanmax(ext[:, :, 1], axis=0) - base])
+
+
+@dataclass(frozen=True)
+class QuantityRange:
+    """What the data say about one quantity: its range over the sets within the threshold."""
+
+    lower: float
+    upper: float
+    open_lower: bool
+    open_upper: bool
+    """The range reaches the bounds on that side within the threshold (the data do not bound it there)."""
+    profiled: bool
+    identifiable: bool
+    """Profiled, its profile exceeds the threshold on both sides within the bounds, and it does not move
+    along a flat dimension (``quantity_ranges``)."""
+
+
+def quantity_ranges(problem: Problem, free_values, pid: ProfileIdentification, rows: dict) -> dict:
+    """Name -> QuantityRange of each row (a free parameter or a combination, in log10 exponents over the
+    free parameters): the extent over every set the profiles found within the threshold, each moved along
+    the structural null space within the bounds; open where that reaches the row's limit over the bounds
+    box or where its own profile ended on the bounds."""
+    names = list(rows)
+    matrix = np.array([rows[n] for n in names], dtype=float).reshape(len(names), -1)
+    ext = profile_ranges(problem, free_values, pid, matrix)
+    u0 = np.log10(np.asarray(free_values, dtype=float))
+    space = _Space(problem, u0)
+    value = 10.0 ** (matrix @ u0)
+    flat_sets = [
+        np.log10(x)
+        for pr in pid.profiles.values()
+        if not pr.identifiable
+        for x in pr.within(pid.floor, pid.threshold)
+    ]
+    half = _linear_half_width(space, pid, matrix)
+    out = {}
+    for i, name in enumerate(names):
+        lo, hi = space.row_limits(matrix[i])
+        pr = pid.profiles.get(name)
+        open_lo = bool(ext[i, 0] <= lo + 1e-6 or (pr is not None and pr.open_lower))
+        open_hi = bool(ext[i, 1] >= hi - 1e-6 or (pr is not None and pr.open_upper))
+        along = [matrix[i] @ u for u in flat_sets]
+        moves = bool(along) and np.ptp(along + [matrix[i] @ u0]) > PL_FLAT_FACTOR * 2 * half[i]
+        out[name] = QuantityRange(
+            lower=float(value[i] * 10.0 ** ext[i, 0]),
+            upper=float(value[i] * 10.0 ** ext[i, 1]),
+            open_lower=open_lo,
+            open_upper=open_hi,
+            profiled=pr is not None,
+            identifiable=bool(pr is not None and pr.identifiable and not (open_lo or open_hi or moves)),
+        )
+    return out
+
+
+def _linear_half_width(space: _Space, pid: ProfileIdentification, matrix: np.ndarray) -> np.ndarray:
+    """Linearised (Gauss-Newton) 95 % half-width [log10] of each row at the best fit: the error bar a point
+    estimate would claim."""
+    jw = space.jacobian_w if space.jacobian_w is not None else pid.jacobian_w
+    if jw is None or not np.all(np.isfinite(jw)):
+        return np.full(len(matrix), np.inf)
+    cov = np.linalg.pinv(jw.T @ jw)
+    g = matrix @ space.basis
+    return np.sqrt(pid.threshold * np.clip(np.einsum("ij,jk,ik->i", g, cov, g), 0.0, None))
