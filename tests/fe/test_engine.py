@@ -5,7 +5,7 @@ Python loop step for step on the full beam and its Craig-Bampton reduction, for 
 import numpy as np
 import pytest
 
-from stickslip.fe import continuum, engine, explicit
+from stickslip.fe import continuum, driver, engine, explicit
 from stickslip.fe.continuum import build_continuum, integrate_continuum
 from stickslip.fe.explicit import integrate, integrate_python
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
@@ -91,8 +91,9 @@ def test_the_beam_takes_the_band_structure_and_a_small_dense_model_csr():
         assert isinstance(explicit.beam_structure(pr, 0.0), expected)
 
 
-def spy_on_the_engine(monkeypatch, module):
-    """Record the piece types of every engine call the wrapper in ``module`` makes."""
+def spy_on_the_engine(monkeypatch, module=None):
+    """Record the piece types of every engine call a wrapper makes (through the one driver, ``module``)."""
+    module = module or driver
     calls = []
 
     def spy(*args):
@@ -105,7 +106,7 @@ def spy_on_the_engine(monkeypatch, module):
 
 @pytest.mark.parametrize("law", list(LAWS))
 def test_the_beam_wrapper_runs_the_engine_with_the_laws_pieces(law, monkeypatch):
-    calls = spy_on_the_engine(monkeypatch, explicit)
+    calls = spy_on_the_engine(monkeypatch)
     system, contact_law, start = beam(law)
     integrate(system, contact_law, 2e-4, initial_state=start, chunk=500)
     piece = {"kinematic": "KinematicPoint", "penalty": "PenaltyPoint", "fixed_normal": "FixedNormalPoint"}
@@ -119,7 +120,7 @@ def test_the_beam_wrapper_runs_the_engine_with_the_laws_pieces(law, monkeypatch)
 
 @pytest.mark.parametrize("method", ["kinematic", "penalty"])
 def test_the_continuum_wrapper_runs_the_engine_with_the_laws_pieces(method, monkeypatch):
-    calls = spy_on_the_engine(monkeypatch, continuum)
+    calls = spy_on_the_engine(monkeypatch)
     integrate_continuum(strip(method), 1e-4, chunk=200)
     piece = {"kinematic": "KinematicNodes", "penalty": "PenaltyNodes"}[method]
     assert len(calls) > 1 and set(calls) == {("QuadStructure", piece, "NodeRecorder")}
@@ -141,7 +142,7 @@ def test_the_engine_called_directly_gives_the_beam_wrappers_result(law):
         1, pr.n_steps, pr.every, 1, pr.dt, 1e6, u, v, counts, structure, contact, recorder
     )
     assert (n, diverged) == (wrapped.n_steps, False)
-    assert explicit._named_counts(counts) == wrapped.step_counts
+    assert driver.named_counts(counts) == wrapped.step_counts
     np.testing.assert_array_equal(st[:j], wrapped.state)
     for k, name in enumerate(SERIES):
         np.testing.assert_array_equal(out[k, :j], getattr(wrapped, name), err_msg=name)

@@ -29,7 +29,6 @@ Units as ``params``: mm, s, N, t (tonne), MPa.
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -37,8 +36,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from . import engine
-from .engine import run_steps
-from .explicit import SEPARATED, STICK, ExplicitResult
+from .driver import SEPARATED, STICK, ExplicitResult, drive, pack_result
 from .params import BeamParams, ContactParams, DiscParams, FrictionTable
 
 OUTPUT_NODES = ("free_end_lower", "free_end_upper", "free_end_axis", "contact")
@@ -529,6 +527,11 @@ def integrate_continuum(
     ``state`` are the primary contact node's. ``progress(done, total)`` is called between chunks.
     ``u0``/``v0`` (all DOFs) override the initial displacement/velocity. ``record_state`` stores u, v (all
     DOFs) at every sample (slow path, for tests).
+
+    A thin wrapper of :func:`stickslip.fe.driver.drive`. Its defaults differ from
+    :func:`stickslip.fe.explicit.integrate`'s on purpose: ``initial_state="drop"`` (not ``static``),
+    ``blowup=1e3`` mm (not 1e6); no second-half counts, and a blow-up reports the end of its chunk as the
+    steps done (``n_steps``).
     """
     _check_run(duration, safety_factor)
     if initial_state not in CONTINUUM_INITIAL_STATES:
@@ -556,9 +559,8 @@ def integrate_continuum(
     onode = (2 * scene.output_nodes).astype(np.int64)
     ow = np.asarray(scene.output_weights, float)
     pt = [float(ow @ arr[onode + k]) for arr in (u, v) for k in (0, 1)]
-    out = np.zeros((n_out, 8))
+    out = np.zeros((n_out, 8))  # the node recorder writes the series by column
     ost = np.zeros(n_out, np.int8)
-    counts = np.zeros(3, np.int64)
     has_contact = scene.contact_nodes.size > 0
     closed = has_contact and (initial_state != "static" or N_stat > 0)
     out[0] = (0.0, *pt, N_stat if initial_state == "static" else 0.0, 0.0, 0.0)
@@ -566,37 +568,23 @@ def integrate_continuum(
         c0 = 2 * scene.contact_nodes[scene.primary]
         out[0, 7] = float(scene.tangents[scene.primary] @ v[c0 : c0 + 2]) - scene.disc_speed
     ost[0] = STICK if closed else SEPARATED
-    qs = [u.copy()] if record_state else None
-    vs = [v.copy()] if record_state else None
+    u_start, v_start = u.copy(), v.copy()
     structure, contact = quad_structure(scene, dt), node_contact(scene, dt)
     recorder = node_recorder(scene, out, ost)
-    step = chunk if not record_state else every
-    j, done, diverged = 1, 0, False
-    t0 = time.process_time()
-    while done < n_steps and not diverged:
-        stop = min(done + step, n_steps)
-        j, _, diverged = run_steps(
-            done + 1, stop, every, j, dt, blowup, u, v, counts, structure, contact, recorder
-        )
-        done = stop  # a diverged run reports its chunk's end
-        if record_state and done % every == 0:
-            qs.append(u.copy())
-            vs.append(v.copy())
-        if progress is not None:
-            progress(done, n_steps)
-    cpu = time.process_time() - t0
-    m = j
-    res = ExplicitResult(
-        t=out[:m, 0].copy(), x=out[:m, 1].copy(), y=out[:m, 2].copy(), vx=out[:m, 3].copy(),
-        vy=out[:m, 4].copy(), normal_force=out[:m, 5].copy(), friction_force=out[:m, 6].copy(),
-        slip_velocity=out[:m, 7].copy(), state=ost[:m].copy(), dt=dt, dt_crit=dt_crit,
-        n_steps=done, step_counts=dict(zip(("separation", "stick", "slip"), counts.tolist(), strict=True)),
-        cpu_time=cpu, static_normal_force=N_stat, q_static=q_stat,
-        q_samples=None if qs is None else np.array(qs[:m]),
-        v_samples=None if vs is None else np.array(vs[:m]),
+    # The driver keeps the sampled states (sample_state: chunks of one output interval); no second-half
+    # counts (halves off); a blow-up reports the end of its chunk as the steps done.
+    run = drive(
+        structure, contact, recorder, u, v, n_steps=n_steps, every=every, dt=dt, blowup=blowup,
+        chunk=chunk, progress=progress, sample_state=record_state,
+    )  # fmt: skip
+    m = run.j
+    res = pack_result(
+        out.T, ost, run, n_steps=run.chunk_end, dt=dt, dt_crit=dt_crit, static_normal_force=N_stat,
+        q_static=q_stat,
+        q_samples=np.array(([u_start] + run.q_samples)[:m]) if record_state else None,
+        v_samples=np.array(([v_start] + run.v_samples)[:m]) if record_state else None,
     )  # fmt: skip
     res.extra.update(
-        diverged=bool(diverged),
         model="continuum",
         mesh=f"{scene.mesh.nx}x{scene.mesh.ny}",
         output_node=scene.output_name,

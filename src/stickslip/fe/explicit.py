@@ -20,17 +20,17 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sps
 
 from . import engine
-from .engine import run_steps
+from .driver import SEPARATED, SLIP, STICK, ExplicitResult, drive, named_counts, pack_result
 from .params import FrictionTable
 
-SEPARATED, STICK, SLIP = 0, 1, 2
+__all__ = ["SEPARATED", "SLIP", "STICK", "ExplicitResult", "integrate", "integrate_python"]
 
 
 @dataclass(frozen=True)
@@ -120,36 +120,6 @@ def static_state(system: System, law: ContactLaw) -> tuple[np.ndarray, float]:
 
 
 @dataclass
-class ExplicitResult:
-    t: np.ndarray
-    x: np.ndarray  #: horizontal displacement of the contact point [mm]
-    y: np.ndarray  #: vertical displacement [mm]
-    vx: np.ndarray  #: horizontal velocity [mm s-1]
-    vy: np.ndarray  #: vertical velocity [mm s-1]
-    normal_force: np.ndarray  #: [N]
-    friction_force: np.ndarray  #: friction on the beam along the disc velocity [N]
-    slip_velocity: np.ndarray  #: beam minus disc tangential velocity [mm s-1]
-    state: np.ndarray  #: 0 separated, 1 stick, 2 slip (per sample)
-    dt: float
-    dt_crit: float
-    n_steps: int
-    step_counts: dict  #: steps in each contact state over the whole run
-    cpu_time: float
-    static_normal_force: float
-    q_static: np.ndarray
-    q_samples: np.ndarray | None = None
-    v_samples: np.ndarray | None = None
-    extra: dict = field(default_factory=dict)
-
-    def fractions(self, window: str = "all") -> dict:
-        """Fractions of increments per contact state, over the whole run or (``second_half``) over the
-        increments after half the duration (the window the amplitude metrics use)."""
-        c = self.step_counts if window == "all" else self.extra.get("second_half_counts", self.step_counts)
-        tot = max(sum(c.values()), 1)
-        return {k: v / tot for k, v in c.items()}
-
-
-@dataclass
 class _Prepared:
     dt: float
     dt_crit: float
@@ -222,10 +192,6 @@ def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_
     )
 
 
-def _named_counts(c) -> dict:
-    return {"separation": int(c[0]), "stick": int(c[1]), "slip": int(c[2])}
-
-
 def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitResult:
     res = ExplicitResult(
         t=out[0, :m].copy(),
@@ -240,7 +206,7 @@ def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitRe
         dt=pr.dt,
         dt_crit=pr.dt_crit,
         n_steps=n_done,
-        step_counts=_named_counts(counts),
+        step_counts=named_counts(counts),
         cpu_time=cpu,
         static_normal_force=pr.N_stat,
         q_static=pr.q_stat,
@@ -369,6 +335,11 @@ def integrate(
     backend; the columns of ``q_samples`` / ``v_samples`` are then those DOFs in that order).
 
     Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
+
+    A thin wrapper of :func:`stickslip.fe.driver.drive`. Its defaults differ from
+    :func:`stickslip.fe.continuum.integrate_continuum`'s on purpose: ``initial_state="static"`` (not
+    ``drop``), ``blowup=1e6`` mm (not 1e3); its result counts the second half's states apart
+    (``extra['second_half_counts']``) and a blow-up reports the sampled step at which it was found.
     """
     if backend == "python":
         return integrate_python(
@@ -393,7 +364,7 @@ def integrate(
         system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
         mass_damping, stiffness_damping,
     )  # fmt: skip
-    out = np.zeros((8, pr.n_out))
+    out = np.zeros((8, pr.n_out))  # the point recorder writes the series by row
     st = np.zeros(pr.n_out, dtype=np.int8)
     rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
     rec = rec.astype(np.int64)
@@ -402,33 +373,17 @@ def integrate(
     _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None, rec)
     recorder = point_recorder(system, law, out, st, record_state, qs, vs, rec)
     structure, contact = beam_structure(pr, stiffness_damping), point_contact(system, law, pr)
-    counts = np.zeros(3, dtype=np.int64)
-    u, v = pr.u.copy(), pr.v.copy()
-    j, n_done, diverged = 1, 0, False
-    n_half = pr.n_steps // 2
-    first_half = counts.copy()
-    t0 = time.process_time()
-    n0 = 1
-    while n0 <= pr.n_steps:
-        n1 = min(pr.n_steps, n0 + chunk - 1)
-        if n0 <= n_half < n1:  # a chunk ends at the half-way step, to count the second half's states
-            n1 = n_half
-        j, n_done, diverged = run_steps(
-            n0, n1, pr.every, j, pr.dt, blowup, u, v, counts, structure, contact, recorder
-        )
-        if n1 == n_half:
-            first_half = counts.copy()
-        if progress is not None:
-            progress(n_done, pr.n_steps)
-        if diverged:
-            break
-        n0 = n1 + 1
-    cpu = time.process_time() - t0
-    if not record_state:
-        qs = vs = None
-    res = _result(pr, out, st, j, n_done, counts, cpu, qs, vs, diverged)
-    res.extra["second_half_counts"] = _named_counts(counts - first_half)
-    return res
+    # The point recorder keeps the sampled states itself (sample_state off); the second half's states are
+    # counted apart (halves); a blow-up reports the sampled step at which it was found.
+    run = drive(
+        structure, contact, recorder, pr.u.copy(), pr.v.copy(), n_steps=pr.n_steps, every=pr.every,
+        dt=pr.dt, blowup=blowup, chunk=chunk, progress=progress, halves=True,
+    )  # fmt: skip
+    return pack_result(
+        out, st, run, n_steps=run.n_done, dt=pr.dt, dt_crit=pr.dt_crit, static_normal_force=pr.N_stat,
+        q_static=pr.q_stat, q_samples=qs[: run.j] if record_state else None,
+        v_samples=vs[: run.j] if record_state else None,
+    )  # fmt: skip
 
 
 def integrate_python(
@@ -540,5 +495,5 @@ def integrate_python(
                 break
     cpu = time.process_time() - t0
     res = _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
-    res.extra["second_half_counts"] = _named_counts(np.subtract(counts, first_half))
+    res.extra["second_half_counts"] = named_counts(np.subtract(counts, first_half))
     return res

@@ -1,0 +1,71 @@
+"""The config models' common ground: the mapping bases (unknown keys are errors), number types and the
+cross-reference helpers every section uses."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+#: Jobs a dense map may be split into unless ``dense_map.max_chunks`` says otherwise.
+DEFAULT_MAX_CHUNKS = 2000
+
+#: Where the generated JSON schema lives (for editors, `snakemake --lint` readers and documentation).
+SCHEMA_PATH = Path("workflow/schemas/config.schema.json")
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
+Names = Annotated[list[str], Field(min_length=1)]
+#: A reading of the paper's friction law (``stickslip.model.friction.VARIANTS``; a test keeps them equal).
+Variant = Literal["eq3_printed", "eq4_printed", "consistent"]
+#: How the parameters' units are read (``stickslip.model.params.UNIT_READINGS``; a test keeps them equal).
+Units = Literal["as_given", "si"]
+
+
+def belt_parameter(name: str) -> str:
+    """``name`` is a parameter of the 1-DOF model (what a sweep or a map axis may set)."""
+    import dataclasses
+
+    from ...model.params import BeltParams
+
+    known = {f.name for f in dataclasses.fields(BeltParams)} - {"units"}
+    if name not in known:
+        raise ValueError(f"{name!r} is not a parameter (known: {sorted(known)})")
+    return name
+
+
+def linked_parameters(linked: dict | None) -> dict | None:
+    for name in linked or {}:
+        belt_parameter(name)
+    return linked
+
+
+def needs_switch(key: str, law, method: str, methods: dict) -> None:
+    """A friction law other than the readings' is solved by the switch solver only."""
+    if law is not None and methods[method].solver != "switch":
+        raise ValueError(
+            f"{key}.method: a friction law needs a method whose solver is 'switch' (the exact solver handles "
+            f"the readings' affine laws only), got {method!r}"
+        )
+
+
+def check_refs(refs, known: dict, section: str) -> None:
+    """Every (key, name) in ``refs`` names an entry of ``known`` (the mapping at ``section``)."""
+    for key, name in refs:
+        if name not in known:
+            raise ValueError(f"{key}: {name!r} is not an entry of {section} ({sorted(known)})")
+
+
+class Section(BaseModel):
+    """A config mapping: unknown keys are errors (a misspelt key must not be silently ignored)."""
+
+    model_config = ConfigDict(extra="forbid", strict=True)  # no "5" for 5: YAML types are meant
+
+
+class Open(BaseModel):
+    """A mapping whose extra keys are settings checked elsewhere (solver settings: ``check_settings``)."""
+
+    model_config = ConfigDict(extra="allow", strict=True)

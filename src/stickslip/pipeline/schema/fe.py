@@ -1,0 +1,200 @@
+"""The ``fe`` section (``config/fe.yaml``): the beam on disc and the continuum strip."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
+
+
+class Beam(Section):
+    length: Positive | None = Field(None, description="mm")
+    thickness: Positive | None = Field(None, description="mm")
+    width: Positive | None = Field(None, description="mm")
+    youngs_modulus_gpa: Positive | None = None
+    density_kg_m3: Positive | None = None
+    poisson_ratio: Annotated[float, Field(ge=0, lt=0.5, allow_inf_nan=False)] | None = None
+    gravity_m_s2: NonNegative | None = None
+    n_elements: Annotated[int, Field(ge=1)] | None = None
+    mass: Literal["lumped", "consistent"] | None = None
+    rotary_inertia: bool | None = None
+
+
+class Disc(Section):
+    diameter: Positive | None = Field(None, description="mm")
+    speed_rev_per_min: NonNegative | None = None
+    surface_speed_mm_s: NonNegative | None = None
+    direction: Literal["clockwise", "counterclockwise"] | None = None
+
+
+Angle = Annotated[float, Field(ge=-80, le=80, allow_inf_nan=False)]
+
+
+class Contact(Section):
+    method: Literal["kinematic", "penalty", "fixed_normal"] | None = None
+    angle_deg: Angle | None = None
+    penalty_stiffness: Positive | None = Field(None, description="N mm-1")
+    surface_offset: bool | None = None
+    output_node: Literal["free_end_lower", "free_end_axis", "free_end_upper"] | None = None
+
+
+class FeSolver(Section):
+    t_end: Positive | None = Field(None, description="simulated time [s]")
+    safety_factor: Fraction | None = None
+    output_dt: Positive | None = Field(None, description="output interval [s]")
+    initial_state: Literal["static", "drop", "undeformed"] | None = None
+    mass_damping: NonNegative | None = Field(None, description="s-1")
+    stiffness_damping: NonNegative | None = Field(None, description="s")
+
+
+class FeOutput(Section):
+    bin_width: Positive | None = Field(None, description="s")
+    windows: list[Annotated[list[NonNegative], Field(min_length=2, max_length=2)]] | None = None
+
+    @model_validator(mode="after")
+    def windows_ordered(self):
+        for i, (start, stop) in enumerate(self.windows or []):
+            if not start < stop:
+                raise ValueError(f"windows[{i}]: start < stop needed, got [{start!r}, {stop!r}]")
+        return self
+
+
+class FeScene(Section):
+    description: str | None = None
+    beam: Beam | None = None
+    disc: Disc | None = None
+    contact: Contact | None = None
+    solver: FeSolver | None = None
+    output: FeOutput | None = None
+
+
+def fe_scene_parameter(path: str) -> str:
+    """A sweep's ``parameter``: ``<section>.<key>`` naming a numeric key of an FE scene's schema."""
+    sections = {"beam": Beam, "disc": Disc, "contact": Contact, "solver": FeSolver}
+    section, _, key = path.partition(".")
+    if section not in sections:
+        raise ValueError(f"{path!r}: the section must be one of {sorted(sections)}")
+    numeric = sorted(
+        name
+        for name, field in sections[section].model_fields.items()
+        if any(t in str(field.annotation) for t in ("float", "int")) and "bool" not in str(field.annotation)
+    )
+    if key not in numeric:
+        raise ValueError(f"{path!r}: {section} has no numeric key {key!r} (it has {', '.join(numeric)})")
+    return path
+
+
+#: A friction slope d mu / d v_r [s mm-1] of the stability study: |slope| x 0.5 mm/s (the slowest disc
+#: surface speed of the paper's scenes) at most 1, i.e. the friction coefficient changes by at most 1 over
+#: that speed; the paper's own slopes (sigma = 0.3, 0.5) and the study's (<= 0.3) are far inside.
+MAX_FRICTION_SLOPE = 2.0
+Slope = Annotated[float, Field(ge=-MAX_FRICTION_SLOPE, le=MAX_FRICTION_SLOPE, allow_inf_nan=False)]
+
+
+class FeSweep(Section):
+    base: str
+    parameter: str
+    coord: str
+    units: str | None = None
+    long_name: str | None = None
+    values: Annotated[list[Finite], Field(min_length=2)]
+    t_end: Positive | None = None
+
+    _parameter = field_validator("parameter")(fe_scene_parameter)
+
+
+class Convergence(Section):
+    base: str
+    n_elements: Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2)]
+    safety_factors: Annotated[list[Fraction], Field(min_length=1)] | None = None
+    t_end: Positive
+
+
+class Stability(Section):
+    base: str
+    angles: Annotated[list[Angle], Field(min_length=1)]
+    slopes: Annotated[list[Slope], Field(min_length=1)]
+    crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
+    crosscheck_e_folds: Positive | None = None
+    crosscheck_max_t_end: Positive | None = None
+
+    @model_validator(mode="after")
+    def crosscheck_slopes_bounded(self):
+        for i, (_, slope) in enumerate(self.crosscheck or []):
+            if abs(slope) > MAX_FRICTION_SLOPE:
+                raise ValueError(
+                    f"crosscheck[{i}][1]: friction slope {slope!r} outside [-{MAX_FRICTION_SLOPE}, "
+                    f"{MAX_FRICTION_SLOPE}] s mm-1"
+                )
+        return self
+
+
+class Reduced(Section):
+    n_bending_modes: Annotated[int, Field(ge=0)] | None = None
+    n_axial_modes: Annotated[int, Field(ge=0)] | None = None
+    safety_factor: Fraction | None = None
+
+
+Mesh = Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2, max_length=2)]
+
+
+class Comparison(Section):
+    mesh: Mesh
+    t_end: Positive
+    notes: dict[str, str] | None = None
+    claim_windows: dict[str, Positive] | None = Field(
+        None, description="scene -> t_end [s]: the continuum also runs these over a claim window (dt, dt/2)"
+    )
+
+
+class Increments(Section):
+    base: str
+    meshes: Annotated[list[Mesh], Field(min_length=1)]
+    safety_factors: Annotated[list[Fraction], Field(min_length=1)]
+    betas: Annotated[list[NonNegative], Field(min_length=1)]
+
+
+class FePeer(Section):
+    """The CalculiX peer of the continuum strip (rule fe_peer_calculix)."""
+
+    mesh: Mesh = Field(
+        description="nx, ny of the strip both the continuum and CalculiX solve (the paper's 100 x 1)"
+    )
+    tolerance: Fraction = Field(
+        description="largest |relative difference| of any two of closed form, continuum, ccx"
+    )
+
+
+class LongRuns(Section):
+    scene_t_end: Positive
+    comparison_t_end: Positive
+
+
+class Fe(Section):
+    friction_table: str = Field(description="CSV relative_velocity_mm_per_s,mu from rule friction_table")
+    long_runs: LongRuns
+    control_readings_t_end: Positive = Field(
+        description="solver.t_end [s] of every FE reading but the first (the default runs the scenes' own)"
+    )
+    defaults: FeScene
+    readings: Annotated[dict[str, FeScene], Field(min_length=1)]
+    scenes: Annotated[dict[str, FeScene], Field(min_length=1)]
+    sweeps: dict[str, FeSweep]
+    convergence: Convergence
+    stability: Stability
+    cross_scene: dict[str, Annotated[list[str], Field(min_length=3, max_length=3)]]
+    reduced: Reduced
+    comparison: Comparison
+    increments: Increments
+    peer: FePeer | None = None
+
+    @model_validator(mode="after")
+    def bases_are_scenes(self):
+        refs = [(f"fe.sweeps.{n}.base", sw.base) for n, sw in self.sweeps.items()]
+        refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
+        refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
+        refs += [(f"fe.comparison.claim_windows.{n}", n) for n in self.comparison.claim_windows or {}]
+        check_refs(refs, self.scenes, "fe.scenes")
+        return self

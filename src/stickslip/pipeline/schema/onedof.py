@@ -1,0 +1,296 @@
+"""The sections of ``config/config.yaml``: the 1-DOF mass on belt (``onedof``), ``claims``, ``ensemble``
+and ``notebooks``."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from .base import (
+    Finite,
+    Names,
+    NonNegative,
+    Open,
+    Positive,
+    Section,
+    Units,
+    Variant,
+    belt_parameter,
+    check_refs,
+    linked_parameters,
+    needs_switch,
+)
+
+
+class BeltParameters(Section):
+    mass: Positive | None = Field(None, description="M [kg]")
+    stiffness: Positive | None = Field(None, description="K [N/mm]")
+    damping: NonNegative | None = Field(None, description="C [N s/mm]")
+    mu_s: Positive | None = Field(None, description="static friction coefficient")
+    sigma: NonNegative | None = Field(None, description="friction slope [s/mm]")
+    normal_force: Positive | None = Field(None, description="N [N]")
+    x0: Finite | None = Field(None, description="initial displacement [mm]")
+    v0: Finite | None = Field(None, description="initial velocity [mm/s]")
+    belt_velocity: NonNegative | None = Field(None, description="V_b [mm/s]")
+    belt_deceleration: NonNegative | None = Field(None, description="[mm/s^2]")
+    units: Units | None = None
+    plateau_speed: Positive | None = Field(None, description="friction plateau speed v_p [mm/s]")
+
+
+class RunLengths(Section):
+    t_end: Positive | None = Field(None, description="simulated time [s]")
+    output_dt: Positive | None = Field(None, description="output interval [s]")
+    transient: NonNegative | None = Field(None, description="discarded start [s]")
+    count_window: Positive | None = Field(None, description="peak-count window [s] (paper: 18 s)")
+
+
+def check_run_lengths(run: dict, key_of: dict) -> None:
+    """A run's lengths fit inside it: ``output_dt <= t_end``, ``transient < t_end``, ``count_window <=
+    t_end`` (peaks are counted in [0, count_window]). ``key_of`` names where each value came from."""
+    t_end = run.get("t_end")
+    if t_end is None:
+        return
+    for name, bad in (
+        ("output_dt", lambda v: v > t_end),
+        ("transient", lambda v: v >= t_end),
+        ("count_window", lambda v: v > t_end),
+    ):
+        value = run.get(name)
+        if value is not None and bad(value):
+            raise ValueError(
+                f"{key_of[name]}: {value!r} does not fit in the run's t_end = {t_end!r} ({key_of['t_end']})"
+            )
+
+
+def merged_run_lengths(layers: list[tuple[str, Any]]) -> tuple[dict, dict]:
+    """(values, key each came from) of the run-length keys over config layers, later layers winning."""
+    run, key_of = {}, {}
+    for prefix, layer in layers:
+        for name in ("t_end", "output_dt", "transient", "count_window"):
+            value = getattr(layer, name, None) if layer is not None else None
+            if value is not None:
+                run[name], key_of[name] = value, f"{prefix}.{name}"
+    return run, key_of
+
+
+class OnedofDefaults(RunLengths):
+    params: BeltParameters
+    t_end: Positive
+    output_dt: Positive
+
+
+class Reading(Section):
+    variant: Variant
+    sigma: NonNegative | None = None
+    units: Units | None = None
+    plateau_speed: Positive | None = None
+    output_dt: Positive | None = None
+    description: str | None = None
+
+
+class Method(Open):
+    solver: str
+    rtol: Positive | None = None
+    atol: Positive | None = None
+
+    @field_validator("solver")
+    @classmethod
+    def registered(cls, name: str) -> str:
+        from ...solvers import REGISTRY  # the registry is the one list of solver names
+
+        if name not in REGISTRY:
+            raise ValueError(f"{name!r} is not one of {sorted(REGISTRY)}")
+        return name
+
+
+class Scene(RunLengths):
+    figure: str | None = None
+    description: str | None = None
+    params: BeltParameters | None = None
+    law: Law | None = None  # any friction law replacing the reading's (as in sweeps; switch solver only)
+
+
+class Eq6(Section):
+    f_max: Positive
+    points: Annotated[int, Field(ge=10)]
+    force: str | None = None
+
+
+class Law(Open):
+    """Any friction law of ``model/laws.py``: ``kind`` and its parameters (checked by ``law_from_config``)."""
+
+    kind: Literal["affine", "coulomb", "stribeck", "rational", "tabulated"]
+
+
+class DenseRange(Section):
+    start: Finite
+    stop: Finite
+    num: Annotated[int, Field(ge=2)]
+    spacing: Literal["linear", "log"] | None = None  # the same key as a dense map's axis
+
+    @model_validator(mode="after")
+    def ordered(self):
+        if self.start >= self.stop:
+            raise ValueError(f"start < stop needed, got {self.start!r} >= {self.stop!r}")
+        if self.spacing == "log" and self.start <= 0:
+            raise ValueError(f"log spacing needs start > 0, got {self.start!r}")
+        return self
+
+
+class Sweep(Section):
+    figure: str | None = None
+    scene: str | None = None
+    method: str | None = None
+    parameter: str
+    units: str | None = None
+    long_name: str | None = None
+    values: Annotated[list[Finite], Field(min_length=1)]
+    linked: dict[str, Finite] | None = None
+    law: Law | None = None
+    dense: DenseRange
+
+    _parameter = field_validator("parameter")(belt_parameter)
+    _linked = field_validator("linked")(linked_parameters)
+
+
+class SweepFigure(Section):
+    title: str | None = None
+    sweep: str
+    readings: Names
+
+
+class CriticalSpeed(Section):
+    readings: Names
+    start: Positive
+    stop: Positive
+    num: Annotated[int, Field(ge=3)]
+    t_end: Positive
+    transient: NonNegative
+
+    @model_validator(mode="after")
+    def ordered(self):
+        if not self.start < self.stop:
+            raise ValueError(
+                f"start < stop needed (the continuation runs upward), got {self.start!r}, {self.stop!r}"
+            )
+        if not self.transient < self.t_end:
+            raise ValueError(f"transient: {self.transient!r} does not fit in t_end = {self.t_end!r}")
+        return self
+
+
+class FrictionTable(Section):
+    scene: str
+    reading: str
+    method: str
+    bins: Annotated[int, Field(ge=2)]
+
+
+class Figure(Section):
+    title: str | None = None
+    scene: str
+    plot: Literal["timeseries", "phase", "velocity"] | None = None
+    readings: Names
+    methods: Names
+
+
+class Baseline(Section):
+    """The paper's baseline run: what a study without its own scene, reading or method starts from."""
+
+    scene: str
+    reading: str
+    method: str
+
+
+class Onedof(Section):
+    baseline: Baseline
+    defaults: OnedofDefaults
+    readings: Annotated[dict[str, Reading], Field(min_length=1)]
+    methods: Annotated[dict[str, Method], Field(min_length=1)]
+    scenes: Annotated[dict[str, Scene], Field(min_length=1)]
+    eq6: Eq6 | None = None
+    sweeps: dict[str, Sweep] = {}
+    sweep_figures: dict[str, SweepFigure] = {}
+    critical_speed: CriticalSpeed | None = None
+    friction_table: FrictionTable
+    figures: dict[str, Figure]
+
+    @model_validator(mode="after")
+    def names_refer_to_entries(self):
+        """Figures, sweeps, sweep figures, the friction table and the critical speed name existing
+        scenes, readings, methods and sweeps."""
+        scenes, readings, methods = [], [], []
+        for name, fig in self.figures.items():
+            scenes.append((f"onedof.figures.{name}.scene", fig.scene))
+            readings += [(f"onedof.figures.{name}.readings", r) for r in fig.readings]
+            methods += [(f"onedof.figures.{name}.methods", m) for m in fig.methods]
+        base = self.baseline
+        scenes.append(("onedof.baseline.scene", base.scene))
+        readings.append(("onedof.baseline.reading", base.reading))
+        methods.append(("onedof.baseline.method", base.method))
+        for name, sweep in self.sweeps.items():
+            scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or base.scene))
+            methods.append((f"onedof.sweeps.{name}.method", sweep.method or base.method))
+        table = self.friction_table
+        scenes.append(("onedof.friction_table.scene", table.scene))
+        readings.append(("onedof.friction_table.reading", table.reading))
+        methods.append(("onedof.friction_table.method", table.method))
+        if self.critical_speed is not None:
+            readings += [("onedof.critical_speed.readings", r) for r in self.critical_speed.readings]
+        for name, fig in self.sweep_figures.items():
+            check_refs([(f"onedof.sweep_figures.{name}.sweep", fig.sweep)], self.sweeps, "onedof.sweeps")
+            readings += [(f"onedof.sweep_figures.{name}.readings", r) for r in fig.readings]
+        check_refs(scenes, self.scenes, "onedof.scenes")
+        check_refs(readings, self.readings, "onedof.readings")
+        check_refs(methods, self.methods, "onedof.methods")
+        for name, sweep in self.sweeps.items():
+            needs_switch(f"onedof.sweeps.{name}", sweep.law, sweep.method or base.method, self.methods)
+        for name, fig in self.figures.items():  # a scene with its own law runs only under the switch solver
+            for method in fig.methods:
+                needs_switch(f"onedof.figures.{name}", self.scenes[fig.scene].law, method, self.methods)
+        for name, scene in self.scenes.items():
+            for rname, reading in self.readings.items():
+                check_run_lengths(
+                    *merged_run_lengths(
+                        [
+                            ("onedof.defaults", self.defaults),
+                            (f"onedof.scenes.{name}", scene),
+                            (f"onedof.readings.{rname}", reading),
+                        ]
+                    )
+                )
+        return self
+
+
+class Claims(Section):
+    readings: Names
+    check: bool | None = None
+    #: the reading every figure's verdict is given in, declared by the rule of docs/READINGS.md
+    primary_reading: str
+    #: the equations and values exactly as printed, shown beside the primary verdict
+    as_printed_reading: str
+
+    @model_validator(mode="after")
+    def _verdict_readings_are_checked(self):
+        for key in ("primary_reading", "as_printed_reading"):
+            if getattr(self, key) not in self.readings:
+                raise ValueError(
+                    f"{key}: {getattr(self, key)!r} is not one of claims.readings {self.readings}"
+                )
+        return self
+
+
+class Ensemble(Section):
+    relative: Annotated[float, Field(gt=0, lt=1e-3, allow_inf_nan=False)] | None = None
+    seeds: Annotated[list[int], Field(min_length=1)] | None = None
+    step_factor: Annotated[float, Field(gt=0, lt=1, allow_inf_nan=False)] | None = None
+    step_keys: list[str] | None = None
+    blas_threads: Annotated[int, Field(ge=1)] | None = None
+
+
+class Notebook(Section):
+    figures: list[str] | None = None
+    sweep_figures: list[str] | None = None
+    inputs: list[str] | None = Field(
+        None, description="{reading}: each claims reading; {critical_reading}: each critical-speed reading"
+    )
