@@ -402,7 +402,8 @@ def test_an_unidentified_inverse_quantity_is_shown_as_a_range_never_a_point():
     from stickslip.presentation.page import range_text
 
     row = {"best_sigma": "", "lower_sigma": "0.19", "upper_sigma": "1.5", "identifiable_sigma": "0",
-           "open_sigma": "above", "best_k": "7.8", "lower_k": "6.5", "upper_k": "9.5", "identifiable_k": "1"}  # fmt: skip
+           "open_sigma": "above", "best_k": "7.8", "lower_k": "6.5", "upper_k": "9.5",
+           "identifiable_k": "1"}  # fmt: skip
     assert range_text(row, "sigma") == "sigma: range 0.19–1.5 (open above)"
     assert range_text(row, "k") == "k = 7.8 [6.5, 9.5]"
     assert range_text(row, "absent") == ""

@@ -127,9 +127,9 @@ def _analyse(r: dict) -> _Analysis:
         dims = float(min(ident.dimensions, pid.dimensions))
         if pid.floor < fit.chi2 - pid.threshold:  # a profile went deeper than the fit: not a minimum
             note = (
-                f"not counted: a profile reached chi2 {pid.floor:.4g}, below the fit's {fit.chi2:.4g} by more "
-                f"than the threshold {pid.threshold:g}, so the fit is not at the minimum its flat directions "
-                "are counted from"
+                f"not counted: a profile reached chi2 {pid.floor:.4g}, below the fit's {fit.chi2:.4g} by "
+                f"more than the threshold {pid.threshold:g}, so the fit is not at the minimum its flat "
+                "directions are counted from"
             )
             return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, np.nan, opens, c_ridge, note)
     return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge)
