@@ -17,7 +17,7 @@ export PATH := $(BIN):$(PATH)
 # uv resolves for every Python >= 3.11 at once (markers pick the right pins at install time).
 COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes
 
-.PHONY: setup figures test lint bench report clean lock slurm-test repair
+.PHONY: ccx setup figures test lint bench report clean lock slurm-test repair
 
 # A venv names the folder that built it (its scripts' #! lines, the editable install's path to src/): in a
 # copied or moved project it would run the original's code, or nothing once that is gone. The stamp records
@@ -59,7 +59,16 @@ lock: $(STAMP)
 
 setup: $(STAMP)
 
-figures: $(STAMP)
+# CalculiX (Debian's calculix-ccx) for the FE peer check (rule fe_peer_calculix): installed when missing and
+# this is root on a Debian-like system, otherwise a stop that says how to install it.
+ccx:
+	@command -v ccx >/dev/null 2>&1 || { [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1 && \
+	    echo "installing CalculiX (apt-get install calculix-ccx) for the FE peer check" && \
+	    { apt-get install -y -qq calculix-ccx >/dev/null 2>&1 || \
+	      { apt-get update -qq >/dev/null 2>&1 && apt-get install -y -qq calculix-ccx >/dev/null 2>&1; }; }; } || \
+	    { echo "make figures needs CalculiX: apt-get install -y calculix-ccx (Debian/Ubuntu)"; exit 1; }
+
+figures: $(STAMP) ccx
 	$(SNAKEMAKE) -j$(JOBS)
 
 # Rebuild every dataset that no longer matches its content checksum (damaged, truncated, edited by another
