@@ -1,4 +1,4 @@
-"""A paper figure's verdict from its claims: under the primary reading declared in advance, under the
+"""A paper figure's verdict from its claims: under the primary reading fixed by a rule, under the
 equations as printed, and (labelled as a search) in the best of every reading.
 
 The claims table (``results/claims/deviations.csv``) decides every claim once per reading. A figure's verdict
@@ -6,7 +6,7 @@ says how much: ``k of n`` decided claims reproduced, and a label from that fract
 (:data:`VERDICT_RULE`). Only rows of the ``evidence`` class count (``stickslip.io.claim_rows``): a row that
 cannot fail, reads the paper against its own words, or checks a fitted setup is listed apart, never counted.
 
-Which reading a verdict is given in is declared before any result (``docs/READINGS.md``, ``config.yaml``
+Which reading a verdict is given in is fixed by a rule, not by its score (``docs/READINGS.md``, ``config.yaml``
 ``claims.primary_reading`` and ``claims.as_printed_reading``; for the beam-on-disc half the first FE reading);
 the best-of-readings verdict is a search over N readings and is always labelled so. Every consumer (the page,
 the notebooks) reads the one table :func:`figure_table` writes, ``results/claims/figure_verdicts.csv``.
