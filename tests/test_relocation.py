@@ -62,8 +62,10 @@ def test_a_job_in_a_copied_project_runs_the_copys_code(tmp_path):
 
     (tmp_path / "copy").mkdir()
     work = copy_project(tmp_path / "copy")
-    init = work / "src" / "stickslip" / "__init__.py"
-    init.write_text(init.read_text().replace(f'__version__ = "{__version__}"', '__version__ = "9.9.9-copy"'))
+    version = work / "src" / "stickslip" / "_version.py"  # where the package's version lives
+    text = version.read_text()
+    assert f'__version__ = "{__version__}"' in text
+    version.write_text(text.replace(f'__version__ = "{__version__}"', '__version__ = "9.9.9-copy"'))
     run_snakemake(work, "results/onedof/fig04/eq6.nc", timeout=600)
     source = read_dataset(work / "results/onedof/fig04/eq6.nc").attrs["source"]
     assert source.startswith("stickslip 9.9.9-copy"), source

@@ -114,3 +114,9 @@ def test_the_hash_does_not_depend_on_where_the_project_lives(tmp_path):
         (tmp_path / name / "job.py").write_text(script)
         hashes.append(code_hash([tmp_path / name / "job.py"], src))
     assert hashes[0] == hashes[1]
+
+
+def test_a_comment_inside_an_import_list_may_hold_a_parenthesis():
+    source = "from .schema.base import (  # noqa: F401  (re-exported)\n    Finite,\n    Positive,\n)\n"
+    names = imported_names(source, "stickslip.pipeline.config_models", is_package=False)
+    assert {"stickslip.pipeline.schema.base.Finite", "stickslip.pipeline.schema.base.Positive"} <= names

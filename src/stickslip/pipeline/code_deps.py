@@ -34,7 +34,7 @@ PACKAGE = "stickslip"
 #: An import statement: ``import a.b, c`` or ``from .a import (b, c)`` (parenthesised lists may span lines).
 _IMPORT = re.compile(
     r"^[ \t]*(?:import[ \t]+(?P<modules>[\w., \t]+)|from[ \t]+(?P<base>\.*[\w.]*)[ \t]+import[ \t]+"
-    r"(?P<names>\([^)]*\)|[^\n#]+))",
+    r"(?P<names>\((?:[^)#]|#[^\n]*)*\)|[^\n#]+))",  # a comment inside the parentheses may hold a ")"
     re.MULTILINE,
 )
 
