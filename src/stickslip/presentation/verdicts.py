@@ -8,8 +8,9 @@ cannot fail, reads the paper against its own words, or checks a fitted setup is 
 
 Which reading a verdict is given in is fixed by a rule, not by its score (``docs/READINGS.md``,
 ``config.yaml`` ``claims.primary_reading`` and ``claims.as_printed_reading``; for the beam-on-disc half the
-first FE reading); the best-of-readings verdict is a search over N readings and is always labelled so. Every consumer (the page,
-the notebooks) reads the one table :func:`figure_table` writes, ``results/claims/figure_verdicts.csv``.
+first FE reading); the best-of-readings verdict is a search over N readings and is always labelled so.
+Every consumer (the page, the notebooks) reads the one table :func:`figure_table` writes,
+``results/claims/figure_verdicts.csv``.
 """
 
 from __future__ import annotations
