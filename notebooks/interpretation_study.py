@@ -36,7 +36,7 @@ import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
-from stickslip.io.claims import STATUSES
+from stickslip.claims.rows import STATUSES
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import (
     claims_frame,

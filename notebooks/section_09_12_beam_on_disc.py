@@ -39,7 +39,6 @@ import xarray as xr
 import yaml
 from IPython.display import Image, Markdown, display
 
-from stickslip.io.report import paper_figures
 from stickslip.presentation.notebook import (
     claims_frame,
     number_or_words,
@@ -47,6 +46,7 @@ from stickslip.presentation.notebook import (
     styled_claims,
     verdicts,
 )
+from stickslip.presentation.report import paper_figures
 
 claims = claims_frame("results/claims/deviations.csv", sections=["9", "10", "11", "12"])
 per_reading = pd.read_csv("results/fe/readings_claims.csv", dtype={"section": str})

@@ -126,8 +126,10 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
 
     import numpy as np
 
-    from stickslip.io.claim_models import annotate, read_comparison
-    from stickslip.io.claims import evaluate_all, load_claims, read_table
+    from stickslip.claims.evaluate import evaluate_all
+    from stickslip.claims.load import load_claims
+    from stickslip.claims.models import annotate, read_comparison
+    from stickslip.claims.table import read_table
     from stickslip.io.netcdf import read_dataset
 
     # as the claims table: rows the beam may not decide (the model comparison) stay undecided

@@ -14,7 +14,7 @@ import time
 import pytest
 import yaml
 
-from stickslip.io.claims import ClaimsError, check_claims, load_claims
+from stickslip.claims.load import ClaimsError, check_claims, load_claims
 from stickslip.pipeline.config import ConfigError, load_config, merge, validate_config
 
 from project_run import ROOT, copy_project, run_snakemake, small_config_args
@@ -495,7 +495,7 @@ BAD_CLAIMS.update(
     }
 )
 
-#: Rows that are well-formed alone but wrong against the config or the pinned ids (stickslip.io.claims
+#: Rows that are well-formed alone but wrong against the config or the pinned ids (stickslip.claims
 #: .check_claims, what the Snakefile calls at parse time): (rows, words).
 BAD_CLAIMS_IN_CONTEXT = {
     "claims_pin_for_an_unknown_reading": (
@@ -619,7 +619,7 @@ def test_a_config_file_that_is_not_data_is_rejected_naming_file_and_line(case, t
 
 
 def _pinned_ids():
-    from stickslip.io.claims import load_claims as load
+    from stickslip.claims.load import load_claims as load
 
     text = (ROOT / "config" / "claims" / "ids.txt").read_text()
     pinned = [ln.strip() for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]

@@ -7,9 +7,10 @@ import pytest
 import xarray as xr
 from pydantic import ValidationError
 
-from stickslip.io.claim_models import annotate, read_comparison
-from stickslip.io.claim_rows import ClaimRow
-from stickslip.io.claims import evaluate, load_claims
+from stickslip.claims.evaluate import evaluate
+from stickslip.claims.load import load_claims
+from stickslip.claims.models import annotate, read_comparison
+from stickslip.claims.rows import ClaimRow
 
 BEAM = "results/fe/lower_face_drop/s10.nc"
 CONT = "results/fe/continuum_window/s10.nc"

@@ -5,7 +5,9 @@ import pytest
 import xarray as xr
 import yaml
 
-from stickslip.io.claims import ClaimsError, evaluate, evaluate_all, load_claims, main, write_table
+from stickslip.claims.evaluate import evaluate, evaluate_all
+from stickslip.claims.load import ClaimsError, load_claims
+from stickslip.claims.table import main, write_table
 
 
 def datasets():
@@ -213,7 +215,7 @@ def test_a_withheld_value_claim_names_both_steps_and_is_not_called_unmeasurable(
 
 
 def test_reason_opens_with_one_short_conclusion_and_keeps_every_caveat():
-    from stickslip.io.claims import CONCLUSION_LENGTH
+    from stickslip.claims.evaluate import CONCLUSION_LENGTH
 
     noted = {**ROW, "note": "a caveat that must survive a reproduced status"}
     for reading in ("a", "b"):

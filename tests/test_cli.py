@@ -194,7 +194,7 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
     that holds by construction is listed and not counted."""
     import csv
 
-    from stickslip.io.claims import FIELDS
+    from stickslip.claims.table import FIELDS
 
     (tmp_path / "config").symlink_to(ROOT / "config")
     table = tmp_path / "results" / "claims" / "deviations.csv"

@@ -7,6 +7,7 @@ import xarray as xr
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from stickslip.claims.evaluate import evaluate
 from stickslip.ensemble import (
     MEMBER_DIM,
     EnsembleSpec,
@@ -17,7 +18,6 @@ from stickslip.ensemble import (
     perturbed_mapping,
     step_mapping,
 )
-from stickslip.io.claims import evaluate
 
 MAPPING = {"params": {"mass": 1.0, "x0": 0.0, "n": 3, "flag": True}, "solver": {"safety_factor": 0.9}}
 FIELDS = ("params.mass", "params.x0", "solver.safety_factor")

@@ -7,7 +7,7 @@ import nbformat
 import pandas as pd
 import pytest
 
-from stickslip.io.claims import STATUSES
+from stickslip.claims.rows import STATUSES
 from stickslip.presentation.notebook import (
     PARAMETERS_TAG,
     claims_frame,

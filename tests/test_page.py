@@ -9,7 +9,8 @@ from urllib.parse import unquote, urlsplit
 
 import pytest
 
-from stickslip.io.claims import load_claims, read_table
+from stickslip.claims.load import load_claims
+from stickslip.claims.table import read_table
 from stickslip.presentation.page import paper_spec
 from stickslip.presentation.verdicts import (
     SUCCESS,

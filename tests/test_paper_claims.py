@@ -5,7 +5,7 @@ Builds (or reuses) the repository's own results/ up to the deviations table.
 
 import pytest
 
-from stickslip.io.claims import read_table, unexpected
+from stickslip.claims.table import read_table, unexpected
 
 from project_run import build_claims_table, decisions_flipped_within_spread
 

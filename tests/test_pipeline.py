@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from stickslip.io.claims import load_claims, read_table, readings_of
+from stickslip.claims.load import load_claims, readings_of
+from stickslip.claims.table import read_table
 
 from project_run import decisions_flipped_within_spread, run_snakemake, shared_small_run, small_config_args
 

@@ -2,7 +2,7 @@
 
 import jinja2
 
-from stickslip.io.report import caption_template, caption_text, claims_for, paper_figures
+from stickslip.presentation.report import caption_template, caption_text, claims_for, paper_figures
 
 
 def test_paper_figures():

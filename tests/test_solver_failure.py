@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from stickslip.analysis.metrics import limit_cycle_metrics
+from stickslip.claims.evaluate import evaluate
 from stickslip.io import netcdf
-from stickslip.io.claims import evaluate
 from stickslip.model import PAPER_BASELINE, BeltModel
 from stickslip.solvers import ExactSwitchSolver
 

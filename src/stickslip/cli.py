@@ -332,7 +332,7 @@ def cmd_fe(args) -> int:
 
 def cmd_claims(args) -> int:
     from . import api
-    from .io.claims import read_table
+    from .claims.table import read_table
     from .io.yaml_files import load_yaml
     from .presentation.verdicts import VERDICT_RULE, is_evidence, rows_in_reading, tally
 

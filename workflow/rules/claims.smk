@@ -6,7 +6,7 @@ rule claims_table:
     input:
         claims=CLAIM_FILES,
         datasets=sorted(CLAIMED_DATASETS),
-        # which beam-on-disc rows the beam may decide (stickslip.io.claim_models)
+        # which beam-on-disc rows the beam may decide (stickslip.claims.models)
         comparison="results/fe/model_comparison.csv",
     output:
         csv=report(

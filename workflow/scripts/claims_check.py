@@ -3,7 +3,7 @@
 import contextlib
 import sys
 
-from stickslip.io.claims import main
+from stickslip.claims.table import main
 
 with open(snakemake.log[0], "w") as log, contextlib.redirect_stdout(log):  # noqa: F821 (injected by Snakemake)
     code = main(["check", snakemake.input[0]])  # noqa: F821

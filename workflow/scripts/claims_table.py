@@ -2,8 +2,10 @@
 
 from functools import lru_cache
 
-from stickslip.io.claim_models import annotate, read_comparison
-from stickslip.io.claims import evaluate_all, load_claims, write_table
+from stickslip.claims.evaluate import evaluate_all
+from stickslip.claims.load import load_claims
+from stickslip.claims.models import annotate, read_comparison
+from stickslip.claims.table import write_table
 from stickslip.io.netcdf import read_dataset
 
 open_dataset = lru_cache(maxsize=None)(read_dataset)

@@ -5,9 +5,9 @@ import csv
 from dataclasses import asdict
 from functools import lru_cache
 
-from stickslip.fe.readings import claims_per_reading
-from stickslip.io.claim_models import annotate, read_comparison
-from stickslip.io.claims import load_claims
+from stickslip.claims.load import load_claims
+from stickslip.claims.models import annotate, read_comparison
+from stickslip.claims.per_reading import claims_per_reading
 from stickslip.io.netcdf import read_dataset
 from stickslip.io.progress import log_to_file
 

@@ -5,7 +5,8 @@ import os
 
 import yaml
 
-from stickslip.io.claims import load_claims, read_table
+from stickslip.claims.load import load_claims
+from stickslip.claims.table import read_table
 from stickslip.io.progress import log_to_file
 from stickslip.presentation.verdicts import figure_table
 

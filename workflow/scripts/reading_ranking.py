@@ -3,7 +3,7 @@
 import numpy as np
 import xarray as xr
 
-from stickslip.io.claims import read_table
+from stickslip.claims.table import read_table
 from stickslip.io.netcdf import write_dataset
 from stickslip.studies.ranking import COLUMNS, rank_readings, unreproduced_claims
 

@@ -2,8 +2,8 @@
 
 import yaml
 
-from stickslip.io.claims import read_table
-from stickslip.io.report import caption_text, claims_for, paper_figures, write_captions
+from stickslip.claims.table import read_table
+from stickslip.presentation.report import caption_text, claims_for, paper_figures, write_captions
 
 rows = read_table(snakemake.input.table)  # noqa: F821
 spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821

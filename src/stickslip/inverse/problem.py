@@ -192,7 +192,7 @@ class Problem:
 
 def load_claim_rows(paths) -> dict:
     """Claim id -> row, read (and checked) by the claims table's own loader."""
-    from ..io.claims import load_claims
+    from ..claims.load import load_claims
 
     return {row["id"]: row for row in load_claims(paths)}
 

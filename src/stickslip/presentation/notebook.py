@@ -15,7 +15,7 @@ import json
 import os
 from pathlib import Path
 
-from stickslip.io.claims import STATUSES
+from stickslip.claims.rows import STATUSES
 from stickslip.presentation.plots import STATUS_COLOUR
 
 #: Columns of the claims table a notebook shows, in order (the status early, so it is on screen).
@@ -221,7 +221,7 @@ def figure_verdicts(figures, csv_path=VERDICTS_CSV):
     reading, as printed, and the best of the readings (a search). A DataFrame, one row per figure."""
     import pandas as pd
 
-    from stickslip.io.claims import read_table
+    from stickslip.claims.table import read_table
 
     rows = {r["figure"]: r for r in read_table(csv_path)}
     out = []

@@ -19,9 +19,10 @@ from pathlib import Path
 
 import yaml
 
-from ..io.claim_rows import EVIDENCE_CLASSES
-from ..io.claims import load_claims, read_table
-from ..io.report import paper_figures
+from ..claims.load import load_claims
+from ..claims.rows import EVIDENCE_CLASSES
+from ..claims.table import read_table
+from .report import paper_figures
 from .verdicts import (
     SPEEDS,
     VERDICT_RULE,

@@ -12,7 +12,7 @@ import os
 import re
 from pathlib import Path
 
-from ..io.report import paper_figures
+from .report import paper_figures
 
 _FIGURE_PNG = re.compile(r"results/figures/([^/{}]+)/([^/{}]+)\.png")
 

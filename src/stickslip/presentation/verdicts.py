@@ -3,7 +3,7 @@ equations as printed, and (labelled as a search) in the best of every reading.
 
 The claims table (``results/claims/deviations.csv``) decides every claim once per reading. A figure's verdict
 says how much: ``k of n`` decided claims reproduced, and a label from that fraction by a fixed rule
-(:data:`VERDICT_RULE`). Only rows of the ``evidence`` class count (``stickslip.io.claim_rows``): a row that
+(:data:`VERDICT_RULE`). Only rows of the ``evidence`` class count (``stickslip.claims.rows``): a row that
 cannot fail, reads the paper against its own words, or checks a fitted setup is listed apart, never counted.
 
 Which reading a verdict is given in is fixed by a rule, not by its score (``docs/READINGS.md``,
@@ -115,7 +115,7 @@ def best_reading(rows: list[dict], order: list[str]) -> str:
 
 def status_counts(statuses) -> dict[str, int]:
     """Count of each claim status (every status of the claims table, zeros included)."""
-    from ..io.claims import STATUSES
+    from ..claims.rows import STATUSES
 
     statuses = list(statuses)
     return {s: statuses.count(s) for s in STATUSES}
@@ -123,7 +123,7 @@ def status_counts(statuses) -> dict[str, int]:
 
 def speed_of(claim: dict) -> str:
     """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both."""
-    from ..io.claims import disc_speed
+    from ..claims.load import disc_speed
 
     return disc_speed(claim)
 

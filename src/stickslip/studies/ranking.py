@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..io.claims import STATUSES
+from ..claims.rows import STATUSES
 
 #: Columns of the ranking table, in order (one count column per status).
 COLUMNS = ("reading", *STATUSES, "total", "reproduced_fraction_of_comparable")
@@ -13,7 +13,7 @@ def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
     reproduced, then fewest deviations). The fraction is reproduced / (reproduced + deviates): an
     indistinguishable check is decided neither way and is not comparable to the paper's number."""
     table = []
-    for r in readings:  # only rows that could have failed count (stickslip.io.claim_rows.EVIDENCE_CLASSES)
+    for r in readings:  # only rows that could have failed count (stickslip.claims.rows.EVIDENCE_CLASSES)
         mine = [row for row in rows if row["reading"] == r and row.get("evidence", "evidence") == "evidence"]
         counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
         comparable = counts["reproduced"] + counts["deviates"]

@@ -37,7 +37,7 @@ Status = Literal["reproduced", "deviates", "indistinguishable", "not-comparable"
 #: The models a beam-on-disc row (one reading a dataset under ``results/fe/``) can be decided by, declared on
 #: every such row (``model``). The claims table decides a ``beam`` row only where the model comparison
 #: (results/fe/model_comparison.csv) finds beam and continuum agreeing for its scene and quantity
-#: (stickslip.io.claim_models).
+#: (stickslip.claims.models).
 MODELS = {
     "beam": "frame elements with rotary inertia (results/fe/<reading>/, the sweeps, studies and fits)",
     "continuum": "the 100 x 1 plane-stress strip, the paper's own kind of model (results/fe/continuum*)",

@@ -10,7 +10,7 @@ from __future__ import annotations
 import copy
 from collections.abc import Callable, Iterable
 
-from stickslip.io.claims import ClaimResult, evaluate
+from .evaluate import ClaimResult, evaluate
 
 
 def repoint(claim: dict, default: str, reading: str) -> dict:

@@ -13,7 +13,7 @@ import re
 from collections import Counter
 from pathlib import Path
 
-from .claims import STATUSES
+from ..claims.rows import STATUSES
 
 _FIG = re.compile(r"Fig(?:ure)?s?\.?\s*((?:\d+\s*(?:[-/,]|and|vs\.?|–)?\s*(?:Fig\.?\s*)?)+)", re.IGNORECASE)
 

@@ -1,6 +1,6 @@
 """Which model may decide a beam-on-disc claim: the beam only where the model comparison agrees.
 
-Every beam-on-disc row names its deciding model (``model``, stickslip.io.claim_rows.MODELS). The model
+Every beam-on-disc row names its deciding model (``model``, stickslip.claims.rows.MODELS). The model
 comparison (results/fe/model_comparison.csv, stickslip.studies.fe_comparison) runs the continuum strip, the
 paper's own kind of model, beside the beam on every scene; a row per (scene, quantity) says whether the two
 agree under its stated rule. A dataset operand of a claim read from the beam (any dataset under
@@ -20,9 +20,9 @@ import math
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
-from .claim_rows import CONTINUUM_PREFIX, FE_PREFIX
+from .rows import CONTINUUM_PREFIX, FE_PREFIX
 
-#: the claims table's keys on a claim mapping (set here, read by stickslip.io.claims.evaluate)
+#: the claims table's keys on a claim mapping (set here, read by stickslip.claims.evaluate)
 NOT_ADEQUATE = "_model_not_adequate"
 MODEL_VALUES = "_model_values"
 

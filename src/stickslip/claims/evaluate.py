@@ -1,0 +1,148 @@
+"""One claims row evaluated under one reading: the measurement, its status, and the reason a reader sees
+(one conclusion sentence, the numbers, every caveat)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from .load import readings_of
+from .measure import MEASURE, Measurement, member_failures, solver_failures, status_of
+from .models import MODEL_VALUES, NOT_ADEQUATE
+
+
+@dataclass
+class ClaimResult:
+    claim: str
+    reading: str
+    section: str
+    figure: str
+    kind: str
+    quantity: str
+    #: what the paper states: its number (value, ratio), or its words for a comparison ("a > b") or a trend
+    #: ("increases"), never a model number
+    reported: float | str
+    unit: str
+    measured: float
+    #: a comparison's model number on the other side (its right-hand side); NaN for the other kinds
+    reference: float
+    deviation: float
+    margin: float  #: distance of the decision variable to the claim's threshold
+    spread: float  #: range of the decision variable across the perturbation ensemble (NaN: none)
+    status: str
+    expected: str
+    matches_expected: bool
+    #: what the row can show (stickslip.claims.rows.EVIDENCE_CLASSES); only ``evidence`` is counted
+    evidence: str
+    #: one conclusion sentence (at most CONCLUSION_LENGTH characters), then the numbers, then the caveats
+    reason: str
+    quote: str
+
+
+def _per_reading(value, reading, default=""):
+    if isinstance(value, dict):
+        return value.get(reading, value.get("default", default))
+    return default if value is None else value
+
+
+#: Longest conclusion sentence of a reason (what a reader scans before the numbers).
+CONCLUSION_LENGTH = 120
+
+
+def _short(text: str, limit: int) -> str:
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1].rstrip(" ,;:(") + "…"
+
+
+def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) -> str:
+    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters."""
+    kind = claim["kind"]
+    if status == "not-comparable":
+        if failures:
+            why = "the solver run failed"
+        elif claim.get(NOT_ADEQUATE):
+            why = "the beam is not the paper's model here (model comparison)"
+        elif claim.get("comparable", True) is False:
+            why = "the paper contradicts this sentence elsewhere"
+        elif m.withheld:
+            why = "the value moves under step halving, so it is withheld"
+        else:
+            why = "nothing to measure in this run"
+        text = f"Not comparable: {why}."
+    elif status == "indistinguishable":
+        text = "Undecided: the margin to the threshold is within the run's own numerical noise."
+    else:
+        verb = "Reproduced" if status == "reproduced" else "Deviates"
+        if kind in ("value", "ratio"):
+            unit = "" if claim.get("unit") in (None, "1") else f" {claim['unit']}"
+            text = (
+                f"{verb}: {m.measured:.3g}{unit} against the paper's {float(m.reported):.3g}{unit} "
+                f"({100 * m.deviation:+.0f} %)."
+            )
+        elif kind == "compare":
+            says = "holds" if m.holds else "does not hold"
+            text = f"{verb}: the paper's {m.quantity} {says} ({m.measured:.3g} vs {m.reference:.3g})."
+        else:
+            text = f"{verb}: the paper says {m.reported}; the run {'agrees' if m.holds else 'does not'}."
+    if claim.get("evidence", "evidence") != "evidence":
+        text = text[:-1] + f", {claim['evidence'].replace('_', ' ')}."
+    return _short(text, CONCLUSION_LENGTH)
+
+
+def reason_text(claim: dict, reading: str, m: Measurement, status: str, detail: str, failures, caveats):
+    """The conclusion sentence, then the numbers, then every caveat: why the row is not evidence, values
+    computed but withheld, failed sweep members, and the row's note (never dropped)."""
+    parts = [conclusion(claim, m, status, failures), detail]
+    if claim.get("evidence_note"):
+        parts.append(f"Not evidence ({claim['evidence'].replace('_', ' ')}): {claim['evidence_note']}")
+    if m.withheld and not detail.startswith("withheld"):
+        parts.append("withheld: " + "; ".join(m.withheld))
+    parts += caveats
+    note = _per_reading(claim.get("note"), reading)
+    parts.append(note)
+    return " | ".join(" ".join(str(p).split()) for p in parts if p)
+
+
+def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
+    opened: list = []  # every dataset this claim reads, to refuse numbers from a failed solver run
+
+    def recording_open(path, _open=open_dataset):
+        ds = _open(path)
+        opened.append((path, ds))
+        return ds
+
+    m = MEASURE[claim["kind"]](claim, reading, recording_open)
+    failures = solver_failures(opened)
+    adequate = not claim.get(NOT_ADEQUATE)  # set by stickslip.claims.models.annotate
+    status, detail = status_of(m, claim.get("comparable", True) is not False and adequate, failures)
+    if not adequate and not failures:
+        detail = f"{claim[NOT_ADEQUATE]} | {detail}"
+    members = member_failures(opened)
+    caveats = [f"{len(members)} sweep runs failed: " + "; ".join(members)] if members else []
+    caveats += [claim[MODEL_VALUES]] if claim.get(MODEL_VALUES) else []
+    expected = _per_reading(claim["expected"], reading, default="(not pinned)")
+    return ClaimResult(
+        claim=claim["id"],
+        reading=reading,
+        section=str(claim["section"]),
+        figure=str(claim["figure"]),
+        kind=claim["kind"],
+        quantity=m.quantity,
+        reported=m.reported,
+        unit=str(claim.get("unit", "")),
+        measured=m.measured,
+        reference=m.reference,
+        deviation=m.deviation,
+        margin=m.margin,
+        spread=m.spread,
+        status=status,
+        expected=expected,
+        matches_expected=(status == expected),
+        evidence=str(claim.get("evidence", "evidence")),
+        reason=reason_text(claim, reading, m, status, detail, failures, caveats),
+        quote=" ".join(str(claim["quote"]).split()),
+    )
+
+
+def evaluate_all(claims: list[dict], readings: list[str], open_dataset: Callable) -> list[ClaimResult]:
+    return [evaluate(c, r, open_dataset) for c in claims for r in readings_of(c, readings)]

@@ -1,0 +1,147 @@
+"""Claim rows read from the claims files and checked: each row against its typed model, then what a row
+alone cannot show (pinned ids, disc-speed twins, every dataset a claim reads written by some rule)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+class ClaimsError(ValueError):
+    """A claims file is malformed; the message names the file, the claim and the key."""
+
+
+def _row_errors(exc) -> str:
+    from stickslip.io.typed_errors import (
+        typed_errors,
+    )  # the config's format of a pydantic error: ``key: message``
+
+    return typed_errors(exc).replace("\n", "; ")
+
+
+def load_claims(paths) -> list[dict]:
+    """Every row of the claims files, each checked against ``ClaimRow`` (stickslip.claims.rows); an error
+    names the file, the row's id and the key. Rows come back as plain mappings (the measuring functions
+    read them by key) with the file they came from in ``_file``."""
+    from pydantic import ValidationError
+
+    from stickslip.io.yaml_files import YamlFileError, load_yaml
+
+    from .rows import ClaimRow
+
+    claims, seen = [], {}
+    for path in sorted(Path(p) for p in paths):
+        try:
+            rows = load_yaml(path) or []
+        except YamlFileError as exc:
+            raise ClaimsError(str(exc)) from None
+        if not isinstance(rows, list):
+            raise ClaimsError(f"{path}: expected a list of claim rows")
+        for i, row in enumerate(rows):
+            where = f"{path}: row {i} ({row.get('id', '?') if isinstance(row, dict) else '?'})"
+            if not isinstance(row, dict):
+                raise ClaimsError(f"{where}: expected a mapping")
+            try:
+                ClaimRow.model_validate(row)
+            except ValidationError as exc:
+                raise ClaimsError(f"{where}: {_row_errors(exc)}") from None
+            if row["id"] in seen:
+                raise ClaimsError(f"{where}: id {row['id']!r} already used in {seen[row['id']]}")
+            seen[row["id"]] = path
+            claims.append({**row, "_file": str(path)})
+    return claims
+
+
+def check_claims(
+    claims: list[dict], readings, known_readings=None, pinned_ids=None, producible=None, variables_of=None
+) -> None:
+    """What a row alone cannot show: per-reading entries name known readings; the set of claim ids is the
+    pinned one (a deleted row or file is an error listing the ids it lost); every dataset a claim reads,
+    per claims reading (``readings``), is an output of some rule (``producible(path) -> bool``), and names a
+    variable that dataset holds where ``variables_of(path)`` knows them (None: not known)."""
+    known = set(known_readings or ())
+    for c in claims if known_readings is not None else []:
+        where = f"{c['_file']}: claim {c['id']}"
+        for key in ("expected", "note"):
+            if isinstance(c.get(key), dict):
+                for name in c[key]:
+                    if name != "default" and name not in known:
+                        raise ClaimsError(f"{where}: {key}.{name}: not a reading ({sorted(known)})")
+    _check_speed_twins(claims)
+    if pinned_ids is not None:
+        ids = {c["id"] for c in claims}
+        lost, new = sorted(set(pinned_ids) - ids), sorted(ids - set(pinned_ids))
+        if lost:
+            raise ClaimsError(f"claims pinned but not found in any claims file: {', '.join(lost)}")
+        if new:
+            raise ClaimsError(
+                f"claims not in the pinned id list (add them to it deliberately): {', '.join(new)}"
+            )
+    if producible is not None:
+        for c in claims:
+            refs = [("dataset", c)] + [
+                (f"{k}.dataset", c[k]) for k in ("lhs", "rhs") if isinstance(c.get(k), dict)
+            ]
+            for key, ref in refs:
+                if "dataset" not in ref:
+                    continue
+                for r in readings_of(c, readings) if "{reading}" in ref["dataset"] else [""]:
+                    path = ref["dataset"].format(reading=r)
+                    if not producible(path):
+                        raise ClaimsError(f"{c['_file']}: claim {c['id']}: {key}: no rule writes {path!r}")
+                    known_vars = variables_of(path) if variables_of is not None else None
+                    if known_vars is not None and ref["variable"] not in known_vars:
+                        var_key = key.replace("dataset", "variable")
+                        raise ClaimsError(
+                            f"{c['_file']}: claim {c['id']}: {var_key}: {ref['variable']!r} is not a "
+                            f"variable that {path!r} holds"
+                        )
+
+
+#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.
+DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
+
+
+def disc_speed(claim: dict) -> str:
+    """The disc speed a claim reads (one of DISC_SPEEDS), ``""`` for none or several."""
+    found = {s for p in dataset_paths(claim) for s in DISC_SPEEDS if f"_{s}" in p}
+    return found.pop() if len(found) == 1 else ""
+
+
+def _check_speed_twins(claims: list[dict]) -> None:
+    """Every claim read at one disc speed is decided at the other too (``twin``: the row that does, reading
+    the other speed, and naming this row back) or says why not (``one_speed``)."""
+    by_id = {c["id"]: c for c in claims}
+    for c in claims:
+        where = f"{c['_file']}: claim {c['id']}"
+        speed = disc_speed(c)
+        if c.get("twin") is None:
+            if speed and not c.get("one_speed"):
+                raise ClaimsError(
+                    f"{where}: reads the {speed} scenes only: add its twin at the other speed (twin: <id>) "
+                    "or say why not (one_speed: <reason>)"
+                )
+            continue
+        twin = by_id.get(c["twin"])
+        if twin is None:
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} is not a claim id")
+        if twin.get("twin") != c["id"]:
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not name {c['id']!r} back")
+        if not speed or disc_speed(twin) in ("", speed):
+            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not read the other disc speed")
+
+
+def dataset_paths(claim: dict) -> list[str]:
+    refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
+    return [r["dataset"] for r in refs if "dataset" in r]
+
+
+def readings_of(claim: dict, readings: list[str]) -> list[str]:
+    return list(readings) if any("{reading}" in p for p in dataset_paths(claim)) else [""]
+
+
+def required_datasets(claims: list[dict], readings: list[str]) -> list[str]:
+    out = set()
+    for c in claims:
+        for r in readings_of(c, readings):
+            out.update(p.format(reading=r) for p in dataset_paths(c))
+    return sorted(out)

@@ -1,0 +1,280 @@
+"""How a claim is measured: one function per claim kind reduces the row to a decision variable, its margin
+to the threshold and its spread across the perturbation ensemble; ``status_of`` decides from those."""
+
+from __future__ import annotations
+
+import math
+import operator
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.ensemble import SUFFIX
+
+#: A claim is decided only when its margin to the threshold exceeds this many ensemble spreads.
+MARGIN_FACTOR = 3.0
+#: ... and this fraction of the numbers it compares: every metric is read off a sampled trajectory over a
+#: finite window (sample spacing, where the window ends), which the perturbation ensemble does not vary, so
+#: two numbers that agree to 0.1 % (a rest position reached in both runs, 0.75 vs 0.75) are not ordered.
+RESOLUTION = 1e-3
+
+KINDS = ("value", "ratio", "compare", "trend")
+RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
+
+
+#: A fitted change smaller than this fraction of the mean |value| over the swept range counts as no trend
+#: (a directional sentence is about a visible effect, not about round-off).
+TREND_FLOOR = 0.05
+
+
+def relative_change(slope: float, x: np.ndarray, y: np.ndarray) -> float:
+    """Fitted change over the coordinate range, relative to the mean magnitude of the variable."""
+    scale = float(np.mean(np.abs(y)))
+    return slope * float(np.ptp(x)) / scale if scale > 0 else (0.0 if slope == 0 else np.sign(slope) * np.inf)
+
+
+def withheld_values(ds, variable: str) -> tuple[float, float] | None:
+    """(value at dt, value at dt/2) of a metric the step-halving check withheld (NaN in the dataset, both
+    steps' values kept beside it: stickslip.fe.step_halving); None when nothing was withheld."""
+    if variable not in ds or f"{variable}_full_step" not in ds or f"{variable}_half_step" not in ds:
+        return None
+    if np.isfinite(np.asarray(ds[variable].values, dtype=float).reshape(-1)[0]):
+        return None
+    full = float(np.asarray(ds[f"{variable}_full_step"].values, dtype=float).reshape(-1)[0])
+    half = float(np.asarray(ds[f"{variable}_half_step"].values, dtype=float).reshape(-1)[0])
+    return full, half
+
+
+def _member_values(
+    open_dataset: Callable, ref: dict, reading: str, side_only: bool = False, notes: list | None = None
+) -> np.ndarray:
+    """A dataset's scalar variable per perturbation-ensemble member (base run first), or a constant given as
+    ``{value: number}``. Without an ensemble in the dataset: the base value alone.
+
+    A value withheld for moving under step halving is NaN here, its two steps' values named in ``notes``;
+    with ``side_only`` (a claim that reads only which side of a threshold the value is on) those two values
+    are the members: the side is decided when both steps agree on it beyond the noise, as for growth."""
+    if "value" in ref and "dataset" not in ref:
+        return np.array([float(ref["value"])])
+    ds = open_dataset(ref["dataset"].format(reading=reading))
+    if ref["variable"] not in ds:
+        return np.array([np.nan])
+    withheld = withheld_values(ds, ref["variable"])
+    if withheld is not None:
+        if notes is not None:
+            full, half = withheld
+            notes.append(f"{ref['variable']} moves under step halving ({full:.3g} at dt, {half:.3g} at dt/2)")
+        if side_only:
+            return np.array(withheld)
+    base = float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
+    members = ds.get(ref["variable"] + SUFFIX)
+    if members is None:
+        return np.array([base])
+    values = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)[:, 0]
+    return np.concatenate([[base], values[1:]])
+
+
+def _pairwise(f: Callable, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """f over the members of two quantities: member by member when both come from one ensemble layout,
+    otherwise over every pair (the conservative range). Index 0 is always the base runs' value."""
+    if a.size == b.size or a.size == 1 or b.size == 1:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return f(a, b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return f(a[:, None], b[None, :]).reshape(-1)
+
+
+def spread_of(values: np.ndarray) -> float:
+    """Range of a decision variable across the ensemble: NaN without an ensemble, inf when a member has
+    nothing to measure but the base run has (the outcome itself moved)."""
+    if values.size < 2:
+        return float("nan")
+    if not np.all(np.isfinite(values)):
+        return float("inf")
+    return float(np.ptp(values))
+
+
+@dataclass
+class Measurement:
+    """What one claim kind measures: the base run's number(s) and a scalar *decision variable* whose side of
+    a threshold decides the claim, its distance to that threshold (margin) and its ensemble range
+    (spread), both in the decision variable's units."""
+
+    reported: float | str = float("nan")
+    measured: float = float("nan")
+    deviation: float = float("nan")
+    reference: float = float("nan")
+    quantity: str = ""
+    holds: bool | None = None
+    detail: str = ""
+    margin: float = float("nan")
+    spread: float = float("nan")
+    #: what was computed but not used (values withheld by the step-halving check), for the reason
+    withheld: list = field(default_factory=list)
+    #: size of the numbers the decision compares (the resolution floor is RESOLUTION x scale)
+    scale: float = 1.0
+
+
+def _tolerance_band(claim: dict, reported: float) -> float:
+    """Half-width of the accepted interval around the reported number (the larger of rel and abs)."""
+    tol = claim.get("tolerance", {})
+    band = [float(tol["abs"])] if "abs" in tol else []
+    if "rel" in tol:
+        band.append(float(tol["rel"]) * abs(reported))
+    return max(band) if band else 0.0
+
+
+def decide_value(claim: dict, measured: float) -> tuple[bool, float]:
+    """(holds, margin) of a value/ratio claim for one measured number."""
+    reported = float(claim["value"])
+    band = _tolerance_band(claim, reported)
+    distance = abs(measured - reported)
+    return bool(distance <= band), abs(distance - band)
+
+
+def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    out = Measurement(reported=float(claim["value"]), quantity=str(claim.get("variable", "")))
+    if claim["kind"] == "value":
+        members = _member_values(open_dataset, claim, reading, notes=out.withheld)
+    else:
+        lhs = _member_values(open_dataset, claim["lhs"], reading, notes=out.withheld)
+        rhs = _member_values(open_dataset, claim["rhs"], reading, notes=out.withheld)
+        members = _pairwise(lambda a, b: np.where(b != 0, a / np.where(b != 0, b, 1.0), np.nan), lhs, rhs)
+        out.quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
+    out.measured = float(members[0])
+    if math.isfinite(out.measured):
+        r = out.reported
+        out.deviation = (out.measured - r) / abs(r) if r != 0 else out.measured - r
+        out.holds, out.margin = decide_value(claim, out.measured)
+        out.scale = abs(r)
+        out.spread = spread_of(members)
+        out.detail = f"measured {out.measured:.4g} vs reported {r:.4g} ({100 * out.deviation:+.1f} %)"
+    return out
+
+
+def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    withheld: list = []
+    lhs = _member_values(open_dataset, claim["lhs"], reading, side_only=True, notes=withheld)
+    rhs = _member_values(open_dataset, claim["rhs"], reading, side_only=True, notes=withheld)
+    rel = claim["relation"]
+    statement = f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}"
+    out = Measurement(
+        reported=statement,  # the paper states a relation, not a number
+        measured=float(lhs[0]),
+        reference=float(rhs[0]),
+        quantity=statement,
+        withheld=withheld,
+    )
+    if math.isfinite(out.measured) and math.isfinite(out.reference):
+        difference = _pairwise(np.subtract, lhs, rhs)  # the decision variable: lhs - rhs against 0
+        out.holds = bool(RELATIONS[rel](out.measured, out.reference))
+        out.margin = abs(float(difference[0]))
+        out.scale = max(abs(out.measured), abs(out.reference))
+        out.spread = spread_of(difference)
+        out.detail = f"{out.measured:.4g} {rel} {out.reference:.4g} is {out.holds}"
+    return out
+
+
+def _trend_change(claim: dict, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
+    """(least-squares slope, fitted change relative to the mean) of y along x; NaN when not measurable."""
+    if claim.get("coord_scale") == "log":  # decade sweeps: the trend per decade
+        x = np.log10(np.where(x > 0, x, np.nan))
+    ok = np.isfinite(x) & np.isfinite(y)
+    if ok.sum() < 2 or np.ptp(x[ok]) <= 0:
+        return float("nan"), float("nan")
+    slope = float(np.polyfit(x[ok], y[ok], 1)[0])
+    return slope, float(relative_change(slope, x[ok], y[ok]))
+
+
+def decide_trend(claim: dict, change: float) -> tuple[bool, float, float]:
+    """(holds, margin, direction) of a trend claim for one relative change: |change| below the floor is no
+    trend, so the thresholds sit at +-floor."""
+    floor = float(claim.get("min_relative_change", TREND_FLOOR))
+    direction = 0.0 if abs(change) < floor else float(np.sign(change))
+    return bool(direction == np.sign(float(claim["sign"]))), abs(abs(change) - floor), direction
+
+
+def measure_trend(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+    ds = open_dataset(claim["dataset"].format(reading=reading))
+    says = "increases" if float(claim["sign"]) > 0 else "decreases"
+    out = Measurement(
+        reported=f"{claim['variable']} {says} with {claim['coord']}",  # the paper's words, not a number
+        quantity=f"d {claim['variable']} / d {claim['coord']}",
+    )
+    if claim["variable"] not in ds or claim["coord"] not in ds.variables:
+        return out
+    x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
+    y = np.asarray(ds[claim["variable"]].values, dtype=float).reshape(-1)
+    out.measured, change = _trend_change(claim, x, y)
+    if not math.isfinite(change):
+        return out
+    out.holds, out.margin, direction = decide_trend(claim, change)
+    members = ds.get(claim["variable"] + SUFFIX)
+    if members is not None:
+        rows = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
+        changes = [change] + [_trend_change(claim, x, row)[1] for row in rows[1:]]
+        out.spread = spread_of(np.array(changes))
+    words = {1.0: "rising", -1.0: "falling", 0.0: "no trend"}[direction]
+    out.detail = f"slope {out.measured:.4g}: {100 * change:+.1f} % of the mean over the range ({words})"
+    return out
+
+
+#: One function per claim kind.
+MEASURE = {"value": measure_value, "ratio": measure_value, "compare": measure_compare, "trend": measure_trend}
+
+
+def solver_failures(opened: list) -> list[str]:
+    """Messages of the failed solver runs among the (path, dataset) pairs a claim read."""
+    out = []
+    for path, ds in opened:
+        status = ds.variables.get("solver_status") if hasattr(ds, "variables") else None
+        if status is not None and np.any(np.asarray(status.values) != 0):
+            out.append(f"{path}: {status.attrs.get('message', 'no message')}")
+    return out
+
+
+def member_failures(opened: list) -> list[str]:
+    """The failed members of the sweeps a claim read (``solver_ok`` = 0), each with its parameter value and
+    ``failure_message``: a trend is fitted over the others, so these are caveats, not a failed claim."""
+    out = []
+    for _path, ds in opened:
+        ok = ds.variables.get("solver_ok") if hasattr(ds, "variables") else None
+        if ok is None or ok.ndim != 1 or "failure_message" not in ds.variables:
+            continue
+        dim = ok.dims[0]
+        coord = ds[dim].values if dim in ds.coords else np.arange(ok.size)
+        for value, good, message in zip(coord, np.asarray(ok.values), ds["failure_message"].values):
+            if good != 1:
+                out.append(f"{dim} = {value:g} failed ({message})")
+    return out
+
+
+def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[str, str]:
+    """(status, detail). A margin below MARGIN_FACTOR spreads (or an outcome that moves between ensemble
+    members) is ``indistinguishable``: the numbers cannot tell. A spread of exactly 0 decides even at a
+    margin of 0 (every member computes the same numbers, e.g. no separation at all: 0 > 0 is robustly
+    false)."""
+    if failures:  # a failed run measures nothing: never compare its numbers
+        return "not-comparable", "solver failed (" + "; ".join(failures) + ")"
+    if not comparable:
+        return "not-comparable", m.detail
+    if m.holds is None:
+        if m.withheld:
+            return "not-comparable", "withheld: " + "; ".join(m.withheld)
+        return "not-comparable", m.detail or "nothing computed in this reading (variable missing or NaN)"
+    if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin < MARGIN_FACTOR * m.spread):
+        why = (
+            "an ensemble member has nothing to measure"
+            if math.isinf(m.spread)
+            else f"margin {m.margin:.3g} < {MARGIN_FACTOR:g} x spread {m.spread:.3g}"
+        )
+        return "indistinguishable", f"{m.detail} - {why}: below the numerical noise"
+    if m.margin < RESOLUTION * m.scale:
+        why = f"margin {m.margin:.3g} < {RESOLUTION:g} x {m.scale:.3g}: the numbers agree to 0.1 %"
+        return "indistinguishable", f"{m.detail} - {why}, below what a sampled run resolves"
+    return ("reproduced" if m.holds else "deviates"), m.detail
+
+
+def _name(ref: dict) -> str:
+    return ref.get("variable", f"{ref.get('value')}")

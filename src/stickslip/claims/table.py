@@ -1,0 +1,84 @@
+"""The deviations table: written (CSV for machines, Markdown for people), read back, and checked against
+the pinned statuses (``python -m stickslip.claims.table check results/claims/deviations.csv``)."""
+
+from __future__ import annotations
+
+import csv
+import sys
+from dataclasses import asdict
+from pathlib import Path
+
+from .evaluate import ClaimResult
+from .rows import STATUSES
+
+FIELDS = [f for f in ClaimResult.__dataclass_fields__]
+
+
+def _cell(value) -> str:
+    """A number to 4 significant digits, words as they are."""
+    return f"{value:.4g}" if isinstance(value, float | int) else str(value)
+
+
+def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
+    """CSV (machine) and Markdown (human) deviations tables, each written atomically."""
+    csv_path = Path(csv_path)
+    csv_path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = csv_path.with_suffix(".csv.tmp")
+    with tmp.open("w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=FIELDS)
+        writer.writeheader()
+        for r in results:
+            writer.writerow(asdict(r))
+    tmp.replace(csv_path)
+    if md_path:
+        md_path = Path(md_path)
+        lines = [
+            "| claim | reading | figure | quantity | reported | measured | unit | margin | spread | status "
+            "| expected | reason |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|",
+        ]
+        for r in results:
+            flag = "" if r.matches_expected else " **(changed)**"
+            lines.append(
+                f"| {r.claim} | {r.reading or '-'} | {r.figure} | {r.quantity} | {_cell(r.reported)} | "
+                f"{r.measured:.4g} | {r.unit} | {r.margin:.3g} | {r.spread:.3g} | {r.status}{flag} | "
+                f"{r.expected} | {r.reason} |"
+            )
+        tmp = md_path.with_suffix(".md.tmp")
+        tmp.write_text("\n".join(lines) + "\n")
+        tmp.replace(md_path)
+
+
+def read_table(csv_path) -> list[dict]:
+    with Path(csv_path).open(newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def unexpected(rows: list[dict]) -> list[dict]:
+    return [r for r in rows if str(r["matches_expected"]) != "True"]
+
+
+def main(argv=None) -> int:
+    """``python -m stickslip.claims.table check TABLE.csv``: exit 1 if any status differs from its pin."""
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 2 or argv[0] != "check":
+        print("usage: python -m stickslip.claims.table check results/claims/deviations.csv", file=sys.stderr)
+        return 2
+    rows = read_table(argv[1])
+    bad = unexpected(rows)
+    for r in bad:
+        print(
+            f"CHANGED {r['claim']} [{r['reading'] or '-'}]: measured status {r['status']}, "
+            f"pinned {r['expected']} ({r['reason']})"
+        )
+    counts = {s: sum(r["status"] == s for r in rows) for s in STATUSES}
+    print(
+        f"{len(rows)} claim checks: "
+        + ", ".join(f"{v} {k}" for k, v in counts.items())
+        + f"; {len(bad)} differ from the pinned status"
+    )
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
