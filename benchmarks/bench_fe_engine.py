@@ -36,7 +36,7 @@ CHILD = r"""
 import json, sys, yaml
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
-from stickslip.studies.fe import scene_mapping
+from stickslip.studies.fe_config import scene_mapping
 cases, scale = json.loads(sys.argv[1])
 cfg = yaml.safe_load(open("config/fe.yaml"))["fe"]
 fr = FrictionTable.paper_fig17()

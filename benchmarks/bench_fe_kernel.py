@@ -20,8 +20,9 @@ from stickslip.fe.explicit import integrate
 from stickslip.fe.metrics import trajectory_metrics
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
-from stickslip.studies.fe import deep_merge, run_scene, scene_mapping
 from stickslip.studies.fe_comparison import continuum_scene_from_mapping
+from stickslip.studies.fe_config import deep_merge, scene_mapping
+from stickslip.studies.fe_scene import run_scene
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 0.05
 cfg = yaml.safe_load(open("config/fe.yaml"))["fe"]

@@ -19,7 +19,8 @@ import yaml
 
 from stickslip.fe import mechanics as mc
 from stickslip.fe.params import BeamParams, DiscParams, FrictionTable
-from stickslip.studies.fe import deep_merge, run_scene, scene_mapping
+from stickslip.studies.fe_config import deep_merge, scene_mapping
+from stickslip.studies.fe_scene import run_scene
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 ROOT = Path(__file__).resolve().parents[1]

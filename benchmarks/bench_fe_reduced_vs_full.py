@@ -6,7 +6,7 @@ Usage: python benchmarks/bench_fe_reduced_vs_full.py [duration_s]   (default 0.2
 import sys
 
 from stickslip.fe.params import FrictionTable
-from stickslip.studies.fe import run_scene
+from stickslip.studies.fe_scene import run_scene
 
 DUR = float(sys.argv[1]) if len(sys.argv) > 1 else 0.2
 BASE = {

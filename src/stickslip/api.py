@@ -285,16 +285,12 @@ def simulate_fe(
 
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
     from .fe.params import FrictionTable
+    from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError
-    from .studies.fe import (
-        INTERPRETATION,
-        PERTURBED_FIELDS,
-        effective_fe_config,
-        scene_dataset,
-        scene_mapping,
-    )
     from .studies.fe_comparison import continuum_dataset
+    from .studies.fe_config import PERTURBED_FIELDS, effective_fe_config, scene_mapping
+    from .studies.fe_scene import scene_dataset
 
     config = load_project_config(configfiles, root)
     name = fe_scene_name(config["fe"], scene, speed)

@@ -30,7 +30,7 @@ from stickslip.fe.explicit import integrate, stable_time_step
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
 from stickslip.fe.reduced import contact_boundary, craig_bampton
 from stickslip.fe.scene import SceneParams, build_scene
-from stickslip.studies.fe import scene_mapping
+from stickslip.studies.fe_config import scene_mapping
 
 ROOT = Path(__file__).resolve().parents[2]
 REFERENCES = Path(__file__).with_name("engine_references.json")
@@ -145,7 +145,7 @@ def run_mapping(c: dict):
         scene = build_scene(p, FIG17)
         system, law = scene.system, scene.law
         n_modal = 0
-        if c["reduced"]:  # as stickslip.studies.fe.run_scene does
+        if c["reduced"]:  # as stickslip.fe.run.integrate_scene does
             red, boundary = c["reduced"], contact_boundary(system)
             mask = (scene.beam.free % 3) == 0
             system, T = craig_bampton(system, boundary, red["n_bending_modes"], mask, red["n_axial_modes"])

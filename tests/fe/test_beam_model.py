@@ -9,7 +9,8 @@ from stickslip.fe.explicit import static_state
 from stickslip.fe.params import BeamParams, FrictionTable, SolverParams
 from stickslip.fe.scene import SceneParams, build_scene
 from stickslip.fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
-from stickslip.studies.fe import run_scene, scene_mapping
+from stickslip.studies.fe_config import scene_mapping
+from stickslip.studies.fe_scene import run_scene
 
 FIG17 = FrictionTable.paper_fig17()
 RHO_I = 7850e-12 * 1.0 / 12.0  # rho * I of the 1 x 1 mm steel section [t mm]

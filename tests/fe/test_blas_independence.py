@@ -8,7 +8,8 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 from stickslip.fe.params import FrictionTable
-from stickslip.studies.fe import scene_dataset, setup_fit_dataset
+from stickslip.studies.fe_scene import scene_dataset
+from stickslip.studies.fe_setup_fit import setup_fit_dataset
 
 FIG17 = FrictionTable.paper_fig17()
 BASE = {

@@ -14,7 +14,7 @@ import yaml
 from stickslip.fe.abaqus_deck import friction_table_of, read_deck, scene_deck
 from stickslip.fe.params import BeamParams, FrictionTable
 from stickslip.io.netcdf import read_dataset, write_dataset
-from stickslip.studies.fe import scene_mapping
+from stickslip.studies.fe_config import scene_mapping
 from stickslip.studies.fe_peer import MODELS, PAIRS, QUANTITIES, closed_form_values, peer_study
 from stickslip.validation.calculix import CalculixError, parse_dat, run_ccx, static_block
 

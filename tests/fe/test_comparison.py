@@ -6,7 +6,6 @@ import pytest
 import xarray as xr
 
 from stickslip.fe.params import FrictionTable
-from stickslip.studies.fe import halved_step
 from stickslip.studies.fe_comparison import (
     AGREEMENT_REL,
     QUANTITIES,
@@ -17,6 +16,7 @@ from stickslip.studies.fe_comparison import (
     noise_floors,
     relative_difference,
 )
+from stickslip.studies.fe_config import halved_step
 
 FIG17 = FrictionTable.paper_fig17()
 

@@ -9,7 +9,8 @@ matplotlib.use("Agg")
 
 from stickslip.fe.params import FrictionTable  # noqa: E402
 from stickslip.presentation.fe_plots import fe_readings_figure, fe_scene_figure  # noqa: E402
-from stickslip.studies.fe import result_dataset, scene_dataset  # noqa: E402
+from stickslip.studies.fe_packing import result_dataset  # noqa: E402
+from stickslip.studies.fe_scene import scene_dataset  # noqa: E402
 
 MAPPING = {
     "beam": {"n_elements": 6},
@@ -54,7 +55,7 @@ def test_scene_and_readings_figures_draw(ds):
 
 
 def test_result_dataset_windows_default_to_start_and_end(ds):
-    from stickslip.studies.fe import run_scene
+    from stickslip.studies.fe_scene import run_scene
 
     r, m, _ = run_scene(MAPPING, FrictionTable.paper_fig17())
     d = result_dataset(r, m)

@@ -1,10 +1,11 @@
-"""Each FE job's params are the resolved part of the fe config it reads (studies.fe.job_config): the order of
-keys in a file, and keys the job does not read, leave them unchanged (so Snakemake re-runs nothing)."""
+"""Each FE job's params are the resolved part of the fe config it reads (studies.fe_config.job_config):
+the order of keys in a file, and keys the job does not read, leave them unchanged (so Snakemake re-runs
+nothing)."""
 
 import json
 
 from stickslip.pipeline.config import load_config
-from stickslip.studies.fe import effective_fe_config, job_config, scene_mapping
+from stickslip.studies.fe_config import effective_fe_config, job_config, scene_mapping
 
 
 def _fe(repo_root):

@@ -9,9 +9,10 @@ import pytest
 from stickslip.fe import mechanics as mc
 from stickslip.fe.beam import assemble_beam, modal_analysis
 from stickslip.fe.explicit import static_state
+from stickslip.fe.modes import natural_frequencies
 from stickslip.fe.params import BeamParams, FrictionTable
 from stickslip.fe.stability import sliding_eigenvalues
-from stickslip.studies.fe import _natural_frequencies, _scene_of
+from stickslip.studies.fe_scene import scene_of
 
 FIG17 = FrictionTable.paper_fig17()
 B = BeamParams()
@@ -31,7 +32,7 @@ def scene(**over):
     }
     for k, v in over.items():
         mp[k] = {**mp.get(k, {}), **v}
-    return _scene_of(mp, FIG17)
+    return scene_of(mp, FIG17)
 
 
 def test_hand_values():
@@ -126,7 +127,7 @@ def test_tilted_contact_force_matches_the_normal_tilted_reading():
 def test_frequencies_match_the_beam_modes():
     """Propped (contact held) and cantilever bending, first axial mode: closed forms within 1 %."""
     sc = scene()
-    fe_propped = _natural_frequencies(sc)
+    fe_propped = natural_frequencies(sc)
     b = assemble_beam(B)
     fe_free = modal_analysis(b.K, b.M, 3)[0]
     assert mc.bending_frequencies(EI, RHO_A, 100.0, "propped")[0] == pytest.approx(fe_propped[0], rel=0.01)
@@ -178,13 +179,13 @@ def test_setup_fit_puts_the_static_corner_at_the_target():
     beam's static contact corner at the target within 2 %, on the side of the clamp."""
     import yaml
 
-    from stickslip.studies.fe import setup_fit_mapping
+    from stickslip.studies.fe_setup_fit import setup_fit_mapping
 
     with open("config/fe.yaml") as fh:
         cfg = yaml.safe_load(fh)["fe"]
     mp, k = setup_fit_mapping(cfg, "section11_penalty_15p2rpm", -1.5e-4)
     assert k == pytest.approx(0.0581, rel=0.01)
-    sc = _scene_of(mp, FIG17)
+    sc = scene_of(mp, FIG17)
     q, n = static_state(sc.system, sc.law)
     assert sc.system.c_x @ q == pytest.approx(-1.5e-4, rel=0.02)
     assert 0 < n < N0  # the soft support carries less than the rigid prop's 3qL/8
@@ -193,7 +194,7 @@ def test_setup_fit_puts_the_static_corner_at_the_target():
 def test_midspan_ring_matches_the_propped_deflection():
     """A drop start rings the mid-span node (off the contact) about its static deflection qL^4/(192 EI)
     = 2.29e-3 mm with that amplitude: the recorded mid-span series against the closed form (5 %)."""
-    from stickslip.studies.fe import run_scene
+    from stickslip.studies.fe_scene import run_scene
 
     mp = {
         "disc": {"speed_rev_per_min": 15.2},
@@ -221,7 +222,7 @@ def test_first_mode_growth_of_the_explicit_run_matches_the_linear_estimate(conta
     flat), the explicit run's first-mode amplitude (demodulated at the contact-held frequency) decays at the
     rate the eigen-analysis / closed form gives: the mechanics decides the Section 9-12 growth claims at
     that speed."""
-    from stickslip.studies.fe import run_scene
+    from stickslip.studies.fe_scene import run_scene
 
     mp = {
         "beam": {"n_elements": 10},

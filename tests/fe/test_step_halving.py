@@ -12,7 +12,9 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.explicit import contact_omega, stable_time_step
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import ABS_FLOOR, REL_TOL, apply_step_halving, converged
-from stickslip.studies.fe import PERTURBED_FIELDS, _scene_of, sweep_dataset, sweep_half_step
+from stickslip.studies.fe_config import PERTURBED_FIELDS
+from stickslip.studies.fe_scene import scene_of
+from stickslip.studies.fe_sweeps import sweep_dataset, sweep_half_step
 
 FIG17 = FrictionTable.paper_fig17()
 #: the metrics the Section 11 penalty-sweep claims read
@@ -75,10 +77,10 @@ def test_masks_scalars_windows_and_sweep_members():
 def test_penalty_stable_step_resolves_the_contact_spring():
     """k_p = 1e5 N/mm on the tip node's lumped mass rho A le / 2: dt <= 2 / sqrt(w_K^2 + w_c^2)."""
     mp = {"disc": {"speed_rev_per_min": 15.2}, "contact": {"method": "penalty", "penalty_stiffness": 1e5}}
-    sc = _scene_of(mp, FIG17)
+    sc = scene_of(mp, FIG17)
     m_tip = 7.85e-9 * 1.0 * 5.0 / 2
     assert contact_omega(sc.system, sc.law) == pytest.approx(math.sqrt(1e5 / m_tip), rel=1e-6)
-    bare = _scene_of({**mp, "contact": {"method": "kinematic"}}, FIG17)
+    bare = scene_of({**mp, "contact": {"method": "kinematic"}}, FIG17)
     w_k = 2.0 / stable_time_step(bare.system, bare.law)
     assert stable_time_step(sc.system, sc.law) <= 2.0 / math.hypot(w_k, math.sqrt(1e5 / m_tip)) * (1 + 1e-9)
 

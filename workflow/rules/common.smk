@@ -10,7 +10,7 @@ from stickslip.claims.load import ClaimsError, check_claims, load_claims, requir
 from stickslip.io.netcdf import run_dataset_variables
 from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
-from stickslip.studies.fe import effective_fe_config, job_config as fe_job_config
+from stickslip.studies.fe_config import effective_fe_config, job_config as fe_job_config
 from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.

@@ -4,9 +4,9 @@ import csv
 from pathlib import Path
 
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.quantities import INTERPRETATION
 from stickslip.io.netcdf import read_dataset, write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import INTERPRETATION, comparison_mapping, halved_step
 from stickslip.studies.fe_comparison import (
     beam_metrics,
     comparison_dataset,
@@ -15,6 +15,7 @@ from stickslip.studies.fe_comparison import (
     noise_floors,
     window_rows,
 )
+from stickslip.studies.fe_config import comparison_mapping, halved_step
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comparison section)

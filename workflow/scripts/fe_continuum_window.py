@@ -1,10 +1,11 @@
 """The continuum strip over a claim's window -> results/fe/continuum_window/<scene>.nc (dt and dt/2)."""
 
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.quantities import INTERPRETATION
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import INTERPRETATION, window_mapping
 from stickslip.studies.fe_comparison import continuum_window_dataset
+from stickslip.studies.fe_config import window_mapping
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (the scene resolved, and the comparison section)

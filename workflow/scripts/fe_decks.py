@@ -6,7 +6,7 @@ from stickslip.fe.abaqus_deck import scene_deck
 from stickslip.fe.params import FrictionTable
 from stickslip.io.progress import log_to_file
 from stickslip.io.text_files import write_text_atomic
-from stickslip.studies.fe import scene_mapping
+from stickslip.studies.fe_config import scene_mapping
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comparison section)

@@ -6,19 +6,16 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.quantities import INTERPRETATION
 from stickslip.fe.step_halving import HALF_STEP, apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import (
-    INTERPRETATION,
-    PERTURBED_FIELDS,
-    cross_scene_dataset,
-    scene_dataset,
-    scene_mapping,
-)
+from stickslip.studies.fe_config import PERTURBED_FIELDS, scene_mapping
+from stickslip.studies.fe_cross_scene import cross_scene_dataset
+from stickslip.studies.fe_scene import scene_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config  # noqa: F821  (this reading's scenes, resolved: studies.fe.job_config)
+cfg = snakemake.params.config  # noqa: F821  (this reading's scenes, resolved: studies.fe_config.job_config)
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's

@@ -8,11 +8,12 @@ from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import HALF_STEP, apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import PERTURBED_FIELDS, setup_fit_dataset, setup_fit_mapping
+from stickslip.studies.fe_config import PERTURBED_FIELDS
+from stickslip.studies.fe_setup_fit import setup_fit_dataset, setup_fit_mapping
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 par = snakemake.params  # noqa: F821
-cfg = par.config  # the base scene, resolved (studies.fe.job_config)
+cfg = par.config  # the base scene, resolved (studies.fe_config.job_config)
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
 # dataset is bit-identical under any BLAS thread count (tests/fe/test_blas_independence.py), so the BLAS

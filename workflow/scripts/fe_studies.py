@@ -4,22 +4,18 @@ from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
+from stickslip.fe.quantities import INTERPRETATION
 from stickslip.fe.step_halving import apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe import (
-    INTERPRETATION,
-    PERTURBED_FIELDS,
-    convergence_dataset,
-    scene_mapping,
-    stability_dataset,
-    sweep_dataset,
-    sweep_half_step,
-)
 from stickslip.studies.fe_comparison import increments_dataset
+from stickslip.studies.fe_config import PERTURBED_FIELDS, scene_mapping
+from stickslip.studies.fe_convergence import convergence_dataset
+from stickslip.studies.fe_stability import stability_dataset
+from stickslip.studies.fe_sweeps import sweep_dataset, sweep_half_step
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config  # noqa: F821  (the studies' sections and base scenes: studies.fe.job_config)
+cfg = snakemake.params.config  # noqa: F821  (the studies' sections and base scenes: studies.fe_config.job_config)
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (claimed: sweeps, stability, increments)

@@ -189,9 +189,9 @@ def scene_deck(
     *,
     constant_mu: float | None = None,
 ) -> str:
-    """ABAQUS/Explicit deck of one Section 9-12 scene (merged scene mapping, ``studies.fe.scene_mapping``)
-    on the continuum's nx x ny mesh. ``constant_mu``: write one friction coefficient instead of the table
-    (for codes without mu(slip rate))."""
+    """ABAQUS/Explicit deck of one Section 9-12 scene (merged scene mapping,
+    ``studies.fe_config.scene_mapping``) on the continuum's nx x ny mesh. ``constant_mu``: write one
+    friction coefficient instead of the table (for codes without mu(slip rate))."""
     beam = BeamParams.from_mapping(mapping["beam"])
     disc = DiscParams.from_mapping(mapping["disc"])
     contact = ContactParams.from_mapping(mapping.get("contact", {}))

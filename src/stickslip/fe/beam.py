@@ -175,3 +175,13 @@ def classify_modes(phi: np.ndarray, free: np.ndarray) -> np.ndarray:
     """True where a mode is predominantly axial (u DOFs carry most of its mass-free amplitude)."""
     is_u = (free % 3) == 0
     return (phi[is_u] ** 2).sum(axis=0) > (phi[~is_u & ((free % 3) == 1)] ** 2).sum(axis=0)
+
+
+def cantilever_errors(p: BeamParams) -> tuple[np.ndarray, float]:
+    """Relative errors of the free beam's first three bending frequencies and its first axial frequency
+    against the closed-form cantilever (the mesh part of the convergence study)."""
+    b = assemble_beam(p)
+    fr, phi = modal_analysis(b.K, b.M)
+    ax = classify_modes(phi, b.free)
+    bending = np.abs(fr[~ax][:3] / cantilever_bending_frequencies(p, 3) - 1)
+    return bending, abs(fr[ax][0] / cantilever_axial_frequencies(p, 1)[0] - 1)

@@ -19,7 +19,7 @@ from .explicit import ContactLaw, System, integrate, static_state
 from .metrics import dominant_frequency, window_envelope
 
 
-def _null(a: np.ndarray) -> np.ndarray:
+def null_space(a: np.ndarray) -> np.ndarray:
     """Orthonormal basis of the complement of vector a."""
     u, _, _ = np.linalg.svd(a.reshape(-1, 1), full_matrices=True)
     return u[:, 1:]
@@ -76,8 +76,8 @@ def sliding_eigenvalues(
     if law.method == "penalty":
         K = K + law.penalty_stiffness * np.outer(cn + mu * ct, cn)
     elif law.method == "kinematic" and np.any(cn):
-        Z = _null(cn)  # admissible motions (c_n^T q = 0)
-        Y = _null(cn + mu * ct)  # test functions annihilating the multiplier's force direction
+        Z = null_space(cn)  # admissible motions (c_n^T q = 0)
+        Y = null_space(cn + mu * ct)  # test functions annihilating the multiplier's force direction
         M, C, K = Y.T @ M @ Z, Y.T @ C @ Z, Y.T @ K @ Z
     n = K.shape[0]
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])

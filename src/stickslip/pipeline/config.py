@@ -100,7 +100,7 @@ def _validate(config: dict, producible: list[str]) -> None:
         _check_onedof(config)
         check_methods_config(config["methods_study"])
         _check_dense_maps(config)
-        from ..studies.fe import effective_fe_config
+        from ..studies.fe_config import effective_fe_config
 
         check_fe_config(
             effective_fe_config(config),
@@ -233,7 +233,7 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
     before any job starts with the config key named (references between entries: config_models)."""
     from ..fe.scene import SceneParams
-    from ..studies.fe import scene_mapping
+    from ..studies.fe_config import scene_mapping
 
     for name in fe_cfg["scenes"]:
         for reading in fe_cfg.get("readings") or [None]:

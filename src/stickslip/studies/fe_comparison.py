@@ -15,10 +15,13 @@ import xarray as xr
 
 from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from ..fe.metrics import trajectory_metrics
+from ..fe.modes import mode_growth
 from ..fe.params import FrictionTable
+from ..fe.quantities import INTERPRETATION
 from ..fe.scene import SceneParams
 from ..fe.step_halving import HALF_STEP, REL_TOL, apply_step_halving
-from .fe import INTERPRETATION, mode_growth, result_dataset, run_scene
+from .fe_packing import result_dataset
+from .fe_scene import run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (

@@ -1,0 +1,39 @@
+"""Ratios of one scalar metric between two beam-on-disc scenes (``fe.cross_scene``), member by member of
+their perturbation ensembles."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+
+import numpy as np
+import xarray as xr
+
+from ..fe.quantities import INTERPRETATION
+
+
+def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, list]) -> xr.Dataset:
+    """Ratios lhs/rhs of a metric between two scenes: pairs = {name: [lhs_scene, rhs_scene, variable]}."""
+    ds = xr.Dataset()
+    for name, (a, b, var) in pairs.items():
+        va, vb = float(datasets[a][var]), float(datasets[b][var])
+        ds[name] = ((), va / vb if vb != 0 else np.nan, {"units": "1", "long_name": f"{var} of {a} over {b}"})
+        ea, eb = datasets[a].get(f"{var}_ensemble"), datasets[b].get(f"{var}_ensemble")
+        if ea is not None and eb is not None and ea.shape == eb.shape:  # member by member
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ratio = np.where(eb.values != 0, ea.values / eb.values, np.nan)
+            ds[f"{name}_ensemble"] = (
+                ea.dims,
+                ratio,
+                {"units": "1", "long_name": f"{var} of {a} over {b}, per perturbation-ensemble member"},
+            )
+    ds.attrs.update(
+        {
+            "Conventions": "CF-1.10",
+            "title": "Beam-on-disc cross-scene ratios",
+            "model_interpretation": INTERPRETATION,
+            "method": "ratios of scalar metrics",
+            "pairs": json.dumps(dict(pairs)),
+        }
+    )
+    return ds
