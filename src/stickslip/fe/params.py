@@ -8,6 +8,8 @@ Every validation error is a ``ValueError`` whose message starts with the offendi
 from __future__ import annotations
 
 import math
+import numbers
+import operator
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from typing import Any
@@ -21,9 +23,67 @@ OUTPUT_NODES = ("free_end_lower", "free_end_axis", "free_end_upper")
 DISC_DIRECTIONS = ("clockwise", "counterclockwise")
 
 
-def _positive(name: str, value: float) -> None:
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-        raise ValueError(f"{name}: must be a positive finite number, got {value!r}")
+@dataclass(frozen=True)
+class Bound:
+    """What one parameter field accepts, declared once: the dataclass checks it at construction, and the
+    config's typed model (stickslip.pipeline.schema.fe) is generated from the same declaration, so a key
+    and its bound are written in one place. ``kind``: "number" (finite), "integer", "choice" or "flag"."""
+
+    kind: str = "number"
+    gt: float | None = None
+    ge: float | None = None
+    lt: float | None = None
+    le: float | None = None
+    choices: tuple = ()
+    optional: bool = False  #: None is accepted (one of two alternative keys)
+    description: str | None = None  #: units or meaning, shown in the config's JSON schema
+
+    def limits(self) -> dict:
+        return {k: getattr(self, k) for k in ("gt", "ge", "lt", "le") if getattr(self, k) is not None}
+
+    def accepts(self, value) -> bool:
+        if value is None:
+            return self.optional
+        if self.kind == "choice":
+            return value in self.choices
+        if self.kind == "flag":
+            return isinstance(value, bool)
+        kinds = (numbers.Integral,) if self.kind == "integer" else (numbers.Real,)
+        if isinstance(value, bool) or not isinstance(value, kinds) or not math.isfinite(value):
+            return False
+        tests = {"gt": operator.gt, "ge": operator.ge, "lt": operator.lt, "le": operator.le}
+        return all(tests[k](value, limit) for k, limit in self.limits().items())
+
+    def wanted(self) -> str:
+        if self.kind == "choice":
+            return f"one of {self.choices}"
+        if self.kind == "flag":
+            return "true or false"
+        signs = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
+        what = "an integer" if self.kind == "integer" else "a finite number"
+        return " ".join([what, " and ".join(f"{signs[k]} {v:g}" for k, v in self.limits().items())]).strip()
+
+
+def declared(default, bound: Bound):
+    """A dataclass field with its accepted values (``Bound``)."""
+    return field(default=default, metadata={"bound": bound})
+
+
+def bounds(cls) -> dict[str, Bound]:
+    """Field name -> its declared Bound, in field order."""
+    return {f.name: f.metadata["bound"] for f in fields(cls) if "bound" in f.metadata}
+
+
+def check_bounds(obj) -> None:
+    """Every declared field of a parameter dataclass within its bound; the error starts with the key."""
+    for name, bound in bounds(type(obj)).items():
+        value = getattr(obj, name)
+        if not bound.accepts(value):
+            raise ValueError(f"{name}: must be {bound.wanted()}, got {value!r}")
+
+
+POSITIVE = Bound(gt=0)
+NON_NEGATIVE = Bound(ge=0)
 
 
 def _from_mapping(cls, data: Mapping[str, Any], prefix: str):
@@ -38,32 +98,25 @@ def _from_mapping(cls, data: Mapping[str, Any], prefix: str):
 class BeamParams:
     """Clamped-free elastic beam (pad back-plate), 2-D frame elements, 3 DOF/node (u, v, theta)."""
 
-    length: float = 100.0  #: beam length L [mm]
-    thickness: float = 1.0  #: beam thickness h (in-plane, bending direction) [mm]
-    width: float = 1.0  #: out-of-plane width b [mm] (assumption: the paper gives none)
-    youngs_modulus_gpa: float = 210.0  #: E [GPa] (steel back plate, assumption)
-    density_kg_m3: float = 7850.0  #: rho [kg m-3] (steel, assumption)
-    poisson_ratio: float = 0.3  #: nu [-] (recorded only; Euler-Bernoulli elements do not use it)
-    gravity_m_s2: float = 9.81  #: g [m s-2], the only normal load
-    n_elements: int = 20  #: number of beam elements [-]
-    mass: str = "lumped"  #: "lumped" (HRZ diagonal, as explicit codes) or "consistent"
+    length: float = declared(100.0, Bound(gt=0, description="mm"))  #: beam length L [mm]
+    #: beam thickness h (in-plane, bending direction) [mm]
+    thickness: float = declared(1.0, Bound(gt=0, description="mm"))
+    #: out-of-plane width b [mm] (assumption: the paper gives none)
+    width: float = declared(1.0, Bound(gt=0, description="mm"))
+    youngs_modulus_gpa: float = declared(210.0, POSITIVE)  #: E [GPa] (steel back plate, assumption)
+    density_kg_m3: float = declared(7850.0, POSITIVE)  #: rho [kg m-3] (steel, assumption)
+    #: nu [-] (recorded only; Euler-Bernoulli elements do not use it)
+    poisson_ratio: float = declared(0.3, Bound(ge=0, lt=0.5))
+    gravity_m_s2: float = declared(9.81, NON_NEGATIVE)  #: g [m s-2], the only normal load
+    n_elements: int = declared(20, Bound("integer", ge=1))  #: number of beam elements [-]
+    #: "lumped" (HRZ diagonal, as explicit codes) or "consistent"
+    mass: str = declared("lumped", Bound("choice", choices=MASS_KINDS))
     #: rotary inertia rho*I of the cross-sections (Rayleigh beam). Needed for contact at the lower face:
     #: without it the tangential inertia of the face point vanishes under mesh refinement.
-    rotary_inertia: bool = True
+    rotary_inertia: bool = declared(True, Bound("flag"))
 
     def __post_init__(self) -> None:
-        for k in ("length", "thickness", "width", "youngs_modulus_gpa", "density_kg_m3"):
-            _positive(k, getattr(self, k))
-        if not (0.0 <= self.poisson_ratio < 0.5):
-            raise ValueError(f"poisson_ratio: must lie in [0, 0.5), got {self.poisson_ratio!r}")
-        if not (self.gravity_m_s2 >= 0 and math.isfinite(self.gravity_m_s2)):
-            raise ValueError(f"gravity_m_s2: must be >= 0, got {self.gravity_m_s2!r}")
-        if not (isinstance(self.n_elements, int) and self.n_elements >= 1):
-            raise ValueError(f"n_elements: must be an integer >= 1, got {self.n_elements!r}")
-        if self.mass not in MASS_KINDS:
-            raise ValueError(f"mass: must be one of {MASS_KINDS}, got {self.mass!r}")
-        if not isinstance(self.rotary_inertia, bool):
-            raise ValueError(f"rotary_inertia: must be true or false, got {self.rotary_inertia!r}")
+        check_bounds(self)
 
     # derived quantities in the internal unit system
     @property
@@ -103,23 +156,20 @@ class DiscParams:
     15.2 rev/min and claims it equals the 0.5 mm/s belt speed, which it does not for a 25 mm disc.
     """
 
-    diameter: float = 25.0  #: disc diameter [mm]
-    speed_rev_per_min: float | None = None  #: angular speed [rev/min]
-    surface_speed_mm_s: float | None = None  #: surface (belt-equivalent) speed [mm s-1]
+    diameter: float = declared(25.0, Bound(gt=0, description="mm"))  #: disc diameter [mm]
+    #: angular speed [rev/min]
+    speed_rev_per_min: float | None = declared(None, Bound(ge=0, optional=True))
+    #: surface (belt-equivalent) speed [mm s-1]
+    surface_speed_mm_s: float | None = declared(None, Bound(ge=0, optional=True))
     #: turning direction seen with the clamp on the left: clockwise drives the disc top away from the
     #: clamp (the paper's "clockwise"; it does not say from which side it is seen)
-    direction: str = "clockwise"
+    direction: str = declared("clockwise", Bound("choice", choices=DISC_DIRECTIONS))
 
     def __post_init__(self) -> None:
-        _positive("diameter", self.diameter)
-        if self.direction not in DISC_DIRECTIONS:
-            raise ValueError(f"direction: must be one of {DISC_DIRECTIONS}, got {self.direction!r}")
+        check_bounds(self)
         given = [k for k in ("speed_rev_per_min", "surface_speed_mm_s") if getattr(self, k) is not None]
         if len(given) != 1:
             raise ValueError("speed_rev_per_min: give exactly one of speed_rev_per_min / surface_speed_mm_s")
-        v = getattr(self, given[0])
-        if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
-            raise ValueError(f"{given[0]}: must be a finite number >= 0, got {v!r}")
 
     @property
     def surface_speed(self) -> float:
@@ -144,26 +194,20 @@ class ContactParams:
     the clamp *and* upwards (off the disc); a < 0 pushes it into the disc (sprag side).
     """
 
-    method: str = "kinematic"  #: "kinematic" (exact non-penetration), "penalty", "fixed_normal" (Sec. 10)
-    angle_deg: float = 0.0  #: contact angle a [deg]
-    penalty_stiffness: float = 1.0e3  #: penalty normal stiffness k_p [N mm-1] (method "penalty" only)
+    #: "kinematic" (exact non-penetration), "penalty", "fixed_normal" (Sec. 10)
+    method: str = declared("kinematic", Bound("choice", choices=CONTACT_METHODS))
+    angle_deg: float = declared(0.0, Bound(ge=-80, le=80))  #: contact angle a [deg]
+    #: penalty normal stiffness k_p [N mm-1] (method "penalty" only)
+    penalty_stiffness: float = declared(1.0e3, Bound(gt=0, description="N mm-1"))
     #: contact at the lower face (h/2 below the axis, the paper's slave surface: friction then also
     #: bends the beam through the moment h/2*F_t) instead of on the beam axis (a control). Converges with
     #: the element count once the beam has rotary inertia (BeamParams.rotary_inertia).
-    surface_offset: bool = True
+    surface_offset: bool = declared(True, Bound("flag"))
     #: the paper's "node 1": where on the free end the displacement is measured
-    output_node: str = "free_end_lower"
+    output_node: str = declared("free_end_lower", Bound("choice", choices=OUTPUT_NODES))
 
     def __post_init__(self) -> None:
-        if self.method not in CONTACT_METHODS:
-            raise ValueError(f"method: must be one of {CONTACT_METHODS}, got {self.method!r}")
-        if not (isinstance(self.angle_deg, (int, float)) and -80.0 <= self.angle_deg <= 80.0):
-            raise ValueError(f"angle_deg: must lie in [-80, 80] degrees, got {self.angle_deg!r}")
-        _positive("penalty_stiffness", self.penalty_stiffness)
-        if not isinstance(self.surface_offset, bool):
-            raise ValueError(f"surface_offset: must be true or false, got {self.surface_offset!r}")
-        if self.output_node not in OUTPUT_NODES:
-            raise ValueError(f"output_node: must be one of {OUTPUT_NODES}, got {self.output_node!r}")
+        check_bounds(self)
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> ContactParams:
@@ -174,24 +218,20 @@ class ContactParams:
 class SolverParams:
     """Explicit central-difference settings."""
 
-    t_end: float = 1.0  #: simulated time [s] (the 1-DOF runs' name)
-    safety_factor: float = 0.9  #: dt = safety_factor * 2 / omega_max [-]
-    output_dt: float = 1.0e-5  #: sampling interval of the stored trajectory [s]
-    initial_state: str = "static"  #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
-    mass_damping: float = 0.0  #: mass-proportional Rayleigh damping alpha [s-1]
-    stiffness_damping: float = 0.0  #: stiffness-proportional Rayleigh damping beta [s]
+    #: simulated time [s] (the 1-DOF runs' name)
+    t_end: float = declared(1.0, Bound(gt=0, description="simulated time [s]"))
+    safety_factor: float = declared(0.9, Bound(gt=0, le=1))  #: dt = safety_factor * 2 / omega_max [-]
+    #: sampling interval of the stored trajectory [s]
+    output_dt: float = declared(1.0e-5, Bound(gt=0, description="output interval [s]"))
+    #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
+    initial_state: str = declared("static", Bound("choice", choices=INITIAL_STATES))
+    #: mass-proportional Rayleigh damping alpha [s-1]
+    mass_damping: float = declared(0.0, Bound(ge=0, description="s-1"))
+    #: stiffness-proportional Rayleigh damping beta [s]; below 1e-3 s, far above any scene's (~1e-8 s)
+    stiffness_damping: float = declared(0.0, Bound(ge=0, lt=1e-3, description="s"))
 
     def __post_init__(self) -> None:
-        _positive("t_end", self.t_end)
-        _positive("output_dt", self.output_dt)
-        if not (0 < self.safety_factor <= 1.0):
-            raise ValueError(f"safety_factor: must lie in (0, 1], got {self.safety_factor!r}")
-        if self.initial_state not in INITIAL_STATES:
-            raise ValueError(f"initial_state: must be one of {INITIAL_STATES}, got {self.initial_state!r}")
-        if not (self.mass_damping >= 0):
-            raise ValueError(f"mass_damping: must be >= 0, got {self.mass_damping!r}")
-        if not (isinstance(self.stiffness_damping, (int, float)) and 0 <= self.stiffness_damping < 1e-3):
-            raise ValueError(f"stiffness_damping: must lie in [0, 1e-3) s, got {self.stiffness_damping!r}")
+        check_bounds(self)
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> SolverParams:

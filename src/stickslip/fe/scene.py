@@ -21,10 +21,9 @@ class SceneParams:
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> SceneParams:
-        allowed = {"beam", "disc", "contact", "solver", "description", "figures", "reduced"}
-        unknown = set(data) - allowed
-        if unknown:
-            raise ValueError(f"{sorted(unknown)[0]}: unknown scene key")
+        """The parameters of a scene mapping: its beam, disc, contact and solver sections. Its other keys
+        (output windows, description) are the studies'; which keys a scene may have is the config's typed
+        model's to check (stickslip.pipeline.schema.fe.FeScene), not listed again here."""
         return cls(
             BeamParams.from_mapping(data.get("beam", {})),
             DiscParams.from_mapping(data.get("disc", {"speed_rev_per_min": 15.2})),

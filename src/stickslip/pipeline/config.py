@@ -246,9 +246,7 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
             )
         mapping = scene_mapping(fe_cfg, name)
         try:
-            SceneParams.from_mapping(
-                {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-            )
+            SceneParams.from_mapping(mapping)
         except (ValueError, TypeError, KeyError) as exc:
             raise ConfigError(f"fe.scenes.{name}: {exc}") from None
     # the studies run their base scene over their own window: it must hold the scene's output sampling

@@ -41,19 +41,13 @@ AGREEMENT_RULE = (
 )
 
 
-def _params(mapping: Mapping) -> SceneParams:
-    return SceneParams.from_mapping(
-        {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-    )
-
-
 def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: int, ny: int):
     """The continuum scene of a beam scene mapping (same geometry reading, damping and contact law)."""
     from dataclasses import replace
 
     from ..fe.continuum import build_continuum
 
-    p = _params(mapping)
+    p = SceneParams.from_mapping(mapping)
     contact = p.contact
     upper = contact.method == "fixed_normal"
     if upper:
@@ -81,7 +75,7 @@ def continuum_dataset(
     but the linear estimate)."""
     from ..fe.continuum import integrate_continuum, natural_frequencies
 
-    p = _params(mapping)
+    p = SceneParams.from_mapping(mapping)
     scene = continuum_scene_from_mapping(mapping, friction, nx, ny)
     r = integrate_continuum(
         scene,
@@ -395,7 +389,7 @@ def increments_dataset(
     for each mesh x safety factor x stiffness damping, from its global stable step."""
     from ..fe.continuum import build_continuum, increments, stable_time_step
 
-    p = _params(beam_mapping)
+    p = SceneParams.from_mapping(beam_mapping)
     fr = FrictionTable.paper_fig17()
     n = np.zeros((len(meshes), len(safety_factors), len(betas)))
     dtc = np.zeros((len(meshes), len(betas)))

@@ -17,10 +17,7 @@ from .fe_packing import result_dataset, shape_variables
 
 def scene_of(mapping: Mapping, friction: FrictionTable) -> BuiltScene:
     """The built scene of a resolved scene mapping (its beam, disc, contact and solver sections)."""
-    p = SceneParams.from_mapping(
-        {k: v for k, v in mapping.items() if k in ("beam", "disc", "contact", "solver")}
-    )
-    return build_scene(p, friction)
+    return build_scene(SceneParams.from_mapping(mapping), friction)
 
 
 def run_scene(
@@ -58,12 +55,7 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "", pro
             "Conventions": "CF-1.10",
             "title": f"Beam on rotating rigid disc, scene {name}".strip(),
             "scene": name,
-            "parameters": json.dumps(
-                {
-                    k: dataclasses.asdict(getattr(scene.params, k))
-                    for k in ("beam", "disc", "contact", "solver")
-                }
-            ),
+            "parameters": json.dumps(dataclasses.asdict(scene.params)),
             "model_interpretation": INTERPRETATION,
             "method": (
                 f"explicit central difference (compiled kernel), {scene.law.method} contact, dt={r.dt:.6g} s "

@@ -4,49 +4,40 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, create_model, field_validator, model_validator
 
+from ...fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
 from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
 
 
-class Beam(Section):
-    length: Positive | None = Field(None, description="mm")
-    thickness: Positive | None = Field(None, description="mm")
-    width: Positive | None = Field(None, description="mm")
-    youngs_modulus_gpa: Positive | None = None
-    density_kg_m3: Positive | None = None
-    poisson_ratio: Annotated[float, Field(ge=0, lt=0.5, allow_inf_nan=False)] | None = None
-    gravity_m_s2: NonNegative | None = None
-    n_elements: Annotated[int, Field(ge=1)] | None = None
-    mass: Literal["lumped", "consistent"] | None = None
-    rotary_inertia: bool | None = None
+def _annotation(bound: Bound):
+    """The pydantic type of a parameter field declared by ``bound`` (always optional: a scene gives only
+    what it changes)."""
+    if bound.kind == "choice":
+        return Literal[bound.choices] | None
+    if bound.kind == "flag":
+        return bool | None
+    if bound.kind == "integer":
+        return Annotated[int, Field(**bound.limits())] | None
+    return Annotated[float, Field(**bound.limits(), allow_inf_nan=False)] | None
 
 
-class Disc(Section):
-    diameter: Positive | None = Field(None, description="mm")
-    speed_rev_per_min: NonNegative | None = None
-    surface_speed_mm_s: NonNegative | None = None
-    direction: Literal["clockwise", "counterclockwise"] | None = None
+def parameter_section(name: str, params) -> type[Section]:
+    """The config section of a parameter dataclass of stickslip.fe.params, generated from its declared
+    bounds: a key and its bound are written once, there (the dataclass checks them at construction)."""
+    fields = {
+        key: (_annotation(bound), Field(None, description=bound.description))
+        for key, bound in bounds(params).items()
+    }
+    return create_model(name, __base__=Section, __module__=__name__, **fields)
 
 
-Angle = Annotated[float, Field(ge=-80, le=80, allow_inf_nan=False)]
-
-
-class Contact(Section):
-    method: Literal["kinematic", "penalty", "fixed_normal"] | None = None
-    angle_deg: Angle | None = None
-    penalty_stiffness: Positive | None = Field(None, description="N mm-1")
-    surface_offset: bool | None = None
-    output_node: Literal["free_end_lower", "free_end_axis", "free_end_upper"] | None = None
-
-
-class FeSolver(Section):
-    t_end: Positive | None = Field(None, description="simulated time [s]")
-    safety_factor: Fraction | None = None
-    output_dt: Positive | None = Field(None, description="output interval [s]")
-    initial_state: Literal["static", "drop", "undeformed"] | None = None
-    mass_damping: NonNegative | None = Field(None, description="s-1")
-    stiffness_damping: NonNegative | None = Field(None, description="s")
+Beam = parameter_section("Beam", BeamParams)
+Disc = parameter_section("Disc", DiscParams)
+Contact = parameter_section("Contact", ContactParams)
+FeSolver = parameter_section("FeSolver", SolverParams)
+#: a contact angle of the stability study: the bound of the scenes' contact.angle_deg
+Angle = _annotation(bounds(ContactParams)["angle_deg"]).__args__[0]
 
 
 class FeOutput(Section):
