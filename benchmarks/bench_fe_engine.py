@@ -62,7 +62,7 @@ for label, kind, name, window, extra in cases:
         r = integrate(system, sc.law, window, **kw)
     else:
         from stickslip.fe.continuum import integrate_continuum
-        from stickslip.studies.fe_comparison import continuum_scene_from_mapping
+        from stickslip.studies.fe_continuum import continuum_scene_from_mapping
         cs = continuum_scene_from_mapping(m, fr, 100, 1)
         integrate_continuum(cs, 1e-5)
         r = integrate_continuum(cs, window, output_interval=2.5e-6, initial_state="drop")

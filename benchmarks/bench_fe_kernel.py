@@ -20,8 +20,8 @@ from stickslip.fe.explicit import integrate
 from stickslip.fe.metrics import trajectory_metrics
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
-from stickslip.studies.fe_comparison import continuum_scene_from_mapping
 from stickslip.studies.fe_config import deep_merge, scene_mapping
+from stickslip.studies.fe_continuum import continuum_scene_from_mapping
 from stickslip.studies.fe_scene import run_scene
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 0.05

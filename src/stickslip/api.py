@@ -288,8 +288,8 @@ def simulate_fe(
     from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError
-    from .studies.fe_comparison import continuum_dataset
     from .studies.fe_config import PERTURBED_FIELDS, effective_fe_config, scene_mapping
+    from .studies.fe_continuum import continuum_dataset
     from .studies.fe_scene import scene_dataset
 
     config = load_project_config(configfiles, root)

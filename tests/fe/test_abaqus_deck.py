@@ -17,8 +17,8 @@ from stickslip.fe.abaqus_deck import (
     scene_deck,
 )
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
-from stickslip.studies.fe_comparison import continuum_scene_from_mapping
 from stickslip.studies.fe_config import scene_mapping
+from stickslip.studies.fe_continuum import continuum_scene_from_mapping
 
 from project_run import ROOT
 

@@ -12,11 +12,11 @@ from stickslip.studies.fe_comparison import (
     agrees,
     beam_metrics,
     comparison_rows,
-    continuum_dataset,
     noise_floors,
     relative_difference,
 )
 from stickslip.studies.fe_config import halved_step
+from stickslip.studies.fe_continuum import continuum_dataset
 
 FIG17 = FrictionTable.paper_fig17()
 

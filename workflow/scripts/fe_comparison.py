@@ -11,11 +11,11 @@ from stickslip.studies.fe_comparison import (
     beam_metrics,
     comparison_dataset,
     comparison_rows,
-    continuum_dataset,
     noise_floors,
     window_rows,
 )
 from stickslip.studies.fe_config import comparison_mapping, halved_step
+from stickslip.studies.fe_continuum import continuum_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comparison section)

@@ -4,8 +4,8 @@ from stickslip.fe.params import FrictionTable
 from stickslip.fe.quantities import INTERPRETATION
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe_comparison import continuum_window_dataset
 from stickslip.studies.fe_config import window_mapping
+from stickslip.studies.fe_continuum import continuum_window_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 cfg = snakemake.params.config  # noqa: F821  (the scene resolved, and the comparison section)

@@ -8,9 +8,9 @@ from stickslip.fe.quantities import INTERPRETATION
 from stickslip.fe.step_halving import apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe_comparison import increments_dataset
 from stickslip.studies.fe_config import PERTURBED_FIELDS, scene_mapping
 from stickslip.studies.fe_convergence import convergence_dataset
+from stickslip.studies.fe_increments import increments_dataset
 from stickslip.studies.fe_stability import stability_dataset
 from stickslip.studies.fe_sweeps import sweep_dataset, sweep_half_step
 

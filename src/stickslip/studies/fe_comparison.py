@@ -1,26 +1,18 @@
-"""Beam (frame elements with rotary inertia) against the continuum strip (the paper's kind of model).
-
-Both models are built from the same merged scene mapping. The beam's Section 10 scene (``fixed_normal``:
-transverse motion suppressed, normal force held) is run in the continuum as the paper describes it:
-kinematic contact with the upper face held vertically (``constrain_upper_face``).
+"""Beam (frame elements with rotary inertia) against the continuum strip (the paper's kind of model): the
+comparison table's rows (agreement within the beam's own step-halving noise, notes), over the comparison
+window and over the claims' windows, and its datasets. The continuum's runs: stickslip.studies.fe_continuum.
 """
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping
 
 import numpy as np
 import xarray as xr
 
-from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
-from ..fe.metrics import trajectory_metrics
-from ..fe.modes import mode_growth
 from ..fe.params import FrictionTable
 from ..fe.quantities import INTERPRETATION
-from ..fe.scene import SceneParams
-from ..fe.step_halving import HALF_STEP, REL_TOL, apply_step_halving
-from .fe_packing import result_dataset
+from ..fe.step_halving import REL_TOL
 from .fe_scene import run_scene
 
 #: quantities of the comparison table
@@ -39,95 +31,6 @@ AGREEMENT_RULE = (
     "(the beam's own change of the quantity when its time step is halved); dominant_frequency also needs "
     "horizontal_amplitude to agree (a frequency of two motions of different size is not one result)"
 )
-
-
-def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: int, ny: int):
-    """The continuum scene of a beam scene mapping (same geometry reading, damping and contact law)."""
-    from dataclasses import replace
-
-    from ..fe.continuum import build_continuum
-
-    p = SceneParams.from_mapping(mapping)
-    contact = p.contact
-    upper = contact.method == "fixed_normal"
-    if upper:
-        contact = replace(contact, method="kinematic")
-    return build_continuum(
-        p.beam,
-        p.disc,
-        contact,
-        friction,
-        nx=nx,
-        ny=ny,
-        output_node=p.contact.output_node,
-        damping_beta=p.solver.stiffness_damping,
-        disc_rotation=p.disc.direction,
-        constrain_upper_face=upper,
-        contact_position=None if p.contact.surface_offset else None,
-    )
-
-
-def continuum_dataset(
-    mapping: Mapping, friction: FrictionTable, *, nx: int = 100, ny: int = 1, name: str = ""
-) -> xr.Dataset:
-    """Pure build: run the continuum strip for the scene mapping; the beam dataset's trajectory metrics, and
-    the growth of the strip's own first contact-held mode at node 1 (the beam's first_mode_* variables
-    but the linear estimate)."""
-    from ..fe.continuum import integrate_continuum, natural_frequencies
-
-    p = SceneParams.from_mapping(mapping)
-    scene = continuum_scene_from_mapping(mapping, friction, nx, ny)
-    r = integrate_continuum(
-        scene,
-        p.solver.t_end,
-        safety_factor=p.solver.safety_factor,
-        output_interval=p.solver.output_dt,
-        initial_state=p.solver.initial_state,
-    )
-    m = trajectory_metrics(r)
-    growth, r.extra["first_mode_amplitude"] = mode_growth(r, float(natural_frequencies(scene, 1)[0]))
-    m.update(growth)
-    out = dict(mapping.get("output", {}) or {})
-    ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
-    ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": f"Continuum strip {nx}x{ny} on rotating rigid disc, scene {name}".strip(),
-            "scene": name,
-            "parameters": json.dumps({"mapping": mapping, "nx": nx, "ny": ny}, default=str),
-            "model_interpretation": (
-                "plane-stress strip, Q4 with incompatible modes (CPS4I kind), lumped mass, node-to-surface "
-                "contact of the lower face on the rigid disc; Section 10 as upper face held vertically. "
-                "Other choices as the beam model: " + INTERPRETATION
-            ),
-            "method": f"explicit central difference, dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
-            "diverged": int(r.extra.get("diverged", False)),
-            "t_end": float(p.solver.t_end),
-        }
-    )
-    return ds
-
-
-def continuum_window_dataset(
-    mapping: Mapping, friction: FrictionTable, *, nx: int = 100, ny: int = 1, name: str = ""
-) -> xr.Dataset:
-    """The continuum strip over a claim's window, as a claims dataset: the base run and its step-halving
-    member (dt/2) as the perturbation ensemble (``<metric>_ensemble``, so a claim's spread holds the step's
-    effect), every metric checked by stickslip.fe.step_halving (``<metric>_half_step``, NaN and
-    ``<metric>_full_step`` where not converged). No perturbed members: at ~16 s CPU per simulated second
-    (dt/2: ~26 s) they are not affordable, and the beam's show a 1e-12 perturbation moves its metrics far
-    less than the step does."""
-    spec = EnsembleSpec(seeds=(), step_factor=HALF_STEP, blas_threads=None)
-    ds = ensemble_dataset(  # no perturbed members: the run id and fields decide no sign here
-        lambda mp: continuum_dataset(mp, friction, nx=nx, ny=ny, name=name),
-        mapping,
-        spec,
-        run_id=f"results/fe/continuum_window/{name}.nc",
-        fields=(),
-    )
-    ds = apply_step_halving(ds, step_member_values(ds))
-    ds.attrs["model"] = "continuum"
-    return ds
 
 
 def step_pair(ds: xr.Dataset, name: str) -> tuple[float, float]:
@@ -380,70 +283,3 @@ def window_dataset(rows: list[dict]) -> xr.Dataset:
             "time_step": ("time_step", ["dt", "dt/2"], {"long_name": "explicit time step"}),
         },
     )
-
-
-def increments_dataset(
-    beam_mapping: Mapping, meshes, safety_factors, betas, duration: float = 0.65
-) -> xr.Dataset:
-    """Increment count of the continuum strip for ``duration`` (the paper's banner: 3 688 747 at 0.65 s)
-    for each mesh x safety factor x stiffness damping, from its global stable step."""
-    from ..fe.continuum import build_continuum, increments, stable_time_step
-
-    p = SceneParams.from_mapping(beam_mapping)
-    fr = FrictionTable.paper_fig17()
-    n = np.zeros((len(meshes), len(safety_factors), len(betas)))
-    dtc = np.zeros((len(meshes), len(betas)))
-    for i, (nx, ny) in enumerate(meshes):
-        for k, beta in enumerate(betas):
-            sc = build_continuum(p.beam, p.disc, p.contact, fr, nx=nx, ny=ny, damping_beta=beta)
-            dtc[i, k] = stable_time_step(sc)
-            for j, sf in enumerate(safety_factors):
-                n[i, j, k] = increments(sc, duration, sf)
-    ds = xr.Dataset(
-        {
-            "increments": (
-                ("mesh", "safety_factor", "stiffness_damping"),
-                n,
-                {"units": "1", "long_name": f"explicit increments to reach {duration} s"},
-            ),
-            "stable_time_step": (
-                ("mesh", "stiffness_damping"),
-                dtc,
-                {"units": "s", "long_name": "global stable time step 2/omega_max (damped)"},
-            ),
-            "mesh_nx": (
-                "mesh",
-                np.array([m[0] for m in meshes]),
-                {"units": "1", "long_name": "elements along"},
-            ),
-            "mesh_ny": (
-                "mesh",
-                np.array([m[1] for m in meshes]),
-                {"units": "1", "long_name": "elements across"},
-            ),
-        },
-        coords={
-            "mesh": ("mesh", [f"{a}x{b}" for a, b in meshes], {"long_name": "mesh (along x across)"}),
-            "safety_factor": ("safety_factor", np.array(safety_factors, float), {"units": "1"}),
-            "stiffness_damping": ("stiffness_damping", np.array(betas, float), {"units": "s"}),
-        },
-    )
-    i0 = [f"{a}x{b}" for a, b in meshes].index("100x1") if (100, 1) in [tuple(m) for m in meshes] else 0
-    j0 = int(np.argmin(np.abs(np.array(safety_factors, float) - 1.0)))
-    ds["increments_0p65s_100x1"] = (
-        (),
-        float(n[i0, j0, 0]),
-        {
-            "units": "1",
-            "long_name": "increments for 0.65 s, continuum 100x1, full stable step, no damping",
-        },
-    )
-    ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Explicit increment counts of the continuum strip",
-            "model_interpretation": "plane-stress CPS4I-kind strip, lumped mass; global stable step",
-            "method": "dt = safety_factor * 2/omega_max (sqrt(1+xi^2)-xi); increments = ceil(duration/dt)",
-        }
-    )
-    return ds
