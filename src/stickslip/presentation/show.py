@@ -10,7 +10,8 @@ from pathlib import Path
 def _fmt(value, unit: str = "") -> str:
     if value != value:
         return "n/a"
-    return f"{value:.4g}" + (f" {unit}" if unit else "")
+    # "1" is CF's unit of a pure number: "stick_count = 8 1" would read as two numbers
+    return f"{value:.4g}" + (f" {unit}" if unit not in ("", "1") else "")
 
 
 def summary_text(ds, checksum: str = "") -> str:
