@@ -156,3 +156,13 @@ def test_a_dataset_link_opens_its_show_text_beside_the_file(tmp_path):
     table = builder.dataset_link("results/table.csv")
     assert table == {"href": "table.csv", "text": "results/table.csv", "file": None}
     assert builder.dataset_link("results/missing.nc")["href"] is None
+
+
+def test_a_damaged_dataset_is_previewed_as_damaged_and_the_page_still_builds(tmp_path):
+    builder = _builder(_project(tmp_path))
+    path = tmp_path / "results/onedof/run.nc"
+    path.write_bytes(path.read_bytes()[:400])  # truncated, as by a killed copy
+    link = builder.dataset_link("results/onedof/run.nc")
+    builder.write_text_pages()
+    text = html.unescape((builder.results / link["href"]).read_text())
+    assert "checksum: MISMATCH" in text and "make repair" in text

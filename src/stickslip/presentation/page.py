@@ -14,6 +14,7 @@ per line (``#L<n>``), so a link can open a rule or a function at its definition.
 from __future__ import annotations
 
 import csv
+import functools
 import html
 import os
 import re
@@ -708,6 +709,7 @@ def dataset_paths_of(claim: dict) -> list[str]:
     return [r["dataset"] for r in refs if isinstance(r, dict) and "dataset" in r]
 
 
+@functools.cache
 def _templates():
     import jinja2
 
@@ -732,7 +734,7 @@ def render_text_page(
     numbered with an anchor each (``id="L<n>"``, counted from 1, as an editor counts)."""
     return _templates().get_template("text_page.html.j2").render(
         title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text,
-        lines=list(lines), note="",
+        lines=list(lines),
     )  # fmt: skip
 
 

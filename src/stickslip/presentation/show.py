@@ -52,7 +52,10 @@ def show_text(path: Path) -> str:
     except CorruptDatasetError as exc:
         import xarray as xr
 
-        with xr.open_dataset(path) as opened:
-            ds = opened.load()
         state = f"MISMATCH: {exc}"
+        try:
+            with xr.open_dataset(path) as opened:
+                ds = opened.load()
+        except Exception:  # truncated or not netCDF at all: the state is all there is to say
+            return f"{Path(path).name}: unreadable\n  checksum: {state}"
     return summary_text(ds, state)
