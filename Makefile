@@ -68,8 +68,9 @@ ccx:
 	      { apt-get update -qq >/dev/null 2>&1 && apt-get install -y -qq calculix-ccx >/dev/null 2>&1; }; }; } || \
 	    { echo "make figures needs CalculiX: apt-get install -y calculix-ccx (Debian/Ubuntu)"; exit 1; }
 
+# --logger: one console line per finished job, with the time left (src/snakemake_logger_plugin_*)
 figures: $(STAMP) ccx
-	$(SNAKEMAKE) -j$(JOBS)
+	$(SNAKEMAKE) -j$(JOBS) --logger stickslip-progress
 
 # Rebuild every dataset that no longer matches its content checksum (damaged, truncated, edited by another
 # program), then everything downstream of it: `python -m stickslip.io.netcdf verify` lists them.

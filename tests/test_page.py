@@ -1,5 +1,6 @@
 """The replication page: the verdict rule, and the page of a real run loaded in a headless browser."""
 
+import html
 import re
 import shutil
 import subprocess
@@ -188,6 +189,23 @@ class _Dom(HTMLParser):
             self.cards[a["id"]] = (a.get("data-figure", ""), a.get("data-verdict"))
 
 
+def check_line_anchors(results: Path, urls: list[str]) -> None:
+    """Every source link with a line (``page/source/<file>.html#L<n>``) lands on a rule's or a function's
+    definition, and every dataset link on that dataset's ``stickslip show`` text."""
+    anchored = [urlsplit(u) for u in urls if u.startswith("page/source/") and "#L" in u]
+    assert anchored, "no source link carries a line anchor"
+    for u in anchored:
+        page = (results / unquote(u.path)).read_text()
+        m = re.search(rf'<span class="line" id="{u.fragment}"><a [^>]*>\d+</a>(.*?)</span>', page)
+        assert m, f"{u.path} has no line {u.fragment}"
+        line = html.unescape(m[1]).strip()
+        assert re.match(r"(def |class |rule\b|checkpoint\b)", line), f"{u.path}#{u.fragment} opens {line!r}"
+    previews = [u for u in urls if u.startswith("page/datasets/")]
+    assert previews, "no dataset link opens a preview"
+    for u in previews:
+        assert "checksum: ok" in (results / unquote(u)).read_text(), u
+
+
 def _headless(chrome, *args, timeout=120):
     cmd = [chrome, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", *args]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
@@ -231,6 +249,7 @@ def check_page(chrome, run):
         if not (results / unquote(parts.path)).exists():
             missing.append(u)
     assert not missing, f"links to files that do not exist: {missing}"
+    check_line_anchors(results, dom.urls)
 
     figures = {int(n): v for n, v in dom.cards.values() if n}
     assert sorted(set(PAPER_FIGURES) - set(figures)) == []

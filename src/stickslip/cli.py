@@ -378,45 +378,18 @@ def cmd_claims(args) -> int:
 
 
 def summary(ds, checksum: str = "") -> None:
-    """Title, provenance, scalar results with units, time series and the checksum state."""
-    attrs = ds.attrs
-    print(attrs.get("title", "(untitled)"))
-    for key in ("source", "history", "interpretation", "method", "solver_message", "fe_reading"):
-        if attrs.get(key):
-            print(f"  {key}: {str(attrs[key]).splitlines()[-1]}")
-    method = {k[7:]: v for k, v in attrs.items() if k.startswith("method_")}
-    scene = {k[6:]: v for k, v in attrs.items() if k.startswith("scene_")}
-    if scene:
-        print("  scene: " + ", ".join(f"{k}={v}" for k, v in scene.items()))
-    if method:
-        print("  method: " + ", ".join(f"{k}={v}" for k, v in method.items()))
-    scalars = [n for n in ds.data_vars if ds[n].ndim == 0 and ds[n].dtype.kind in "fiu"]
-    if scalars:
-        print("  results:")
-        for name in scalars:
-            print(f"    {name} = {_fmt(float(ds[name]), ds[name].attrs.get('units', ''))}")
-    series = [n for n in ds.data_vars if ds[n].ndim > 0]
-    if series:
-        dims = ", ".join(f"{d}={n}" for d, n in ds.sizes.items())
-        print(f"  {len(series)} array variables over {dims}")
-    if checksum:
-        print(f"  checksum: {checksum}")
+    """Print the dataset's summary (the text the replication page previews it with)."""
+    from .presentation.show import summary_text
+
+    print(summary_text(ds, checksum))
 
 
 def cmd_show(args) -> int:
-    from .io.netcdf import CorruptDatasetError, read_dataset
+    from .presentation.show import show_text
 
     if not args.file.is_file():
         raise UsageError(f"FILE: {args.file} does not exist")
-    try:
-        ds = read_dataset(args.file)
-        state = "ok (content matches content_checksum)"
-    except CorruptDatasetError as exc:
-        import xarray as xr
-
-        ds = xr.open_dataset(args.file).load()
-        state = f"MISMATCH: {exc}"
-    summary(ds, state)
+    print(show_text(args.file))
     return 0
 
 

@@ -9,7 +9,7 @@ FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
 FE_STUDIES = ["convergence", "stability"]
 #: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
-#: resolved (stickslip.studies.fe.job_config): a value re-runs exactly the jobs that read it.
+#: resolved (stickslip.studies.fe_config.job_config): a value re-runs exactly the jobs that read it.
 FE_EFFECTIVE = effective_fe_config(config)
 #: The scenes the studies start from (sweeps, convergence, stability, increments).
 FE_STUDY_SECTIONS = ("sweeps", "convergence", "stability", "increments")

@@ -61,6 +61,9 @@ rule replication_page:
     output:
         html=PAGE,
         thumbs=directory("results/page/thumbs"),
+        # each linked dataset's `stickslip show` text and each linked source file with line anchors (#L<n>)
+        previews=directory("results/page/datasets"),
+        source_pages=directory("results/page/source"),
     log:
         "results/logs/replication_page/all.log",
     benchmark:

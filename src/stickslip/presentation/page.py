@@ -5,11 +5,16 @@ claims files (which paper figures each claim is about), the reading ranking, the
 inverse study's tables, the images the figure rules wrote and the rendered notebooks. The paper's figure
 list and captions ship with this package (``paper.yaml``). The page is static: CSS inline, no script, no
 network; every link is relative, so it opens from the file system.
+
+Beside it, under ``results/page/``: ``datasets/<path>.html``, each linked dataset's ``stickslip show`` text (a
+netCDF file has no preview in a browser), and ``source/<path>.html``, each linked source file with an anchor
+per line (``#L<n>``), so a link can open a rule or a function at its definition.
 """
 
 from __future__ import annotations
 
 import csv
+import functools
 import html
 import os
 import re
@@ -23,6 +28,8 @@ from ..claims.load import load_claims
 from ..claims.rows import EVIDENCE_CLASSES
 from ..claims.table import read_table
 from .report import paper_figures
+from .show import show_text
+from .sources import definition_lines, imported_names, rule_line
 from .verdicts import (
     SPEEDS,
     VERDICT_RULE,
@@ -97,18 +104,29 @@ def claim_figures(claims: list[dict]) -> dict[str, list[int]]:
     return out
 
 
-def source_modules(script: Path, src: Path) -> list[str]:
-    """The project modules a script imports (``from stickslip.x import``), as files under ``src``."""
+def module_file(module: str, src: Path) -> Path | None:
+    """The file under ``src`` of a dotted module name (a module or a package's ``__init__``)."""
+    parts = module.split(".")
+    for candidate in (src.joinpath(*parts).with_suffix(".py"), src.joinpath(*parts, "__init__.py")):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def source_modules(script: Path, src: Path) -> list[tuple[Path, list[tuple[str, int]]]]:
+    """The project modules a script imports from (``from stickslip.x import a``), as files under ``src``, each
+    with the (name, line of its ``def``/``class``) of the functions and classes it takes from them (a
+    constant or a re-exported name has no line of its own there and is left out)."""
     if not script.is_file():
         return []
     found = []
-    for name in re.findall(r"^\s*(?:from|import)\s+(stickslip(?:\.\w+)*)", script.read_text(), re.M):
-        parts = name.split(".")
-        for candidate in (src.joinpath(*parts).with_suffix(".py"), src.joinpath(*parts, "__init__.py")):
-            if candidate.is_file():
-                found.append(candidate)
-                break
-    return list(dict.fromkeys(found))
+    for module, names in imported_names(script.read_text()).items():
+        path = module_file(module, src)
+        if path is None:
+            continue
+        lines = definition_lines(path.read_text())
+        found.append((path, [(n, lines[n]) for n in names if n in lines]))
+    return found
 
 
 _HEADING = re.compile(r"<h([1-4])[^>]*\bid=\"([^\"]+)\"[^>]*>(.*?)</h\1>", re.S)
@@ -259,6 +277,10 @@ class PageBuilder:
         self.notebooks = {n: notebook_sections(self.results / "notebooks" / f"{n}.html") for n in notebooks}
         self.thumbs = self.results / "page" / "thumbs"
         self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
+        self.previews = self.results / "page" / "datasets"
+        self.source_pages = self.results / "page" / "source"
+        #: file -> its text page (a dataset's ``stickslip show`` text, a source file by line), for ``context``
+        self.text_jobs: dict[Path, Path] = {}
         self.workers = workers
 
     # -- links ----------------------------------------------------------------------------------------
@@ -277,6 +299,34 @@ class PageBuilder:
 
     def link(self, path, text=None) -> dict:
         return {"href": self.href(path), "text": text or str(path)}
+
+    def text_page_of(self, path, folder: Path, base: Path) -> Path | None:
+        """Where the text page of ``path`` (relative to the working directory) goes: its path below ``base``
+        under ``folder``, registered for ``context`` to write; None when the file does not exist."""
+        full = self.workdir / path
+        if not full.is_file():
+            return None
+        rel = Path(os.path.relpath(full, base))
+        if rel.parts[0] == "..":  # outside ``base``: no page of its own
+            return None
+        out = folder / f"{rel.as_posix()}.html"
+        self.text_jobs.setdefault(full, out)
+        return out
+
+    def source_link(self, path, line: int | None = None, text=None) -> dict:
+        """A link to the rendered source file ``path`` (at ``line`` when given), or the file itself when
+        it cannot be rendered; ``href`` None when the file does not exist."""
+        out = self.text_page_of(path, self.source_pages, self.workdir)
+        href = self.page_path(out) + (f"#L{line}" if line else "") if out else self.href(path)
+        return {"href": href, "text": text or str(path)}
+
+    def dataset_link(self, path) -> dict:
+        """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""
+        out = self.text_page_of(path, self.previews, self.results) if str(path).endswith(".nc") else None
+        file = self.href(path)
+        if out is None:
+            return {"href": file, "text": str(path), "file": None}
+        return {"href": self.page_path(out), "text": str(path), "file": file}
 
     # -- inverse --------------------------------------------------------------------------------------
 
@@ -359,11 +409,14 @@ class PageBuilder:
                     "label": s.label,
                     "full": self.href(s.path),
                     "rule": s.rule,
-                    "rule_file": self.link(s.rule_file) if s.rule_file else None,
-                    "script": self.link(s.script) if s.script else None,
+                    "rule_file": self.source_link(s.rule_file, self.rule_line(s)) if s.rule_file else None,
+                    "script": self.source_link(s.script) if s.script else None,
                     "modules": [
-                        self.link(m.relative_to(self.workdir))
-                        for m in source_modules(script, self.workdir / "src")
+                        {
+                            **self.source_link(m.relative_to(self.workdir)),
+                            "names": [self.source_link(m.relative_to(self.workdir), n, f) for f, n in names],
+                        }
+                        for m, names in source_modules(script, self.workdir / "src")
                     ]
                     if script
                     else [],
@@ -371,6 +424,10 @@ class PageBuilder:
                 }
             )
         return out
+
+    def rule_line(self, source: Source) -> int | None:
+        path = self.workdir / source.rule_file
+        return rule_line(path.read_text(), source.rule) if path.is_file() else None
 
     def verdict_cells(self, key: str) -> dict:
         """The figure's verdicts (figure_verdicts.csv): primary, as printed, the search; each with k of n."""
@@ -471,7 +528,7 @@ class PageBuilder:
         for r in judged:
             for p in dataset_paths_of(self.claim.get(r["claim"], {})):
                 data.append(p.format(reading=primary) if "{reading}" in p else p)
-        datasets = [self.link(p) for p in dict.fromkeys(data)]
+        datasets = [self.dataset_link(p) for p in dict.fromkeys(data)]
         notebook = None
         if number is not None:
             found = notebook_link(number, self.notebooks)
@@ -587,6 +644,7 @@ class PageBuilder:
     def context(self) -> dict:
         cards = [self.card(e) for e in self.paper["figures"]] + [self.card(e) for e in self.paper["text"]]
         make_thumbnails(self.thumb_jobs, self.workers)
+        self.write_text_pages()
         placed = {r["claim"] for c in cards for r in c["claims"] + c["apart"]} | {
             r["claim"] for r in self.rows if self.figures_of.get(r["claim"])
         }
@@ -617,31 +675,72 @@ class PageBuilder:
             },
         }
 
+    def write_text_pages(self) -> None:
+        """Every registered text page: a dataset's ``stickslip show`` text, a source file by line. The
+        folders exist even when empty (they are the page rule's outputs)."""
+        index = self.results / "index.html"
+        for folder in (self.previews, self.source_pages):
+            folder.mkdir(parents=True, exist_ok=True)
+        for path, out in self.text_jobs.items():
+            label = os.path.relpath(path, self.workdir)
+            out.parent.mkdir(parents=True, exist_ok=True)
+            page = dict(title=label, index_href=relative_href(index, out), file_href=relative_href(path, out))
+            if out.is_relative_to(self.previews):
+                text = render_text_page(**page, file_label=f"download {path.name}", text=show_text(path))
+            else:
+                text = render_text_page(
+                    **page, file_label="plain text", lines=path.read_text(errors="replace").splitlines()
+                )
+            write_atomically(out, text)
+
+
+def relative_href(target: Path, page: Path) -> str:
+    """The link from the HTML file ``page`` to ``target``."""
+    return Path(os.path.relpath(target, page.parent)).as_posix()
+
+
+def write_atomically(out: Path, text: str) -> None:
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(text)
+    tmp.replace(out)
+
 
 def dataset_paths_of(claim: dict) -> list[str]:
     refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
     return [r["dataset"] for r in refs if isinstance(r, dict) and "dataset" in r]
 
 
-def render(context: dict) -> str:
+@functools.cache
+def _templates():
     import jinja2
 
-    env = jinja2.Environment(
+    return jinja2.Environment(
         loader=jinja2.FileSystemLoader(HERE / "templates"),
         autoescape=jinja2.select_autoescape(["html", "j2"]),
         trim_blocks=True,
         lstrip_blocks=True,
         undefined=jinja2.StrictUndefined,
     )
+
+
+def render(context: dict) -> str:
     css = (HERE / "templates" / "page.css").read_text()
-    return env.get_template("page.html.j2").render(css=css, **context)
+    return _templates().get_template("page.html.j2").render(css=css, **context)
+
+
+def render_text_page(
+    title: str, index_href: str, file_href: str = "", file_label: str = "", text: str = "", lines=()
+) -> str:
+    """A file as a page of its own (escaped): ``text`` as one block (a dataset's summary), or ``lines``
+    numbered with an anchor each (``id="L<n>"``, counted from 1, as an editor counts)."""
+    return _templates().get_template("text_page.html.j2").render(
+        title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text,
+        lines=list(lines),
+    )  # fmt: skip
 
 
 def build_page(out: Path, builder: PageBuilder) -> Path:
     """Write the page to ``out`` (atomically) and return its path."""
     out = Path(out)
-    text = render(builder.context())
-    tmp = out.with_suffix(".html.tmp")
-    tmp.write_text(text)
-    tmp.replace(out)
+    write_atomically(out, render(builder.context()))
     return out

@@ -4,10 +4,14 @@ Called by ``workflow/rules/page.smk`` at parse time with Snakemake's rules: ever
 ``results/figures/<folder>/<name>.png`` shows the paper figures named by the config title of its 1-DOF or
 sweep figure (``<folder>``), by ``workflow/report/figures.yaml`` for the beam-on-disc scenes
 (``results/figures/fe/<scene>.png``), or else by its rule's docstring ("Fig. 4: ...").
+
+Also the line a source link points to: a rule's definition in its rules file, a function's ``def`` in a module
+(the page renders those files with an anchor per line, ``#L<n>``).
 """
 
 from __future__ import annotations
 
+import ast
 import os
 import re
 from pathlib import Path
@@ -57,3 +61,56 @@ def page_sources(rules, titled: dict, fe_figures: dict, basedir) -> list[dict]:
                 }
             )
     return sorted(sources, key=lambda s: s["path"])
+
+
+# -- line anchors: which line of a source file a link on the page points to ----------------------------------
+
+
+def definition_lines(source: str) -> dict[str, int]:
+    """Top-level function and class names of Python ``source`` -> the line of their ``def``/``class`` (not
+    of a decorator above it)."""
+    tree = ast.parse(source)
+    kinds = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+    return {node.name: node.lineno for node in tree.body if isinstance(node, kinds)}
+
+
+def imported_names(script: str, package: str = "stickslip") -> dict[str, list[str]]:
+    """``from <package>.x import a, b`` statements of Python ``script``: module -> the names it imports, in
+    the order they appear."""
+    out: dict[str, list[str]] = {}
+    for node in ast.walk(ast.parse(script)):
+        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            if node.module == package or node.module.startswith(package + "."):
+                names = out.setdefault(node.module, [])
+                names.extend(a.name for a in node.names if a.name not in names)
+    return out
+
+
+def _name_pattern(expression: str) -> re.Pattern | None:
+    """A rule's ``name:`` value (a string or an f-string) as a pattern its generated names match."""
+    m = re.fullmatch(r"""f?(["'])(.*)\1""", expression.strip())
+    if not m:
+        return None
+    parts = re.split(r"\{[^{}]*\}", m[2])
+    return re.compile(".+".join(re.escape(p) for p in parts))
+
+
+def rule_line(smk: str, rule: str) -> int | None:
+    """The line of ``rules file`` text ``smk`` that defines ``rule``: ``rule <name>:``, or the ``rule:`` of a
+    rule made in a loop whose ``name:`` (an f-string) makes that name. None when neither is found."""
+    lines = smk.splitlines()
+    for i, line in enumerate(lines, 1):
+        if re.match(rf"\s*(?:rule|checkpoint)\s+{re.escape(rule)}\s*:", line):
+            return i
+    for i, line in enumerate(lines, 1):
+        if not re.fullmatch(r"\s*(?:rule|checkpoint)\s*:\s*", line):
+            continue
+        for j in range(i, min(i + 12, len(lines))):  # the name sits under the rule's docstring
+            m = re.match(r"\s*name\s*:\s*(.*)$", lines[j])
+            if m:
+                value = m[1] or (lines[j + 1] if j + 1 < len(lines) else "")
+                pattern = _name_pattern(value)
+                if pattern and pattern.fullmatch(rule):
+                    return i
+                break
+    return None
