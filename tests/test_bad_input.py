@@ -643,8 +643,8 @@ def test_claims_rows_that_contradict_the_config_or_the_pins_are_rejected(case, t
 
 
 def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_path):
+    from stickslip.catalogue import onedof_catalogue
     from stickslip.io.netcdf import run_dataset_variables
-    from stickslip.pipeline.catalogue import onedof_catalogue
 
     (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump([_with(VALUE_ROW, variable="max_displacment")]))
     claims = load_claims([tmp_path / "zz_broken.yaml"])

@@ -182,8 +182,8 @@ def simulate(
     built over this run's config. ``output`` writes the dataset with the pipeline's writer and returns it as
     read back (checksum verified). ``config``: the project config already loaded (``load_project_config``)
     instead of reading ``configfiles``. A bad value raises ``ConfigError`` naming its config key."""
+    from .catalogue import onedof_dataset
     from .ensemble import ensemble_dataset
-    from .pipeline.catalogue import onedof_dataset
     from .studies.onedof import scene_run_dataset
     from .studies.specs import PERTURBED_FIELDS, run_spec
 

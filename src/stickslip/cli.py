@@ -178,8 +178,8 @@ def _metrics(ds) -> dict:
 
 def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]:
     """The baseline's metrics in ``reading``: from the build when its dataset exists, else computed."""
+    from .catalogue import onedof_dataset
     from .io.netcdf import read_dataset
-    from .pipeline.catalogue import onedof_dataset
 
     base = config["onedof"]["baseline"]
     path = root / onedof_dataset(base["scene"], reading, base["method"])
@@ -193,7 +193,7 @@ def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]
 
 def paper_values(config: dict, root: Path) -> dict[str, list[tuple[float, str]]]:
     """The paper's numbers for the baseline run: every ``value`` claim on the baseline's dataset."""
-    from .pipeline.catalogue import onedof_dataset
+    from .catalogue import onedof_dataset
 
     base = config["onedof"]["baseline"]
     target = onedof_dataset(base["scene"], "{reading}", base["method"])
