@@ -241,6 +241,22 @@ def benchmark(rule: str, name: str | None = None) -> str:
     return f"{RESULTS}/benchmarks/{rule}.tsv" if name is None else f"{RESULTS}/benchmarks/{rule}/{name}.tsv"
 
 
+def fe_model_of(path: str) -> str | None:
+    """``"continuum"`` for a product of the continuum strip (``fe_continuum``, ``fe_continuum_window``,
+    ``continuum_increments``), ``"beam"`` for any other beam-on-disc product, None for the rest. The one place
+    the FE layout is read back: a claims row is checked on its own, before a config (and so a catalogue) is
+    at hand."""
+    if not path.startswith(f"{RESULTS}/fe/"):
+        return None
+    return "continuum" if path.startswith(f"{RESULTS}/fe/continuum") else "beam"
+
+
+def last_name(path: str) -> str:
+    """The name every path function puts last (a scene, a study, a figure): what a claims row's dataset is
+    matched by against the model comparison's rows, without a catalogue at hand."""
+    return path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
+
+
 def is_result(path: str) -> bool:
     """Whether a path names something the pipeline makes (as opposed to a source file of the project)."""
     return path.startswith(f"{RESULTS}/")

@@ -32,9 +32,12 @@ CLAIM_IDS_FILE = "config/claims/ids.txt"
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 #: The claims rows, read once at parse time for every rule that needs them.
 CLAIMS = load_claims(CLAIM_FILES)
+#: Every product the config makes, path -> Entry (stickslip.catalogue): a claimed path must be one of them.
+CATALOGUE = paths.catalogue(config)
 check_claims(
     CLAIMS,
     config["claims"]["readings"],
+    catalogue=CATALOGUE,
     known_readings=list(config["onedof"]["readings"]) + list(config["fe"]["readings"]),
     pinned_ids=[
         line.strip()
