@@ -225,6 +225,9 @@ rule fe_figures:
     params:
         readings=FE_READINGS,
         scenes=FE_SCENES,
+        # the paper figures in the order of output.paper, and the scenes each draws (config fe.paper_figures)
+        paper_figure_numbers=list(paths.fe_paper_figure_numbers()),
+        paper_figures=FE["paper_figures"],
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
             c["variable"]: c["value"]
