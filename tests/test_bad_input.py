@@ -82,6 +82,19 @@ CASES = {
     "figure_plot_key_typo": ({"onedof": {"figures": {"fig03": {"plott": "phase"}}}}, ["fig03.plott"]),
     "figure_plot_value_typo": ({"onedof": {"figures": {"fig03": {"plot": "phse"}}}}, ["fig03.plot"]),
     "sweep_figure_typo": ({"onedof": {"sweep_figures": {"fig10": {"readngs": ["x"]}}}}, ["readngs"]),
+    # the paper-figure maps the catalogue reads: figures of the paper, scenes of the config
+    "figure_paper_figure_not_in_the_paper": (
+        {"onedof": {"figures": {"fig02": {"paper_figures": [37]}}}},
+        ["onedof.figures.fig02.paper_figures"],
+    ),
+    "fe_paper_figure_unknown_scene": (
+        {"fe": {"paper_figures": {21: ["section9_kinematic"]}}},
+        ["fe.paper_figures.21", "section9_kinematic"],
+    ),
+    "fe_paper_figure_not_beam_on_disc": (
+        {"fe": {"paper_figures": {20: ["section9_kinematic_15p2rpm"]}}},
+        ["fe.paper_figures", "20"],
+    ),
     "notebook_key_typo": ({"notebooks": {"section_03_baseline": {"figurs": ["fig02"]}}}, ["figurs"]),
     "claims_section_typo": ({"claims": {"cheque": True}}, ["claims.cheque"]),
     "claims_check_not_bool": ({"claims": {"check": "yes"}}, ["claims.check"]),

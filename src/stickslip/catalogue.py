@@ -299,55 +299,46 @@ def figures_of(paper_figures: Mapping | None) -> dict[str, tuple[int, ...]]:
     return {name: tuple(sorted(numbers)) for name, numbers in out.items()}
 
 
-def _onedof_entries(onedof: Mapping, claims_readings: Iterable[str]) -> Iterator[Entry]:
-    shows = figures_of(onedof.get("paper_figures"))
+def onedof_shows(onedof: Mapping) -> dict[str, tuple[int, ...]]:
+    """What each 1-DOF run shows of the paper, from the ``paper_figures`` of the figures drawn from it:
+    ``scene:<name>`` and ``sweep:<name>`` -> paper figures, and each figure's own name -> its figures."""
+    out: dict[str, set[int]] = {}
+    for name, fig in (onedof.get("figures") or {}).items():
+        for key in (name, f"scene:{fig['scene']}"):
+            out.setdefault(key, set()).update(fig.get("paper_figures") or ())
+    for name, fig in (onedof.get("sweep_figures") or {}).items():
+        for key in (name, f"sweep:{fig['sweep']}"):
+            out.setdefault(key, set()).update(fig.get("paper_figures") or ())
+    out["eq6"] = set((onedof.get("eq6") or {}).get("paper_figures") or ())
+    return {key: tuple(sorted(numbers)) for key, numbers in out.items()}
+
+
+def _onedof_entries(onedof: Mapping) -> Iterator[Entry]:
+    shows = onedof_shows(onedof)
     for scene in onedof["scenes"]:
         for reading in onedof["readings"]:
             for method in onedof["methods"]:
                 names = {"scene": scene, "reading": reading, "method": method}
                 path = onedof_dataset(scene, reading, method)
-                yield _entry("onedof_dataset", names, path, f"simulate_onedof_{scene}", shows.get(scene, ()))
-    sweeps = onedof.get("sweeps") or {}
-    for sweep in sweeps:
+                rule = f"simulate_onedof_{scene}"
+                yield _entry("onedof_dataset", names, path, rule, shows.get(f"scene:{scene}", ()))
+    for sweep in onedof.get("sweeps") or {}:
         for reading in onedof["readings"]:
             for dense in (False, True):
                 names = {"sweep": sweep, "reading": reading, "dense": str(dense)}
                 path = sweep_dataset(sweep, reading, dense)
-                yield _entry("sweep_dataset", names, path, "onedof_sweeps", shows.get(sweep, ()))
-    yield _entry("eq6_curve", {}, eq6_curve(), "eq6_curve", shows.get("fig04", ()))
+                yield _entry("sweep_dataset", names, path, "onedof_sweeps", shows.get(f"sweep:{sweep}", ()))
+    yield _entry("eq6_curve", {}, eq6_curve(), "eq6_curve", shows["eq6"])
     yield _entry(
-        "figure",
-        {"group": "fig04", "name": "eq6"},
-        figure("fig04", "eq6"),
-        "eq6_curve",
-        shows.get("fig04", ()),
+        "figure", {"group": "fig04", "name": "eq6"}, figure("fig04", "eq6"), "eq6_curve", shows["eq6"]
     )
     for ext in ("csv", "nc"):
-        yield _entry(
-            "friction_table",
-            {"ext": ext},
-            friction_table(ext),
-            "friction_table",
-            shows.get("friction_table", ()),
-        )
-    for name, fig in (onedof.get("figures") or {}).items():
-        for reading in fig["readings"]:
-            yield _entry(
-                "figure",
-                {"group": name, "name": reading},
-                figure(name, reading),
-                f"onedof_figure_{name}",
-                shows.get(name, ()),
-            )
-    for name, fig in (onedof.get("sweep_figures") or {}).items():
-        for reading in fig["readings"]:
-            yield _entry(
-                "figure",
-                {"group": name, "name": reading},
-                figure(name, reading),
-                f"sweep_figure_{name}",
-                shows.get(name, ()),
-            )
+        yield _entry("friction_table", {"ext": ext}, friction_table(ext), "friction_table")
+    for kind, section in (("onedof_figure", "figures"), ("sweep_figure", "sweep_figures")):
+        for name, fig in (onedof.get(section) or {}).items():
+            for reading in fig["readings"]:
+                names = {"group": name, "name": reading}
+                yield _entry("figure", names, figure(name, reading), f"{kind}_{name}", shows.get(name, ()))
     critical = onedof.get("critical_speed") or {}
     for reading in critical.get("readings", []):
         yield _entry("critical_speed", {"reading": reading}, critical_speed(reading), "critical_speed")
@@ -507,7 +498,7 @@ def catalogue(config: Mapping) -> dict[str, Entry]:
     """path -> Entry for every product the config makes (logs and benchmarks aside: every job has its
     own, named by ``log``/``benchmark``)."""
     entries = [
-        *_onedof_entries(config["onedof"], (config.get("claims") or {}).get("readings", [])),
+        *_onedof_entries(config["onedof"]),
         *(_fe_entries(config["fe"]) if config.get("fe") else ()),
         *_study_entries(config),
         *_product_entries(config),
@@ -517,4 +508,4 @@ def catalogue(config: Mapping) -> dict[str, Entry]:
 
 def onedof_catalogue(onedof: Mapping) -> dict[str, Entry]:
     """dataset path -> Entry of every 1-DOF run (scene x reading x method) of the ``onedof`` section."""
-    return {e.path: e for e in _onedof_entries(onedof, ()) if e.kind == "onedof_dataset"}
+    return {e.path: e for e in _onedof_entries(onedof) if e.kind == "onedof_dataset"}

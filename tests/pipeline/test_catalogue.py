@@ -222,3 +222,21 @@ def test_repoint_moves_every_operand_and_leaves_the_row_alone():
     assert moved["lhs"]["dataset"] == paths.fe_scene("upper", "section9_a")
     assert moved["rhs"]["dataset"] == paths.fe_study("angle_sweep")
     assert claim["lhs"]["dataset"] == paths.fe_scene("default", "section9_a")  # a copy
+
+
+def test_a_1dof_figures_title_names_the_paper_figures_its_config_entry_maps():
+    """The map (``paper_figures``) decides; the title a reader sees must not say otherwise."""
+    from stickslip.presentation.report import paper_figures as named_in
+
+    onedof = project_config()["onedof"]
+    for section in ("figures", "sweep_figures"):
+        for name, fig in onedof[section].items():
+            assert named_in(fig["title"]) == set(fig["paper_figures"]), f"onedof.{section}.{name}"
+
+
+def test_1dof_runs_show_the_paper_figures_drawn_from_them():
+    cat = paths.catalogue(project_config())
+    assert cat[paths.onedof_dataset("fig07", "plateau_text", "exact")].figures == (7, 8, 9)  # Figs. 7-9
+    assert cat[paths.sweep_dataset("fig12", "plateau_text", True)].figures == (12, 13)
+    assert cat[paths.eq6_curve()].figures == (4,)
+    assert cat[paths.sweep_dataset("belt_speed", "plateau_text")].figures == ()  # drawn by no paper figure

@@ -11,7 +11,7 @@ spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821
 config = snakemake.params.config  # noqa: F821
 captions = {}
 for fig, fspec in config["onedof"]["figures"].items():
-    figs = paper_figures(fspec.get("title", fig))
+    figs = set(fspec["paper_figures"])  # config onedof.figures.<fig>.paper_figures
     for reading in fspec["readings"]:
         captions[paths.figure(fig, reading)] = caption_text(
             f"{fspec.get('title', fig)} — reading {reading}",
@@ -37,7 +37,7 @@ if config["methods_study"]["scenes"]:
     )
 for name, nspec in config.get("notebooks", {}).items():
     figs = set().union(
-        *[paper_figures(config["onedof"]["figures"][f].get("title", f)) for f in nspec.get("figures", [])]
+        *[set(config["onedof"]["figures"][f]["paper_figures"]) for f in nspec.get("figures", [])]
     )
     captions[paths.notebook(name)] = caption_text(
         f"Notebook {name}: figures next to the reported numbers", figs, claims_for(rows, figs)
