@@ -209,6 +209,14 @@ def notebook_inputs(name):
     return list(dict.fromkeys(files + [paths.claims_table(), paths.figure_verdicts()]))
 
 
+def fe_scene_of(path):
+    """The FE scene a claim's dataset is a run of (beam in any reading, continuum, continuum window), None
+    for any other dataset: looked up in the catalogue."""
+    entry = CATALOGUE.get(path) if isinstance(path, str) else None
+    fe_kinds = ("fe_scene", "fe_continuum", "fe_continuum_window")
+    return entry.name("scene") if entry is not None and entry.kind in fe_kinds else None
+
+
 # -- sweeps and maps ----------------------------------------------------------------------------------
 
 

@@ -74,14 +74,6 @@ rule fe_studies:
         "../scripts/fe_studies.py"
 
 
-def fe_scene_of(path):
-    """The FE scene a claim's dataset is a run of (beam in any reading, continuum, continuum window), None
-    for any other dataset: looked up in the catalogue."""
-    entry = CATALOGUE.get(path) if isinstance(path, str) else None
-    fe_kinds = ("fe_scene", "fe_continuum", "fe_continuum_window")
-    return entry.name("scene") if entry is not None and entry.kind in fe_kinds else None
-
-
 #: FITS of the tip support to the paper's Fig. 21 centre, labelled as fits: one per disc speed (the fitted
 #: stiffness is the same closed form; the speed decides the growth claims). Dataset name -> base scene.
 FE_SETUP_FITS = paths.FE_SETUP_FITS
