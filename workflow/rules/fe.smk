@@ -231,9 +231,7 @@ rule fe_figures:
             s: {
                 c["variable"].replace("_", " "): c["value"]
                 for c in CLAIMS
-                if c.get("kind") == "value"
-                and c.get("unit") == "mm"
-                and fe_scene_of(c.get("dataset")) == s
+                if c.get("kind") == "value" and c.get("unit") == "mm" and fe_scene_of(c.get("dataset")) == s
             }
             for s in FE_SCENES
         },
