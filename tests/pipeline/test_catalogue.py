@@ -179,7 +179,7 @@ def test_a_claim_outside_the_catalogue_is_refused_naming_its_row_and_key(tmp_pat
     row = {**row, "id": "s9_off_catalogue", "dataset": "results/fe/lower_face_drop/section9_no_such_scene.nc"}
     (tmp_path / "rows.yaml").write_text(yaml.safe_dump([row]))
     claims = load_claims([tmp_path / "rows.yaml"])
-    refused = r"rows\.yaml: claim s9_off_catalogue: dataset: .*not a catalogue path"
+    refused = r"rows\.yaml: claim s9_off_catalogue: dataset: no rule writes .*no_such_scene.*catalogue path"
     with pytest.raises(ClaimsError, match=refused):
         check_claims(claims, config["claims"]["readings"], catalogue=paths.catalogue(config))
 

@@ -86,7 +86,7 @@ def check_claims(
     for c, key, ref, path in claimed_paths(claims, readings):
         where = f"{c['_file']}: claim {c['id']}: {key}"
         if catalogue is not None and path not in catalogue:
-            raise ClaimsError(f"{where}: {path!r} is not a catalogue path (stickslip.catalogue): no such run")
+            raise ClaimsError(f"{where}: no rule writes {path!r}: not a catalogue path (stickslip.catalogue)")
         if producible is not None and not producible(path):
             raise ClaimsError(f"{where}: no rule writes {path!r}")
         known_vars = variables_of(path) if variables_of is not None else None
