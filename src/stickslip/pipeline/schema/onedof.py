@@ -111,7 +111,8 @@ class Scene(RunLengths):
     law: Law | None = None  # any friction law replacing the reading's (as in sweeps; switch solver only)
 
 
-#: The paper figures a figure of the pipeline shows (the catalogue's ``figures`` of its runs' entries).
+#: The paper figures a figure of the pipeline shows (the catalogue's ``figures`` of its runs' entries); none
+#: for a figure of one's own scene.
 PaperFigures = list[Annotated[int, Field(ge=1, le=36, description="a figure of the paper (1-36)")]]
 
 
@@ -161,7 +162,7 @@ class Sweep(Section):
 
 class SweepFigure(Section):
     title: str | None = None
-    paper_figures: Annotated[PaperFigures, Field(min_length=1)]
+    paper_figures: PaperFigures = []
     sweep: str
     readings: Names
 
@@ -194,7 +195,7 @@ class FrictionTable(Section):
 
 class Figure(Section):
     title: str | None = None
-    paper_figures: Annotated[PaperFigures, Field(min_length=1)]
+    paper_figures: PaperFigures = []
     scene: str
     plot: Literal["timeseries", "phase", "velocity"] | None = None
     readings: Names
