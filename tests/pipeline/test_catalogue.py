@@ -77,7 +77,8 @@ def snakemake_literals(source: str) -> list[tuple[int, str]]:
 
 
 def scanned_files() -> list[str]:
-    py = [*ROOT.glob("src/**/*.py"), *ROOT.glob("workflow/**/*.py"), *ROOT.glob("notebooks/*.py")]
+    folders = ("src", "workflow", "notebooks", "benchmarks")
+    py = [p for folder in folders for p in ROOT.glob(f"{folder}/**/*.py")]
     smk = [*ROOT.glob("workflow/rules/*.smk"), ROOT / "Snakefile"]
     return sorted(str(p.relative_to(ROOT)) for p in py + smk if p.is_file())
 
