@@ -124,7 +124,7 @@ def check_inputs_producible(rules):
         for path in notebook_inputs(name):
             if paths.is_result(path) and path not in CATALOGUE:
                 raise ClaimsError(
-                    f"notebooks.{name}.inputs: no rule writes {path!r}: not a catalogue path (stickslip.catalogue)"
+                    f"notebooks.{name}.inputs: {path!r} is not a catalogue path (stickslip.catalogue): no rule writes it"
                 )
             # a source file of the project (a claims file) may be read as it is; a result must be made
             if not producible(path) and (paths.is_result(path) or not Path(path).is_file()):
