@@ -24,6 +24,7 @@ from pathlib import Path
 
 import yaml
 
+from stickslip import catalogue as paths
 from stickslip.studies.specs import dense_map
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -95,7 +96,7 @@ def main():
             f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} at start"
         )
         floor = floor_cost(dm)
-        target = f"results/dense_map/{args.map}.nc"
+        target = paths.dense_map(args.map)
         rows = []
         for jobs in args.jobs:
             shutil.rmtree(work / "results", ignore_errors=True)

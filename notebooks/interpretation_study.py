@@ -36,6 +36,7 @@ import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.claims.rows import STATUSES
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import (
@@ -51,11 +52,11 @@ from stickslip.presentation.plots import STATUS_COLOUR, reading_colours
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)
 CRIT_READINGS = PARAMS.get("critical_speed_readings") or READINGS
-ranking = pd.read_csv("results/claims/reading_ranking.csv")
-unreproduced = pd.read_csv("results/claims/unreproduced_claims.csv")
-critical = pd.read_csv("results/onedof/critical_speed.csv")
-deviations = claims_frame("results/claims/deviations.csv")
-continuation = {r: read_dataset(f"results/onedof/critical_speed/{r}.nc") for r in CRIT_READINGS}
+ranking = pd.read_csv(paths.reading_ranking("csv"))
+unreproduced = pd.read_csv(paths.unreproduced_claims())
+critical = pd.read_csv(paths.critical_speed_summary("csv"))
+deviations = claims_frame(paths.claims_table())
+continuation = {r: read_dataset(paths.critical_speed(r)) for r in CRIT_READINGS}
 
 # %% [markdown]
 # ## Scorecard: every claim of the paper

@@ -50,15 +50,16 @@ import numpy as np
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 
-summary = pd.read_csv("results/inverse/summary.csv")
-conflicts = pd.read_csv("results/inverse/conflicts.csv")
-numbers = pd.read_csv("results/inverse/numbers.csv")
-hypotheses = pd.read_csv("results/inverse/hypotheses.csv")
-ranking = pd.read_csv("results/inverse/ranking.csv")
+summary = pd.read_csv(paths.inverse_table("summary"))
+conflicts = pd.read_csv(paths.inverse_table("conflicts"))
+numbers = pd.read_csv(paths.inverse_table("numbers"))
+hypotheses = pd.read_csv(paths.inverse_table("hypotheses"))
+ranking = pd.read_csv(paths.inverse_table("ranking"))
 FIGURES = list(dict.fromkeys(summary["figure"]))
-data = {name: read_dataset(f"results/inverse/{name}.nc") for name in FIGURES}
+data = {name: read_dataset(paths.inverse_dataset(name)) for name in FIGURES}
 settings = json.loads(data["joint"].attrs["settings"])
 display(Markdown(f"Study run in **{settings['mode']}** mode: {settings}"))
 
@@ -331,7 +332,7 @@ display(pd.DataFrame(rows).round(3).style.hide(axis="index"))
 for name in settings.get("corner", []):  # the figures whose corner plots this build drew
     for fam in data[name].family.values:
         display(Markdown(f"**{name} / {fam}**"))
-        display(Image(filename=f"results/inverse/corner/{name}_{fam}.png", width=640))
+        display(Image(filename=paths.inverse_corner(name, fam), width=640))
 
 # %% [markdown]
 # ## 6. What the fit shows

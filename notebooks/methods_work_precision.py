@@ -29,19 +29,20 @@ import pandas as pd
 import xarray as xr
 from IPython.display import HTML, Image, Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.presentation.notebook import SUMMARY_STYLE
 from stickslip.presentation.plots import STATUS_COLOUR
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
-ROOT = os.getcwd() if os.path.isdir("results") else os.path.abspath(os.path.join(HERE, ".."))
+ROOT = os.getcwd() if os.path.isdir(paths.RESULTS) else os.path.abspath(os.path.join(HERE, ".."))
 
 
 def show(figure):
     """The pipeline's own chart (rule methods_figures): drawn once, shown here."""
-    display(Image(filename=os.path.join(ROOT, "results", "figures", "methods", f"{figure}.png")))
+    display(Image(filename=os.path.join(ROOT, paths.figure("methods", figure))))
 
 
-files = sorted(glob.glob(os.path.join(ROOT, "results", "methods", "*_work_precision.nc")))
+files = sorted(glob.glob(os.path.join(ROOT, paths.methods_work_precision("*"))))
 display(Markdown("Scenes: " + ", ".join(f"`{os.path.basename(f)}`" for f in files)))
 
 # %% [markdown]
@@ -141,7 +142,7 @@ for f in files:
 # Colour = most severe failure per (parameter value, method setting); see `stickslip.analysis.failure`.
 
 # %%
-fm = os.path.join(ROOT, "results", "methods", "failure_map.nc")
+fm = os.path.join(ROOT, paths.methods_failure_map())
 with xr.open_dataset(fm) as ds:
     ds = ds.load()
 show("failure_map")

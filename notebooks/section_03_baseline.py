@@ -32,6 +32,7 @@
 import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import claims_frame, scorecard, verdicts
 from stickslip.presentation.plots import mark_reported
@@ -52,9 +53,9 @@ FIG2 = PARAMS.get("figures", {}).get(
     },
 )
 READINGS = FIG2["readings"]
-data = {(r, m): read_dataset(f"results/onedof/fig02/{r}/{m}.nc") for r in READINGS for m in FIG2["methods"]}
+data = {(r, m): read_dataset(paths.onedof_dataset("fig02", r, m)) for r in READINGS for m in FIG2["methods"]}
 STYLES = {"exact": dict(color="C0", lw=1.5), "ode45": dict(color="C3", lw=0.9, ls="--")}
-claims = claims_frame("results/claims/deviations.csv", sections=["3", "5"])
+claims = claims_frame(paths.claims_table(), sections=["3", "5"])
 claims = claims[claims["figure"].str.startswith("Fig. 2") | claims["figure"].str.startswith("Fig. 3")]
 
 # %% [markdown]

@@ -31,16 +31,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import claims_frame, claims_readings, scorecard, verdicts
 from stickslip.presentation.plots import eq6_figure, reading_colours, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)
-eq6 = read_dataset("results/onedof/fig04/eq6.nc")
-fig02 = {r: read_dataset(f"results/onedof/fig02/{r}/exact.nc") for r in READINGS}
-belt = {r: read_dataset(f"results/onedof/sweeps/belt_speed_dense/{r}.nc") for r in READINGS}
-claims = claims_frame("results/claims/deviations.csv", sections=["4"])
+eq6 = read_dataset(paths.eq6_curve())
+fig02 = {r: read_dataset(paths.onedof_dataset("fig02", r, "exact")) for r in READINGS}
+belt = {r: read_dataset(paths.sweep_dataset("belt_speed", r, dense=True)) for r in READINGS}
+claims = claims_frame(paths.claims_table(), sections=["4"])
 
 # %% [markdown]
 # ## Scorecard: Section 4

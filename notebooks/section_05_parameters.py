@@ -37,6 +37,7 @@
 # %%
 from IPython.display import Image, Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import claims_frame, reported_value, scorecard, styled_claims, verdicts
 from stickslip.presentation.plots import (
@@ -69,7 +70,7 @@ CLAIMS_READINGS = PARAMS.get("claims_readings", _DEFAULT_R)
 def scene_data(fig):
     spec = FIGS[fig]
     return {
-        r: {m: read_dataset(f"results/onedof/{spec['scene']}/{r}/{m}.nc") for m in spec["methods"]}
+        r: {m: read_dataset(paths.onedof_dataset(spec["scene"], r, m)) for m in spec["methods"]}
         for r in spec["readings"]
     }
 
@@ -78,8 +79,8 @@ def exact_of(data):
     return {r: d["exact"] for r, d in data.items() if "exact" in d}
 
 
-baseline = {r: read_dataset(f"results/onedof/fig02/{r}/exact.nc") for r in CLAIMS_READINGS}
-claims = claims_frame("results/claims/deviations.csv", sections=["5"])
+baseline = {r: read_dataset(paths.onedof_dataset("fig02", r, "exact")) for r in CLAIMS_READINGS}
+claims = claims_frame(paths.claims_table(), sections=["5"])
 
 
 def rep(claim):
@@ -246,8 +247,8 @@ sweeps = {}
 for name, spec in SWEEP_FIGS.items():
     sweeps[name] = {
         r: (
-            read_dataset(f"results/onedof/sweeps/{spec['sweep']}/{r}.nc"),
-            read_dataset(f"results/onedof/sweeps/{spec['sweep']}_dense/{r}.nc"),
+            read_dataset(paths.sweep_dataset(spec["sweep"], r)),
+            read_dataset(paths.sweep_dataset(spec["sweep"], r, dense=True)),
         )
         for r in spec["readings"]
     }
@@ -256,7 +257,7 @@ for name, spec in SWEEP_FIGS.items():
 def show_sweep(name):
     spec = SWEEP_FIGS[name]
     for r in sweeps[name]:  # the pipeline's figure of this sweep and reading (rule sweep_figure_<name>)
-        display(Image(filename=f"results/figures/{name}/{r}.png"))
+        display(Image(filename=paths.figure(name, r)))
     reported = [
         (var, x, rep(c), f"paper {rep(c):g}") for var, x, c in SWEEP_TEXT.get(name, []) if rep(c) is not None
     ]

@@ -29,6 +29,7 @@
 import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import claims_frame, scorecard, verdicts
 from stickslip.presentation.plots import readings_grid, run_failed, scalars_vs_reported
@@ -37,8 +38,8 @@ PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a
 _DEFAULT_R = ["consistent_caption", "consistent_text", "plateau_caption", "plateau_text"]
 FIG15 = PARAMS.get("figures", {}).get("fig15", {"readings": _DEFAULT_R, "methods": ["exact", "ode45"]})
 READINGS = FIG15["readings"]
-data = {r: {m: read_dataset(f"results/onedof/fig15/{r}/{m}.nc") for m in FIG15["methods"]} for r in READINGS}
-claims = claims_frame("results/claims/deviations.csv", sections=["6"])
+data = {r: {m: read_dataset(paths.onedof_dataset("fig15", r, m)) for m in FIG15["methods"]} for r in READINGS}
+claims = claims_frame(paths.claims_table(), sections=["6"])
 BELT_STOP = 0.5 / 0.025  # the caption's V_b = 0.5 - 0.025 t reaches zero here [s]
 
 # %% [markdown]

@@ -35,15 +35,16 @@ import json
 import matplotlib.pyplot as plt
 from IPython.display import Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 from stickslip.presentation.notebook import claims_frame, claims_readings, reported_value, scorecard, verdicts
 from stickslip.presentation.plots import mark_reported, run_failed, scalars_vs_reported
 
 PARAMS = globals().get("PARAMS", {})  # injected by the pipeline; defaults for a standalone run
 READINGS = claims_readings(PARAMS)
-table = read_dataset("results/onedof/friction_mu_vr.nc")
-fig02 = {r: read_dataset(f"results/onedof/fig02/{r}/exact.nc") for r in READINGS}
-claims = claims_frame("results/claims/deviations.csv", sections=["7"])
+table = read_dataset(paths.friction_table("nc"))
+fig02 = {r: read_dataset(paths.onedof_dataset("fig02", r, "exact")) for r in READINGS}
+claims = claims_frame(paths.claims_table(), sections=["7"])
 MU_STATIC = reported_value(claims, "s7_mu_static") or 0.5
 MU_PLATEAU = reported_value(claims, "s7_mu_plateau") or 0.4
 V_PLATEAU = 0.6  # mm/s, "until the relative velocity 0.6mm/sec"

@@ -39,6 +39,7 @@ import xarray as xr
 import yaml
 from IPython.display import Image, Markdown, display
 
+from stickslip import catalogue as paths
 from stickslip.presentation.notebook import (
     claims_frame,
     number_or_words,
@@ -48,18 +49,18 @@ from stickslip.presentation.notebook import (
 )
 from stickslip.presentation.report import paper_figures
 
-claims = claims_frame("results/claims/deviations.csv", sections=["9", "10", "11", "12"])
-per_reading = pd.read_csv("results/fe/readings_claims.csv", dtype={"section": str})
-comparison = pd.read_csv("results/fe/model_comparison.csv").fillna({"note": ""})
-inc = xr.load_dataset("results/fe/continuum_increments.nc")
-conv = xr.load_dataset("results/fe/convergence.nc")
-stab = xr.load_dataset("results/fe/stability.nc")
+claims = claims_frame(paths.claims_table(), sections=["9", "10", "11", "12"])
+per_reading = pd.read_csv(paths.fe_readings_claims(), dtype={"section": str})
+comparison = pd.read_csv(paths.fe_model_comparison("csv")).fillna({"note": ""})
+inc = xr.load_dataset(paths.fe_study("continuum_increments"))
+conv = xr.load_dataset(paths.fe_study("convergence"))
+stab = xr.load_dataset(paths.fe_study("stability"))
 
 
 def paper_figure(number):
     """The pipeline's image of one paper figure, then the paper's numbers its claims name (and ours)."""
     display(Markdown(f"### Fig. {number}"))
-    display(Image(f"results/figures/fe/fig{number}.png"))
+    display(Image(paths.figure("fe", f"fig{number}")))
     rows = claims[claims["figure"].map(lambda f: number in paper_figures(f))]
     if len(rows):
         display(styled_claims(rows))
@@ -68,7 +69,7 @@ def paper_figure(number):
 def scene_figures(*scenes):
     """The beam against the continuum strip, per scene, over the continuum's window."""
     for scene in scenes:
-        display(Image(f"results/figures/fe/{scene}.png"))
+        display(Image(paths.figure("fe", scene)))
 
 
 # %% [markdown]
@@ -146,8 +147,8 @@ display(tab.style.format("{:,.0f}"))
 # with the project's models (the scene decks in `results/fe/inp/` are for ABAQUS/Explicit).
 
 # %%
-peer = pd.read_csv("results/fe/peer_calculix.csv")
-peer_ds = xr.load_dataset("results/fe/peer_calculix.nc")
+peer = pd.read_csv(paths.fe_peer_calculix("csv"))
+peer_ds = xr.load_dataset(paths.fe_peer_calculix("nc"))
 print("element:", peer["calculix_element"].iloc[0], "-", peer["element_reason"].iloc[0])
 display(
     peer.drop(columns=["calculix_element", "element_reason", "long_name"])
@@ -252,7 +253,7 @@ scene_figures("section12_angle30_15p2rpm", "section12_angle30_0p5mm_s")
 # reading (the pinned status is the default reading's; the other readings show what they give).
 
 # %%
-display(Image("results/figures/fe/readings.png"))
+display(Image(paths.figure("fe", "readings")))
 display(status_counts(per_reading))
 wide = per_reading.pivot_table(index="claim", columns="reading", values="status", aggfunc="first")
 COLOURS = {"reproduced": "background-color: #d8f0d8", "deviates": "background-color: #f6d5d5"}
@@ -266,7 +267,7 @@ display(wide.style.map(lambda s: COLOURS.get(s, "")))
 # by the 12.9 kHz chatter, whose details move with the mesh and step) and is reported with its spread.
 
 # %%
-display(Image("results/figures/fe/convergence.png"))
+display(Image(paths.figure("fe", "convergence")))
 QS = ("horizontal_amplitude", "mean_horizontal_displacement", "dominant_frequency", "stick_fraction")
 dev = {q: float(conv[f"{q}_max_deviation"]) for q in QS}
 display(pd.Series(dev, name="largest deviation on the two finest meshes").to_frame())
@@ -279,7 +280,7 @@ display(pd.Series(dev, name="largest deviation on the two finest meshes").to_fra
 # each cross-check is the frequency that actually grows in the transient and the difference of the rates.
 
 # %%
-display(Image("results/figures/fe/stability.png"))
+display(Image(paths.figure("fe", "stability")))
 cc = pd.DataFrame(
     {
         "angle [deg]": stab.crosscheck_angle.values,

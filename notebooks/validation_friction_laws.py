@@ -46,13 +46,14 @@ import pandas as pd
 from IPython.display import Markdown, display
 from matplotlib.ticker import NullFormatter
 
+from stickslip import catalogue as paths
 from stickslip.io.netcdf import read_dataset
 
 LAWS = ["affine", "coulomb", "stribeck", "rational", "tabulated"]
-peer_rows = pd.concat([pd.read_csv(f"results/validation/peer_{law}.csv") for law in LAWS], ignore_index=True)
-peer = read_dataset("results/validation/peer.nc")
-rt = read_dataset("results/validation/round_trip.nc").swap_dims(case="case_name")
-rt_rows = pd.read_csv("results/validation/round_trip.csv")
+peer_rows = pd.concat([pd.read_csv(paths.validation_peer_table(law)) for law in LAWS], ignore_index=True)
+peer = read_dataset(paths.validation_peer())
+rt = read_dataset(paths.validation_round_trip("nc")).swap_dims(case="case_name")
+rt_rows = pd.read_csv(paths.validation_round_trip("csv"))
 
 # %% [markdown]
 # ## Verdicts
@@ -258,8 +259,9 @@ display(
 # failure (×), not as a point.
 
 # %%
-METHOD_FILES = sorted(Path("results/validation").glob("methods_*.nc"))  # the laws config listed
-studies = {p.stem.removeprefix("methods_"): read_dataset(p) for p in METHOD_FILES}
+# the laws config listed (validation.methods_per_law.laws): whichever of the laws were built
+METHOD_FILES = {law: paths.validation_methods(law) for law in sorted(LAWS)}
+studies = {law: read_dataset(p) for law, p in METHOD_FILES.items() if Path(p).is_file()}
 fig, axes = plt.subplots(1, len(studies), figsize=(5.5 * len(studies) + 0.5, 4.2), sharey=True, squeeze=False)
 axes = axes[0]
 markers = {"sign_rk": "o", "smooth": "s", "switch": "D"}

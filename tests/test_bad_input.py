@@ -82,6 +82,19 @@ CASES = {
     "figure_plot_key_typo": ({"onedof": {"figures": {"fig03": {"plott": "phase"}}}}, ["fig03.plott"]),
     "figure_plot_value_typo": ({"onedof": {"figures": {"fig03": {"plot": "phse"}}}}, ["fig03.plot"]),
     "sweep_figure_typo": ({"onedof": {"sweep_figures": {"fig10": {"readngs": ["x"]}}}}, ["readngs"]),
+    # the paper-figure maps the catalogue reads: figures of the paper, scenes of the config
+    "figure_paper_figure_not_in_the_paper": (
+        {"onedof": {"figures": {"fig02": {"paper_figures": [37]}}}},
+        ["onedof.figures.fig02.paper_figures"],
+    ),
+    "fe_paper_figure_unknown_scene": (
+        {"fe": {"paper_figures": {21: ["section9_kinematic"]}}},
+        ["fe.paper_figures.21", "section9_kinematic"],
+    ),
+    "fe_paper_figure_not_beam_on_disc": (
+        {"fe": {"paper_figures": {20: ["section9_kinematic_15p2rpm"]}}},
+        ["fe.paper_figures", "20"],
+    ),
     "notebook_key_typo": ({"notebooks": {"section_03_baseline": {"figurs": ["fig02"]}}}, ["figurs"]),
     "claims_section_typo": ({"claims": {"cheque": True}}, ["claims.cheque"]),
     "claims_check_not_bool": ({"claims": {"check": "yes"}}, ["claims.check"]),
@@ -643,8 +656,8 @@ def test_claims_rows_that_contradict_the_config_or_the_pins_are_rejected(case, t
 
 
 def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_path):
+    from stickslip.catalogue import onedof_catalogue
     from stickslip.io.netcdf import run_dataset_variables
-    from stickslip.pipeline.catalogue import onedof_catalogue
 
     (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump([_with(VALUE_ROW, variable="max_displacment")]))
     claims = load_claims([tmp_path / "zz_broken.yaml"])

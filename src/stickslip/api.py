@@ -75,9 +75,10 @@ def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path
 
 def _validated(config: dict) -> dict:
     """The whole config checked as the Snakefile checks it (a beam-on-disc run: scenes, readings, cost)."""
+    from .catalogue import friction_table
     from .pipeline.config import validate_config
 
-    validate_config(config, producible=["results/onedof/friction_mu_vr.csv"])
+    validate_config(config, producible=[friction_table()])  # the one input that is some rule's output
     return config
 
 
@@ -182,8 +183,8 @@ def simulate(
     built over this run's config. ``output`` writes the dataset with the pipeline's writer and returns it as
     read back (checksum verified). ``config``: the project config already loaded (``load_project_config``)
     instead of reading ``configfiles``. A bad value raises ``ConfigError`` naming its config key."""
+    from .catalogue import onedof_dataset
     from .ensemble import ensemble_dataset
-    from .pipeline.catalogue import onedof_dataset
     from .studies.onedof import scene_run_dataset
     from .studies.specs import PERTURBED_FIELDS, run_spec
 
@@ -283,6 +284,7 @@ def simulate_fe(
     friction law is the Fig. 17 table (``fe.friction_table``, written by rule friction_table)."""
     from dataclasses import replace
 
+    from . import catalogue as paths
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
     from .fe.params import FrictionTable
     from .fe.quantities import INTERPRETATION
@@ -314,7 +316,7 @@ def simulate_fe(
     if not table.is_file():
         raise FileNotFoundError(
             f"fe.friction_table: {table} does not exist; build it first: "
-            "`.venv/bin/snakemake -j2 results/onedof/friction_mu_vr.csv`"
+            f"`.venv/bin/snakemake -j2 {paths.friction_table()}`"
         )
     friction = FrictionTable.from_csv(table)
     if model == "continuum":
@@ -334,7 +336,7 @@ def simulate_fe(
         spec = replace(spec, step_factor=HALF_STEP)
     # signs drawn by name: the scene's dataset path as rule fe_reading writes it
     ds = ensemble_dataset(
-        build, mapping, spec, run_id=f"results/fe/{reading}/{name}.nc", fields=PERTURBED_FIELDS
+        build, mapping, spec, run_id=paths.fe_scene(reading, name), fields=PERTURBED_FIELDS
     )
     if ensemble:
         ds = apply_step_halving(ds, step_member_values(ds))

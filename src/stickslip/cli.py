@@ -18,6 +18,8 @@ import sys
 import time
 from pathlib import Path
 
+from . import catalogue as paths
+
 #: 1-DOF parameters as options: option -> config key (``onedof.scenes.<scene>.params.<key>``).
 PARAMS = {
     "mass": "M [kg]",
@@ -148,7 +150,7 @@ def build_parser() -> argparse.ArgumentParser:
     claims = sub.add_parser(
         "claims",
         help="a paper figure's claims, verdict and reasons (after a build)",
-        description="Reads results/claims/deviations.csv (rule claims_table) and the claims files.",
+        description=f"Reads {paths.claims_table()} (rule claims_table) and the claims files.",
     )
     claims.add_argument("--figure", type=int, required=True, help="paper figure number")
     claims.add_argument("--reading", help="show this reading (default: the figure's best)")
@@ -178,8 +180,8 @@ def _metrics(ds) -> dict:
 
 def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]:
     """The baseline's metrics in ``reading``: from the build when its dataset exists, else computed."""
+    from .catalogue import onedof_dataset
     from .io.netcdf import read_dataset
-    from .pipeline.catalogue import onedof_dataset
 
     base = config["onedof"]["baseline"]
     path = root / onedof_dataset(base["scene"], reading, base["method"])
@@ -193,7 +195,7 @@ def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]
 
 def paper_values(config: dict, root: Path) -> dict[str, list[tuple[float, str]]]:
     """The paper's numbers for the baseline run: every ``value`` claim on the baseline's dataset."""
-    from .pipeline.catalogue import onedof_dataset
+    from .catalogue import onedof_dataset
 
     base = config["onedof"]["baseline"]
     target = onedof_dataset(base["scene"], "{reading}", base["method"])
@@ -337,11 +339,11 @@ def cmd_claims(args) -> int:
     from .presentation.verdicts import VERDICT_RULE, is_evidence, rows_in_reading, tally
 
     root = api.project_root(args.root)
-    table = root / "results" / "claims" / "deviations.csv"
+    table = root / paths.claims_table()
     if not table.is_file():
         raise UsageError(
             f"--figure: {table} does not exist: build the claims table first "
-            "(`make figures`, or `.venv/bin/snakemake -j2 results/claims/deviations.csv`)"
+            f"(`make figures`, or `.venv/bin/snakemake -j2 {paths.claims_table()}`)"
         )
     ids = {
         row["id"]

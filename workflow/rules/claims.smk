@@ -7,19 +7,19 @@ rule claims_table:
         claims=CLAIM_FILES,
         datasets=sorted(CLAIMED_DATASETS),
         # which beam-on-disc rows the beam may decide (stickslip.claims.models)
-        comparison="results/fe/model_comparison.csv",
+        comparison=paths.fe_model_comparison("csv"),
     output:
         csv=report(
-            "results/claims/deviations.csv",
+            paths.claims_table("csv"),
             caption=REPORT_CAPTION_FILE,
             category="Claims",
             labels={"table": "deviations"},
         ),
-        md="results/claims/deviations.md",
+        md=paths.claims_table("md"),
     log:
-        "results/logs/claims_table.log",
+        paths.log("claims_table"),
     benchmark:
-        "results/benchmarks/claims_table/all.tsv"
+        paths.benchmark("claims_table", "all")
     conda:
         CONDA_ENV
     params:
@@ -31,19 +31,19 @@ rule claims_table:
 rule claims_check:
     """Fails when a measured status differs from the one pinned in the claims files."""
     input:
-        "results/claims/deviations.csv",
+        paths.claims_table(),
     output:
-        touch("results/claims/check.ok"),
+        touch(paths.claims_check()),
     log:
-        "results/logs/claims_check.log",
+        paths.log("claims_check"),
     benchmark:
-        "results/benchmarks/claims_check/all.tsv"
+        paths.benchmark("claims_check", "all")
     conda:
         CONDA_ENV
     script:
         "../scripts/claims_check.py"
 
 
-ALL_TARGETS.append("results/claims/deviations.csv")
+ALL_TARGETS.append(paths.claims_table())
 if config["claims"].get("check", True):  # the small CI config measures other numbers: no pins apply
-    ALL_TARGETS.append("results/claims/check.ok")
+    ALL_TARGETS.append(paths.claims_check())

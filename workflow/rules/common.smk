@@ -8,13 +8,14 @@ from pathlib import Path
 from stickslip.pipeline.config import drop_removed, validate_config
 from stickslip.claims.load import ClaimsError, check_claims, load_claims, required_datasets
 from stickslip.io.netcdf import run_dataset_variables
-from stickslip.pipeline.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
+import stickslip.catalogue as paths
+from stickslip.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
 from stickslip.studies.fe_config import effective_fe_config, job_config as fe_job_config
 from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.
-PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
+PRODUCIBLE = [paths.friction_table("csv")]
 
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
@@ -31,9 +32,12 @@ CLAIM_IDS_FILE = "config/claims/ids.txt"
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 #: The claims rows, read once at parse time for every rule that needs them.
 CLAIMS = load_claims(CLAIM_FILES)
+#: Every product the config makes, path -> Entry (stickslip.catalogue): a claimed path must be one of them.
+CATALOGUE = paths.catalogue(config)
 check_claims(
     CLAIMS,
     config["claims"]["readings"],
+    catalogue=CATALOGUE,
     known_readings=list(config["onedof"]["readings"]) + list(config["fe"]["readings"]),
     pinned_ids=[
         line.strip()
@@ -74,7 +78,7 @@ ONEDOF_CATALOGUE = onedof_catalogue(ONEDOF)
 
 #: One caption template for every figure of `snakemake --report` (written by rule report_captions). An
 #: absolute path under the working directory, since report() resolves captions against the rules folder.
-REPORT_CAPTIONS = "results/report/captions.rst"
+REPORT_CAPTIONS = paths.report_captions()
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
 
 
@@ -118,8 +122,12 @@ def check_inputs_producible(rules):
     )
     for name in config["notebooks"]:
         for path in notebook_inputs(name):
+            if paths.is_result(path) and path not in CATALOGUE:
+                raise ClaimsError(
+                    f"notebooks.{name}.inputs: {path!r} is not a catalogue path (stickslip.catalogue): no rule writes it"
+                )
             # a source file of the project (a claims file) may be read as it is; a result must be made
-            if not producible(path) and (path.startswith("results/") or not Path(path).is_file()):
+            if not producible(path) and (paths.is_result(path) or not Path(path).is_file()):
                 raise ClaimsError(f"notebooks.{name}.inputs: no rule writes {path!r}")
 
 
@@ -152,7 +160,7 @@ def onedof_runs():
     wanted.add(onedof_dataset(table["scene"], table["reading"], table["method"]))
     runs = {}
     for run in filter(None, map(ONEDOF_CATALOGUE.get, wanted)):
-        runs.setdefault(run.scene, set()).add((run.reading, run.method))
+        runs.setdefault(run.name("scene"), set()).add((run.name("reading"), run.name("method")))
     return {scene: sorted(pairs) for scene, pairs in sorted(runs.items())}
 
 
@@ -197,25 +205,30 @@ def notebook_inputs(name):
         files += [path.format(**{key: r}) for r in expand_over[key]] if key else [path]
     for fig in spec.get("figures", []):
         files += figure_datasets(fig)
-        files += [f"results/figures/{fig}/{r}.png" for r in ONEDOF["figures"][fig]["readings"]]
+        files += [paths.figure(fig, r) for r in ONEDOF["figures"][fig]["readings"]]
     for fig in spec.get("sweep_figures", []):
         sw = ONEDOF["sweep_figures"][fig]
         files += [sweep_dataset(sw["sweep"], r, d) for r in sw["readings"] for d in (False, True)]
-        files += [f"results/figures/{fig}/{r}.png" for r in sw["readings"]]
-    return list(
-        dict.fromkeys(files + ["results/claims/deviations.csv", "results/claims/figure_verdicts.csv"])
-    )
+        files += [paths.figure(fig, r) for r in sw["readings"]]
+    return list(dict.fromkeys(files + [paths.claims_table(), paths.figure_verdicts()]))
+
+
+def fe_scene_of(path):
+    """The FE scene a claim's dataset is a run of (beam in any reading, continuum, continuum window), None
+    for any other dataset: looked up in the catalogue."""
+    entry = CATALOGUE.get(path) if isinstance(path, str) else None
+    fe_kinds = ("fe_scene", "fe_continuum", "fe_continuum_window")
+    return entry.name("scene") if entry is not None and entry.kind in fe_kinds else None
 
 
 # -- sweeps and maps ----------------------------------------------------------------------------------
 
 
 def dense_map_chunks(wildcards):
-    return expand(
-        "results/dense_map/chunks/{map}/{chunk}.nc",
-        map=wildcards.map,
-        chunk=range(dense_map(config, wildcards.map).chunks),
-    )
+    return [
+        paths.dense_map_chunk(wildcards.map, chunk)
+        for chunk in range(dense_map(config, wildcards.map).chunks)
+    ]
 
 
 def dense_map_subconfig(name):

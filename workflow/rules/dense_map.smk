@@ -9,11 +9,11 @@ DENSE_RESOURCES = config["dense_map"]["resources"]
 rule dense_map_chunk:
     """Metrics of one contiguous slice of a map's grid (flattened C order)."""
     output:
-        temp("results/dense_map/chunks/{map}/{chunk}.nc"),
+        temp(paths.dense_map_chunk("{map}", "{chunk}")),
     log:
-        "results/logs/dense_map_chunk/{map}/{chunk}.log",
+        paths.log("dense_map_chunk", "{map}/{chunk}"),
     benchmark:
-        "results/benchmarks/dense_map_chunk/{map}/{chunk}.tsv"
+        paths.benchmark("dense_map_chunk", "{map}/{chunk}")
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
         chunk=r"\d+",
@@ -33,11 +33,11 @@ rule dense_map_merge:
     input:
         dense_map_chunks,
     output:
-        "results/dense_map/{map}.nc",
+        paths.dense_map("{map}"),
     log:
-        "results/logs/dense_map_merge/{map}.log",
+        paths.log("dense_map_merge", "{map}"),
     benchmark:
-        "results/benchmarks/dense_map_merge/{map}.tsv"
+        paths.benchmark("dense_map_merge", "{map}")
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
     conda:
@@ -54,13 +54,13 @@ rule dense_map_merge:
 rule dense_map_figure:
     """One panel per metric over the two first swept parameters; failed runs are masked, not plotted."""
     input:
-        "results/dense_map/{map}.nc",
+        paths.dense_map("{map}"),
     output:
-        "results/figures/dense_map/{map}.png",
+        paths.figure("dense_map", "{map}"),
     log:
-        "results/logs/dense_map_figure/{map}.log",
+        paths.log("dense_map_figure", "{map}"),
     benchmark:
-        "results/benchmarks/dense_map_figure/{map}.tsv"
+        paths.benchmark("dense_map_figure", "{map}")
     wildcard_constraints:
         map="|".join(DENSE_MAPS),
     conda:
@@ -75,5 +75,5 @@ rule dense_map_figure:
         "../scripts/dense_map_figure.py"
 
 
-ALL_TARGETS.extend(f"results/dense_map/{name}.nc" for name in DENSE_MAPS)
-ALL_TARGETS.extend(f"results/figures/dense_map/{name}.png" for name in DENSE_MAPS)
+ALL_TARGETS.extend(paths.dense_map(name) for name in DENSE_MAPS)
+ALL_TARGETS.extend(paths.figure("dense_map", name) for name in DENSE_MAPS)

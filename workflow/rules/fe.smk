@@ -7,12 +7,18 @@ FE_READINGS = list(FE["readings"])
 FE_DEFAULT_READING = FE_READINGS[0]
 FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
-FE_STUDIES = ["convergence", "stability"]
+FE_STUDIES = list(paths.FE_STUDIES)
 #: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
 #: resolved (stickslip.studies.fe_config.job_config): a value re-runs exactly the jobs that read it.
 FE_EFFECTIVE = effective_fe_config(config)
 #: The scenes the studies start from (sweeps, convergence, stability, increments).
 FE_STUDY_SECTIONS = ("sweeps", "convergence", "stability", "increments")
+#: Every scene under every reading, each reading's cross-scene ratios after its scenes.
+FE_SCENE_DATASETS = [paths.fe_scene(r, s) for r in FE_READINGS for s in FE_SCENES] + [
+    paths.fe_cross_scene(r) for r in FE_READINGS
+]
+#: One figure per paper figure of Sections 9-12.
+FE_PAPER_FIGURE_PNGS = [paths.figure("fe", f"fig{n}") for n in paths.fe_paper_figure_numbers()]
 FE_STUDY_BASES = sorted(
     {sw["base"] for sw in FE["sweeps"].values()} | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
 )
@@ -24,12 +30,12 @@ rule fe_reading:
     input:
         friction=FE_FRICTION,
     output:
-        scenes=expand("results/fe/{{fe_reading}}/{scene}.nc", scene=FE_SCENES),
-        cross="results/fe/{fe_reading}/cross_scene.nc",
+        scenes=[paths.fe_scene("{fe_reading}", s) for s in FE_SCENES],
+        cross=paths.fe_cross_scene("{fe_reading}"),
     log:
-        "results/logs/fe_reading/{fe_reading}.log",
+        paths.log("fe_reading", "{fe_reading}"),
     benchmark:
-        "results/benchmarks/fe_reading/{fe_reading}.tsv"
+        paths.benchmark("fe_reading", "{fe_reading}")
     wildcard_constraints:
         fe_reading="|".join(FE_READINGS),
     priority: PRIORITY["fe_reading"]
@@ -50,14 +56,14 @@ rule fe_studies:
     input:
         friction=FE_FRICTION,
     output:
-        sweeps=expand("results/fe/{sweep}.nc", sweep=FE_SWEEPS),
-        convergence="results/fe/convergence.nc",
-        stability="results/fe/stability.nc",
-        increments="results/fe/continuum_increments.nc",
+        sweeps=[paths.fe_study(s) for s in FE_SWEEPS],
+        convergence=paths.fe_study("convergence"),
+        stability=paths.fe_study("stability"),
+        increments=paths.fe_study("continuum_increments"),
     log:
-        "results/logs/fe_studies/studies.log",
+        paths.log("fe_studies", "studies"),
     benchmark:
-        "results/benchmarks/fe_studies/studies.tsv"
+        paths.benchmark("fe_studies", "studies")
     priority: PRIORITY["fe_studies"]
     conda:
         CONDA_ENV
@@ -69,11 +75,8 @@ rule fe_studies:
 
 
 #: FITS of the tip support to the paper's Fig. 21 centre, labelled as fits: one per disc speed (the fitted
-#: stiffness is the same closed form; the speed decides the growth claims)
-FE_SETUP_FITS = {
-    "setup_fit": "section11_penalty_15p2rpm",
-    "setup_fit_0p5mm_s": "section11_penalty_0p5mm_s",
-}
+#: stiffness is the same closed form; the speed decides the growth claims). Dataset name -> base scene.
+FE_SETUP_FITS = paths.FE_SETUP_FITS
 
 
 rule fe_setup_fit:
@@ -82,11 +85,11 @@ rule fe_setup_fit:
     input:
         friction=FE_FRICTION,
     output:
-        "results/fe/{fe_fit}.nc",
+        paths.fe_study("{fe_fit}"),
     log:
-        "results/logs/fe_setup_fit/{fe_fit}.log",
+        paths.log("fe_setup_fit", "{fe_fit}"),
     benchmark:
-        "results/benchmarks/fe_setup_fit/{fe_fit}.tsv"
+        paths.benchmark("fe_setup_fit", "{fe_fit}")
     wildcard_constraints:
         fe_fit="|".join(FE_SETUP_FITS),
     priority: PRIORITY["fe_studies"]
@@ -111,11 +114,11 @@ rule fe_continuum_window:
     input:
         friction=FE_FRICTION,
     output:
-        "results/fe/continuum_window/{scene}.nc",
+        paths.fe_continuum_window("{scene}"),
     log:
-        "results/logs/fe_continuum_window/{scene}.log",
+        paths.log("fe_continuum_window", "{scene}"),
     benchmark:
-        "results/benchmarks/fe_continuum_window/{scene}.tsv"
+        paths.benchmark("fe_continuum_window", "{scene}")
     wildcard_constraints:
         scene="|".join(FE_WINDOW_SCENES),
     priority: PRIORITY["fe_continuum_window"]
@@ -134,16 +137,16 @@ rule fe_model_comparison:
     claim's window the continuum runs of fe_continuum_window against the default reading's beam."""
     input:
         friction=FE_FRICTION,
-        window=expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES),
-        beam=expand(f"results/fe/{FE_DEFAULT_READING}/{{scene}}.nc", scene=FE_WINDOW_SCENES),
+        window=[paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES],
+        beam=[paths.fe_scene(FE_DEFAULT_READING, s) for s in FE_WINDOW_SCENES],
     output:
-        continuum=expand("results/fe/continuum/{scene}.nc", scene=FE_SCENES),
-        table="results/fe/model_comparison.csv",
-        dataset="results/fe/model_comparison.nc",
+        continuum=[paths.fe_continuum(s) for s in FE_SCENES],
+        table=paths.fe_model_comparison("csv"),
+        dataset=paths.fe_model_comparison("nc"),
     log:
-        "results/logs/fe_model_comparison/model_comparison.log",
+        paths.log("fe_model_comparison", "model_comparison"),
     benchmark:
-        "results/benchmarks/fe_model_comparison/model_comparison.tsv"
+        paths.benchmark("fe_model_comparison", "model_comparison")
     priority: PRIORITY["fe_model_comparison"]
     conda:
         CONDA_ENV
@@ -157,25 +160,24 @@ rule fe_readings_claims:
     """Every FE claim row evaluated under every FE reading (the claims table checks the default one)."""
     input:
         claims="config/claims/sections_09_12.yaml",
-        comparison="results/fe/model_comparison.csv",
-        data=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
-        + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
-        + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
-        + ["results/fe/continuum_increments.nc", "results/fe/peer_calculix.nc"]
-        + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS]
+        comparison=paths.fe_model_comparison("csv"),
+        data=FE_SCENE_DATASETS
+        + [paths.fe_study(s) for s in FE_SWEEPS + FE_STUDIES]
+        + [paths.fe_study("continuum_increments"), paths.fe_peer_calculix("nc")]
+        + [paths.fe_study(f) for f in FE_SETUP_FITS]
         # the continuum rows (one reading: never re-pointed per FE reading)
-        + expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES),
+        + [paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES],
     output:
-        "results/fe/readings_claims.csv",
+        paths.fe_readings_claims(),
     log:
-        "results/logs/fe_readings_claims/readings_claims.log",
+        paths.log("fe_readings_claims", "readings_claims"),
     benchmark:
-        "results/benchmarks/fe_readings_claims/readings_claims.tsv"
+        paths.benchmark("fe_readings_claims", "readings_claims")
     conda:
         CONDA_ENV
     params:
         readings=FE_READINGS,
-        default=FE_DEFAULT_READING,
+        scenes=FE_SCENES,
     script:
         "../scripts/fe_readings_claims.py"
 
@@ -185,36 +187,39 @@ rule fe_figures:
     (default reading, both disc speeds side by side), the paper scenes (default reading, continuum overlaid
     over its window), the readings overview, convergence and stability."""
     input:
-        beam=expand(f"results/fe/{FE_DEFAULT_READING}/{{scene}}.nc", scene=FE_SCENES),
-        continuum=expand("results/fe/continuum/{scene}.nc", scene=FE_SCENES),
-        readings=expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES),
-        convergence="results/fe/convergence.nc",
-        stability="results/fe/stability.nc",
+        beam=[paths.fe_scene(FE_DEFAULT_READING, s) for s in FE_SCENES],
+        continuum=[paths.fe_continuum(s) for s in FE_SCENES],
+        readings=[paths.fe_scene(r, s) for r in FE_READINGS for s in FE_SCENES],
+        convergence=paths.fe_study("convergence"),
+        stability=paths.fe_study("stability"),
     output:
         scenes=report(
-            expand("results/figures/fe/{scene}.png", scene=FE_SCENES),
+            [paths.figure("fe", s) for s in FE_SCENES],
             caption=REPORT_CAPTION_FILE,
             category="Beam on rotating disc (Sections 9-12)",
         ),
         paper=report(
-            expand("results/figures/fe/fig{number}.png", number=range(21, 37)),
+            FE_PAPER_FIGURE_PNGS,
             caption=REPORT_CAPTION_FILE,
             category="Beam on rotating disc (Sections 9-12)",
             subcategory="One per paper figure",
         ),
-        readings="results/figures/fe/readings.png",
-        convergence="results/figures/fe/convergence.png",
-        stability="results/figures/fe/stability.png",
+        readings=paths.figure("fe", "readings"),
+        convergence=paths.figure("fe", "convergence"),
+        stability=paths.figure("fe", "stability"),
     log:
-        "results/logs/fe_figures/figures.log",
+        paths.log("fe_figures", "figures"),
     benchmark:
-        "results/benchmarks/fe_figures/figures.tsv"
+        paths.benchmark("fe_figures", "figures")
     priority: PRIORITY["fe_figures"]
     conda:
         CONDA_ENV
     params:
         readings=FE_READINGS,
         scenes=FE_SCENES,
+        # the paper figures in the order of output.paper, and the scenes each draws (config fe.paper_figures)
+        paper_figure_numbers=list(paths.fe_paper_figure_numbers()),
+        paper_figures=FE["paper_figures"],
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
             c["variable"]: c["value"]
@@ -226,9 +231,7 @@ rule fe_figures:
             s: {
                 c["variable"].replace("_", " "): c["value"]
                 for c in CLAIMS
-                if c.get("kind") == "value"
-                and c.get("unit") == "mm"
-                and Path(str(c.get("dataset", ""))).stem == s
+                if c.get("kind") == "value" and c.get("unit") == "mm" and fe_scene_of(c.get("dataset")) == s
             }
             for s in FE_SCENES
         },
@@ -254,25 +257,20 @@ rule fe_figures:
 
 
 FE_DATASETS = (
-    expand("results/fe/{fe_reading}/{scene}.nc", fe_reading=FE_READINGS, scene=FE_SCENES)
-    + expand("results/fe/{fe_reading}/cross_scene.nc", fe_reading=FE_READINGS)
-    + [f"results/fe/{s}.nc" for s in FE_SWEEPS + FE_STUDIES]
-    + [f"results/fe/{f}.nc" for f in FE_SETUP_FITS]
-    + expand("results/fe/continuum_window/{scene}.nc", scene=FE_WINDOW_SCENES)
+    FE_SCENE_DATASETS
+    + [paths.fe_study(s) for s in FE_SWEEPS + FE_STUDIES]
+    + [paths.fe_study(f) for f in FE_SETUP_FITS]
+    + [paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES]
     + [
-        "results/fe/model_comparison.csv",
-        "results/fe/continuum_increments.nc",
-        "results/fe/readings_claims.csv",
+        paths.fe_model_comparison("csv"),
+        paths.fe_study("continuum_increments"),
+        paths.fe_readings_claims(),
     ]
 )
 FE_FIGURES = (
-    [f"results/figures/fe/{s}.png" for s in FE_SCENES]
-    + [f"results/figures/fe/fig{n}.png" for n in range(21, 37)]
-    + [
-        "results/figures/fe/readings.png",
-        "results/figures/fe/convergence.png",
-        "results/figures/fe/stability.png",
-    ]
+    [paths.figure("fe", s) for s in FE_SCENES]
+    + FE_PAPER_FIGURE_PNGS
+    + [paths.figure("fe", name) for name in ("readings", *FE_STUDIES)]
 )
 
 ALL_TARGETS.extend(FE_DATASETS)

@@ -3,20 +3,20 @@
 
 #: what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of the FE config
 FE_PEER_CONFIG = {"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}}
-FE_PEER_DECKS = ["peer_free", "peer_propped"]
+FE_PEER_DECKS = list(paths.FE_PEER_DECKS)
 
 
 rule fe_peer_calculix:
     """Modes and self-weight states of the strip: closed form, continuum and CalculiX (C3D8I), with the
     relative differences and whether they agree; the two linear decks ccx ran."""
     output:
-        dataset="results/fe/peer_calculix.nc",
-        table="results/fe/peer_calculix.csv",
-        decks=expand("results/fe/inp/{deck}.inp", deck=FE_PEER_DECKS),
+        dataset=paths.fe_peer_calculix("nc"),
+        table=paths.fe_peer_calculix("csv"),
+        decks=[paths.fe_deck(d) for d in FE_PEER_DECKS],
     log:
-        "results/logs/fe_peer_calculix/peer.log",
+        paths.log("fe_peer_calculix", "peer"),
     benchmark:
-        "results/benchmarks/fe_peer_calculix/peer.tsv"
+        paths.benchmark("fe_peer_calculix", "peer")
     conda:
         CONDA_ENV
     params:
@@ -31,11 +31,11 @@ rule fe_decks:
     input:
         friction=FE_FRICTION,
     output:
-        decks=expand("results/fe/inp/{scene}.inp", scene=FE_SCENES),
+        decks=[paths.fe_deck(s) for s in FE_SCENES],
     log:
-        "results/logs/fe_decks/decks.log",
+        paths.log("fe_decks", "decks"),
     benchmark:
-        "results/benchmarks/fe_decks/decks.tsv"
+        paths.benchmark("fe_decks", "decks")
     conda:
         CONDA_ENV
     params:
@@ -45,6 +45,6 @@ rule fe_decks:
 
 
 ALL_TARGETS.extend(
-    ["results/fe/peer_calculix.nc", "results/fe/peer_calculix.csv"]
-    + expand("results/fe/inp/{deck}.inp", deck=FE_PEER_DECKS + FE_SCENES)
+    [paths.fe_peer_calculix("nc"), paths.fe_peer_calculix("csv")]
+    + [paths.fe_deck(d) for d in FE_PEER_DECKS + FE_SCENES]
 )

@@ -11,21 +11,13 @@ rule inverse_study:
     input:
         claims=sorted(str(p) for p in Path(".").glob(config["inverse"]["claims_glob"])),
     output:
-        summary="results/inverse/summary.csv",
-        hypotheses="results/inverse/hypotheses.csv",
-        ranking="results/inverse/ranking.csv",
-        numbers="results/inverse/numbers.csv",
-        conflicts="results/inverse/conflicts.csv",
-        datasets=expand("results/inverse/{figure}.nc", figure=INVERSE_FIGURES),
-        corner=expand(
-            "results/inverse/corner/{figure}_{family}.png",
-            figure=INVERSE_CORNER,
-            family=INVERSE_FAMILIES,
-        ),
+        **{name: paths.inverse_table(name) for name in paths.INVERSE_TABLES},
+        datasets=[paths.inverse_dataset(f) for f in INVERSE_FIGURES],
+        corner=[paths.inverse_corner(f, fam) for f in INVERSE_CORNER for fam in INVERSE_FAMILIES],
     log:
-        "results/logs/inverse_study.log",
+        paths.log("inverse_study"),
     benchmark:
-        "results/benchmarks/inverse_study.tsv"
+        paths.benchmark("inverse_study")
     priority: PRIORITY["inverse_study"]
     conda:
         CONDA_ENV

@@ -2,26 +2,21 @@
 
 METHODS_SCENES = list(config["methods_study"]["scenes"])
 
-METHODS_NC = expand("results/methods/{scene}_work_precision.nc", scene=METHODS_SCENES)
-METHODS_PNG = expand("results/figures/methods/{scene}_work_precision.png", scene=METHODS_SCENES)
+METHODS_NC = [paths.methods_work_precision(s) for s in METHODS_SCENES]
+METHODS_PNG = [paths.figure("methods", f"{s}_work_precision") for s in METHODS_SCENES]
+METHODS_FAILURE_PNG = paths.figure("methods", "failure_map")
+METHODS_NOTEBOOK = paths.notebook("methods_work_precision")
 
-ALL_TARGETS.extend(
-    expand("results/methods/{scene}_work_precision.nc", scene=METHODS_SCENES)
-    + [
-        "results/methods/failure_map.nc",
-        "results/figures/methods/failure_map.png",
-        "results/notebooks/methods_work_precision.html",
-    ]
-)
+ALL_TARGETS.extend(METHODS_NC + [paths.methods_failure_map(), METHODS_FAILURE_PNG, METHODS_NOTEBOOK])
 
 
 rule methods_work_precision:
     output:
-        "results/methods/{scene}_work_precision.nc",
+        paths.methods_work_precision("{scene}"),
     log:
-        "results/logs/methods_work_precision/{scene}.log",
+        paths.log("methods_work_precision", "{scene}"),
     benchmark:
-        "results/benchmarks/methods_work_precision/{scene}.tsv"
+        paths.benchmark("methods_work_precision", "{scene}")
     wildcard_constraints:
         scene="|".join(METHODS_SCENES),
     priority: PRIORITY["methods_work_precision"]
@@ -35,11 +30,11 @@ rule methods_work_precision:
 
 rule methods_failure_map:
     output:
-        "results/methods/failure_map.nc",
+        paths.methods_failure_map(),
     log:
-        "results/logs/methods_failure_map/all.log",
+        paths.log("methods_failure_map", "all"),
     benchmark:
-        "results/benchmarks/methods_failure_map/all.tsv"
+        paths.benchmark("methods_failure_map", "all")
     priority: PRIORITY["methods_failure_map"]
     conda:
         CONDA_ENV
@@ -52,7 +47,7 @@ rule methods_failure_map:
 rule methods_figures:
     input:
         work_precision=METHODS_NC,
-        failure_map="results/methods/failure_map.nc",
+        failure_map=paths.methods_failure_map(),
     output:
         work_precision=[
             report(
@@ -64,15 +59,15 @@ rule methods_figures:
             for p in METHODS_PNG
         ],
         failure_map=report(
-            "results/figures/methods/failure_map.png",
+            METHODS_FAILURE_PNG,
             caption=REPORT_CAPTION_FILE,
             category="Integration methods",
             labels={"chart": "failure_map"},
         ),
     log:
-        "results/logs/methods_figures/all.log",
+        paths.log("methods_figures", "all"),
     benchmark:
-        "results/benchmarks/methods_figures/all.tsv"
+        paths.benchmark("methods_figures", "all")
     conda:
         CONDA_ENV
     script:
@@ -82,19 +77,19 @@ rule methods_figures:
 rule methods_notebook:
     input:
         notebook="notebooks/methods_work_precision.py",
-        data=METHODS_NC + ["results/methods/failure_map.nc"],
-        figures=METHODS_PNG + ["results/figures/methods/failure_map.png"],
+        data=METHODS_NC + [paths.methods_failure_map()],
+        figures=METHODS_PNG + [METHODS_FAILURE_PNG],
     output:
         report(
-            "results/notebooks/methods_work_precision.html",
+            METHODS_NOTEBOOK,
             caption=REPORT_CAPTION_FILE,
             category="Notebooks",
             labels={"notebook": "methods_work_precision"},
         ),
     log:
-        "results/logs/methods_notebook/all.log",
+        paths.log("methods_notebook", "all"),
     benchmark:
-        "results/benchmarks/methods_notebook/all.tsv"
+        paths.benchmark("methods_notebook", "all")
     conda:
         CONDA_ENV
     script:

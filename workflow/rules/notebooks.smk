@@ -11,7 +11,7 @@ rule render_notebooks:
     output:
         [
             report(
-                f"results/notebooks/{name}.html",
+                paths.notebook(name),
                 caption=REPORT_CAPTION_FILE,
                 category="Notebooks",
                 labels={"notebook": name},
@@ -19,9 +19,9 @@ rule render_notebooks:
             for name in NOTEBOOKS
         ],
     log:
-        expand("results/logs/render_notebooks/{name}.log", name=NOTEBOOKS),
+        [paths.log("render_notebooks", name) for name in NOTEBOOKS],
     benchmark:
-        "results/benchmarks/render_notebooks/all.tsv"
+        paths.benchmark("render_notebooks", "all")
     conda:
         CONDA_ENV
     threads: 2
@@ -31,4 +31,4 @@ rule render_notebooks:
         "../scripts/render_notebooks.py"
 
 
-ALL_TARGETS.extend(f"results/notebooks/{name}.html" for name in NOTEBOOKS)
+ALL_TARGETS.extend(paths.notebook(name) for name in NOTEBOOKS)

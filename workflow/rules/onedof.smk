@@ -10,9 +10,9 @@ for _scene, _runs in onedof_runs().items():
         output:
             [onedof_dataset(_scene, r, m) for r, m in _runs],
         log:
-            f"results/logs/simulate_onedof/{_scene}.log",
+            paths.log("simulate_onedof", _scene),
         benchmark:
-            f"results/benchmarks/simulate_onedof/{_scene}.tsv"
+            paths.benchmark("simulate_onedof", _scene)
         conda:
             CONDA_ENV
         params:
@@ -34,11 +34,11 @@ for _figure, _spec in ONEDOF["figures"].items():
         input:
             figure_datasets(_figure),
         output:
-            [f"results/figures/{_figure}/{r}.png" for r in _spec["readings"]],
+            [paths.figure(_figure, r) for r in _spec["readings"]],
         log:
-            f"results/logs/onedof_figure/{_figure}.log",
+            paths.log("onedof_figure", _figure),
         benchmark:
-            f"results/benchmarks/onedof_figure/{_figure}.tsv"
+            paths.benchmark("onedof_figure", _figure)
         conda:
             CONDA_ENV
         params:
@@ -52,21 +52,19 @@ for _figure, _spec in ONEDOF["figures"].items():
 
 
 ALL_TARGETS.extend(
-    f"results/figures/{fig}/{reading}.png"
-    for fig, spec in ONEDOF["figures"].items()
-    for reading in spec["readings"]
+    paths.figure(fig, reading) for fig, spec in ONEDOF["figures"].items() for reading in spec["readings"]
 )
 
 
 rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
     output:
-        csv="results/onedof/friction_mu_vr.csv",
-        nc="results/onedof/friction_mu_vr.nc",
+        csv=paths.friction_table("csv"),
+        nc=paths.friction_table("nc"),
     log:
-        "results/logs/friction_table/all.log",
+        paths.log("friction_table", "all"),
     benchmark:
-        "results/benchmarks/friction_table/all.tsv"
+        paths.benchmark("friction_table", "all")
     priority: PRIORITY["friction_table"]
     conda:
         CONDA_ENV
@@ -83,4 +81,4 @@ rule friction_table:
         "../scripts/friction_table.py"
 
 
-ALL_TARGETS.append("results/onedof/friction_mu_vr.csv")
+ALL_TARGETS.append(paths.friction_table("csv"))

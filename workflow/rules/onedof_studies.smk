@@ -5,17 +5,18 @@ SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
 SWEEP_METHODS = sorted({sw.get("method", BASELINE["method"]) for sw in SWEEPS.values()})
 SWEEP_SCENES = sorted({sw.get("scene", BASELINE["scene"]) for sw in SWEEPS.values()})
 CRITICAL = ONEDOF.get("critical_speed")
+CRITICAL_READINGS = CRITICAL["readings"] if CRITICAL else []
 
 
 rule eq6_curve:
     """Fig. 4: Eq. 6 as printed and the dimensionally correct amplitude curve, with their peaks."""
     output:
-        nc="results/onedof/fig04/eq6.nc",
-        png="results/figures/fig04/eq6.png",
+        nc=paths.eq6_curve(),
+        png=paths.figure("fig04", "eq6"),
     log:
-        "results/logs/eq6_curve/all.log",
+        paths.log("eq6_curve", "all"),
     benchmark:
-        "results/benchmarks/eq6_curve/all.tsv"
+        paths.benchmark("eq6_curve", "all")
     conda:
         CONDA_ENV
     params:
@@ -30,9 +31,9 @@ rule onedof_sweeps:
     output:
         [sweep_dataset(s, "{reading}", d) for s in SWEEPS for d in (False, True)],
     log:
-        "results/logs/onedof_sweeps/{reading}.log",
+        paths.log("onedof_sweeps", "{reading}"),
     benchmark:
-        "results/benchmarks/onedof_sweeps/{reading}.tsv"
+        paths.benchmark("onedof_sweeps", "{reading}")
     wildcard_constraints:
         reading="|".join(ONEDOF["readings"]),
     priority: PRIORITY["onedof_sweeps"]
@@ -57,11 +58,11 @@ for _figure, _spec in SWEEP_FIGURES.items():
         input:
             [sweep_dataset(_spec["sweep"], r, d) for r in _spec["readings"] for d in (False, True)],
         output:
-            [f"results/figures/{_figure}/{r}.png" for r in _spec["readings"]],
+            [paths.figure(_figure, r) for r in _spec["readings"]],
         log:
-            f"results/logs/sweep_figure/{_figure}.log",
+            paths.log("sweep_figure", _figure),
         benchmark:
-            f"results/benchmarks/sweep_figure/{_figure}.tsv"
+            paths.benchmark("sweep_figure", _figure)
         conda:
             CONDA_ENV
         params:
@@ -77,11 +78,11 @@ for _figure, _spec in SWEEP_FIGURES.items():
 rule critical_speed:
     """Continuation over belt speed with the exact solver, every reading in one job."""
     output:
-        expand("results/onedof/critical_speed/{reading}.nc", reading=CRITICAL["readings"] if CRITICAL else []),
+        [paths.critical_speed(r) for r in CRITICAL_READINGS],
     log:
-        "results/logs/critical_speed/all.log",
+        paths.log("critical_speed", "all"),
     benchmark:
-        "results/benchmarks/critical_speed/all.tsv"
+        paths.benchmark("critical_speed", "all")
     conda:
         CONDA_ENV
     params:
@@ -93,25 +94,22 @@ rule critical_speed:
         ),
         readings=CRITICAL["readings"] if CRITICAL else [],
         ensemble=ENSEMBLE,
-        ensemble_outputs=sorted(
-            CLAIMED_DATASETS
-            & {f"results/onedof/critical_speed/{r}.nc" for r in (CRITICAL["readings"] if CRITICAL else [])}
-        ),
+        ensemble_outputs=sorted(CLAIMED_DATASETS & {paths.critical_speed(r) for r in CRITICAL_READINGS}),
     script:
         "../scripts/critical_speed.py"
 
 
 rule critical_speed_summary:
     input:
-        expand("results/onedof/critical_speed/{reading}.nc", reading=CRITICAL["readings"] if CRITICAL else []),
+        [paths.critical_speed(r) for r in CRITICAL_READINGS],
     output:
-        csv="results/onedof/critical_speed.csv",
-        nc="results/onedof/critical_speed.nc",
-        png="results/figures/critical_speed/all.png",
+        csv=paths.critical_speed_summary("csv"),
+        nc=paths.critical_speed_summary("nc"),
+        png=paths.figure("critical_speed", "all"),
     log:
-        "results/logs/critical_speed_summary/all.log",
+        paths.log("critical_speed_summary", "all"),
     benchmark:
-        "results/benchmarks/critical_speed_summary/all.tsv"
+        paths.benchmark("critical_speed_summary", "all")
     conda:
         CONDA_ENV
     params:
@@ -123,15 +121,15 @@ rule critical_speed_summary:
 rule reading_ranking:
     """Interpretation study: per reading, how many claims it reproduces / deviates / cannot compare."""
     input:
-        "results/claims/deviations.csv",
+        paths.claims_table(),
     output:
-        csv="results/claims/reading_ranking.csv",
-        nc="results/claims/reading_ranking.nc",
-        unreproduced="results/claims/unreproduced_claims.csv",
+        csv=paths.reading_ranking("csv"),
+        nc=paths.reading_ranking("nc"),
+        unreproduced=paths.unreproduced_claims(),
     log:
-        "results/logs/reading_ranking/all.log",
+        paths.log("reading_ranking", "all"),
     benchmark:
-        "results/benchmarks/reading_ranking/all.tsv"
+        paths.benchmark("reading_ranking", "all")
     conda:
         CONDA_ENV
     params:
@@ -140,13 +138,11 @@ rule reading_ranking:
         "../scripts/reading_ranking.py"
 
 
-ALL_TARGETS.append("results/onedof/fig04/eq6.nc")
+ALL_TARGETS.append(paths.eq6_curve())
 ALL_TARGETS.extend(
     sweep_dataset(s, r, d) for s in SWEEPS for r in config["claims"]["readings"] for d in (False, True)
 )
-ALL_TARGETS.extend(
-    f"results/figures/{f}/{r}.png" for f, spec in SWEEP_FIGURES.items() for r in spec["readings"]
-)
+ALL_TARGETS.extend(paths.figure(f, r) for f, spec in SWEEP_FIGURES.items() for r in spec["readings"])
 if CRITICAL:
-    ALL_TARGETS.append("results/onedof/critical_speed.csv")
-ALL_TARGETS.append("results/claims/reading_ranking.csv")
+    ALL_TARGETS.append(paths.critical_speed_summary("csv"))
+ALL_TARGETS.append(paths.reading_ranking("csv"))

@@ -4,14 +4,14 @@
 
 rule report_captions:
     input:
-        table="results/claims/deviations.csv",
+        table=paths.claims_table(),
         figures="workflow/report/figures.yaml",
     output:
         REPORT_CAPTIONS,
     log:
-        "results/logs/report_captions/all.log",
+        paths.log("report_captions", "all"),
     benchmark:
-        "results/benchmarks/report_captions/all.tsv"
+        paths.benchmark("report_captions", "all")
     conda:
         CONDA_ENV
     params:

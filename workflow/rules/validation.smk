@@ -5,17 +5,14 @@ from stickslip.validation.setup import ValidationSetup
 VALIDATION = ValidationSetup(config["validation"])
 VALIDATION_LAWS = VALIDATION.law_names()
 
+VALIDATION_METHODS = [
+    paths.validation_methods(law) for law in config["validation"]["methods_per_law"]["laws"]
+]
+
 ALL_TARGETS.extend(
-    expand("results/validation/peer_{law}.csv", law=VALIDATION_LAWS)
-    + expand(
-        "results/validation/methods_{law}.nc",
-        law=config["validation"]["methods_per_law"]["laws"],
-    )
-    + [
-        "results/validation/peer.nc",
-        "results/validation/round_trip.nc",
-        "results/validation/round_trip.csv",
-    ]
+    [paths.validation_peer_table(law) for law in VALIDATION_LAWS]
+    + VALIDATION_METHODS
+    + [paths.validation_peer(), paths.validation_round_trip("nc"), paths.validation_round_trip("csv")]
 )
 
 
@@ -24,12 +21,12 @@ rule validation_peer:
     input:
         VALIDATION.table_paths(),
     output:
-        csv=expand("results/validation/peer_{law}.csv", law=VALIDATION_LAWS),
-        nc="results/validation/peer.nc",
+        csv=[paths.validation_peer_table(law) for law in VALIDATION_LAWS],
+        nc=paths.validation_peer(),
     log:
-        "results/logs/validation_peer/all.log",
+        paths.log("validation_peer", "all"),
     benchmark:
-        "results/benchmarks/validation_peer/all.tsv"
+        paths.benchmark("validation_peer", "all")
     conda:
         CONDA_ENV
     params:
@@ -41,19 +38,19 @@ rule validation_peer:
 rule validation_round_trip:
     """The 1-DOF model driven by the Fig. 17 table vs the cycle the table came from."""
     input:
-        table="results/onedof/friction_mu_vr.csv",
+        table=paths.friction_table("csv"),
         source=onedof_dataset(
             ONEDOF["friction_table"]["scene"],
             ONEDOF["friction_table"]["reading"],
             ONEDOF["friction_table"]["method"],
         ),
     output:
-        nc="results/validation/round_trip.nc",
-        csv="results/validation/round_trip.csv",
+        nc=paths.validation_round_trip("nc"),
+        csv=paths.validation_round_trip("csv"),
     log:
-        "results/logs/validation_round_trip/all.log",
+        paths.log("validation_round_trip", "all"),
     benchmark:
-        "results/benchmarks/validation_round_trip/all.tsv"
+        paths.benchmark("validation_round_trip", "all")
     conda:
         CONDA_ENV
     params:
@@ -71,14 +68,11 @@ rule validation_round_trip:
 rule validation_methods:
     """Issue 13 item 5: the methods study on nonlinear laws, so the ranking is not an artefact of the affine one."""
     output:
-        expand(
-            "results/validation/methods_{law}.nc",
-            law=config["validation"]["methods_per_law"]["laws"],
-        ),
+        VALIDATION_METHODS,
     log:
-        "results/logs/validation_methods/all.log",
+        paths.log("validation_methods", "all"),
     benchmark:
-        "results/benchmarks/validation_methods/all.tsv"
+        paths.benchmark("validation_methods", "all")
     conda:
         CONDA_ENV
     params:

@@ -1,15 +1,18 @@
 # Cost of the whole pipeline: wall time and peak memory of every job, tabulated per rule.
 # Named zz_ so it is included last and sees every other rule's targets.
 
+#: every job's benchmark table is under this folder (never a target of the summary itself)
+BENCHMARKS = str(Path(paths.benchmark_summary()).parent) + "/"
+
 
 rule benchmark_summary:
     input:
-        [t for t in ALL_TARGETS if not t.startswith("results/benchmarks/")],
+        [t for t in ALL_TARGETS if not t.startswith(BENCHMARKS)],
     output:
-        csv="results/benchmarks/summary.csv",
-        md="results/benchmarks/summary.md",
+        csv=paths.benchmark_summary("csv"),
+        md=paths.benchmark_summary("md"),
     log:
-        "results/logs/benchmark_summary.log",
+        paths.log("benchmark_summary"),
     conda:
         CONDA_ENV
     params:
@@ -18,4 +21,4 @@ rule benchmark_summary:
         "../scripts/benchmark_summary.py"
 
 
-ALL_TARGETS.append("results/benchmarks/summary.csv")
+ALL_TARGETS.append(paths.benchmark_summary("csv"))

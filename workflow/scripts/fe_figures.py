@@ -20,7 +20,8 @@ from stickslip.presentation.fe_plots import (  # noqa: E402
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 inp, out, par = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
-beams = {Path(p).stem: read_dataset(p) for p in inp.beam}
+# the inputs come in the rule's order (scenes; readings x scenes): paths are named, never parsed
+beams = {scene: read_dataset(p) for scene, p in zip(par.scenes, inp.beam, strict=True)}
 for (scene, beam), cont_path, png in zip(beams.items(), inp.continuum, out.scenes):
     cont = read_dataset(cont_path) if Path(cont_path).exists() else None  # only when run by hand
     title = (
@@ -30,11 +31,10 @@ for (scene, beam), cont_path, png in zip(beams.items(), inp.continuum, out.scene
     reported = par.scene_reported.get(scene, {})
     fe_scene_figure(beam, cont, reported=reported, title=title).savefig(png, dpi=100)
     plt.close("all")
-for png in out.paper:
-    number = int(Path(png).stem.removeprefix("fig"))
+for number, png in zip(par.paper_figure_numbers, out.paper, strict=True):
     fig = paper_figure(
         number,
-        {s: beams[s] for s in scenes_for(number, par.scenes)},
+        {s: beams[s] for s in scenes_for(number, par.paper_figures)},
         par.paper_reported.get(number, []),
         reading=par.default_reading,
         several_times=par.paper_normal_force_ratio,
@@ -43,8 +43,8 @@ for png in out.paper:
     plt.close("all")
 default = {(par.default_reading, scene): ds for scene, ds in beams.items()}  # read once, drawn twice
 dss = {}
-for p in inp.readings:
-    key = (Path(p).parent.name, Path(p).stem)
+keys = [(reading, scene) for reading in par.readings for scene in par.scenes]
+for key, p in zip(keys, inp.readings, strict=True):
     dss[key] = default[key] if key in default else read_dataset(p)
 fe_readings_figure(dss, par.scenes, par.readings, par.reported).savefig(out.readings, dpi=100)
 fe_convergence_figure(read_dataset(inp.convergence)).savefig(out.convergence, dpi=100)

@@ -2,6 +2,7 @@
 
 import yaml
 
+from stickslip import catalogue as paths
 from stickslip.claims.table import read_table
 from stickslip.presentation.report import caption_text, claims_for, paper_figures, write_captions
 
@@ -10,9 +11,9 @@ spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821
 config = snakemake.params.config  # noqa: F821
 captions = {}
 for fig, fspec in config["onedof"]["figures"].items():
-    figs = paper_figures(fspec.get("title", fig))
+    figs = set(fspec["paper_figures"])  # config onedof.figures.<fig>.paper_figures
     for reading in fspec["readings"]:
-        captions[f"results/figures/{fig}/{reading}.png"] = caption_text(
+        captions[paths.figure(fig, reading)] = caption_text(
             f"{fspec.get('title', fig)} — reading {reading}",
             figs,
             claims_for(rows, figs, reading),
@@ -22,13 +23,13 @@ for fig, fspec in config["onedof"]["figures"].items():
 for scene in config.get("fe", {}).get("scenes", {}):
     entry = spec["fe"].get(scene, {})
     figs = paper_figures(entry.get("figures", ""))
-    captions[f"results/figures/fe/{scene}.png"] = caption_text(
+    captions[paths.figure("fe", scene)] = caption_text(
         f"Beam on rotating disc, scene {scene}", figs, claims_for(rows, figs), note=entry.get("note", "")
     )
 if config["methods_study"]["scenes"]:
     scenes = list(config["methods_study"]["scenes"])
     wp, fm = spec["methods"]["work_precision"], spec["methods"]["failure_map"]
-    captions[f"results/figures/methods/{scenes[0]}_work_precision.png"] = caption_text(
+    captions[paths.figure("methods", f"{scenes[0]}_work_precision")] = caption_text(
         f"Integration methods: work-precision charts ({', '.join(scenes)}) and failure map",
         set(),
         [],
@@ -36,26 +37,26 @@ if config["methods_study"]["scenes"]:
     )
 for name, nspec in config.get("notebooks", {}).items():
     figs = set().union(
-        *[paper_figures(config["onedof"]["figures"][f].get("title", f)) for f in nspec.get("figures", [])]
+        *[set(config["onedof"]["figures"][f]["paper_figures"]) for f in nspec.get("figures", [])]
     )
-    captions[f"results/notebooks/{name}.html"] = caption_text(
+    captions[paths.notebook(name)] = caption_text(
         f"Notebook {name}: figures next to the reported numbers", figs, claims_for(rows, figs)
     )
 if config["fe"]["scenes"]:
     figs = set(range(17, 37))
-    captions["results/notebooks/section_09_12_beam_on_disc.html"] = caption_text(
+    captions[paths.notebook("section_09_12_beam_on_disc")] = caption_text(
         "Notebook section_09_12_beam_on_disc: the beam-on-disc scenes next to the reported numbers",
         figs,
         claims_for(rows, figs),
     )
 if config["methods_study"]["scenes"]:
-    captions["results/notebooks/methods_work_precision.html"] = caption_text(
+    captions[paths.notebook("methods_work_precision")] = caption_text(
         "Notebook methods_work_precision: the integration-methods study",
         set(),
         [],
         note=spec["methods"]["work_precision"]["note"],
     )
-captions["results/claims/deviations.csv"] = caption_text(
+captions[paths.claims_table()] = caption_text(
     "The claims table: every reported number versus what this run measured",
     set(),
     rows,

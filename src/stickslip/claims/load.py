@@ -52,12 +52,19 @@ def load_claims(paths) -> list[dict]:
 
 
 def check_claims(
-    claims: list[dict], readings, known_readings=None, pinned_ids=None, producible=None, variables_of=None
+    claims: list[dict],
+    readings,
+    known_readings=None,
+    pinned_ids=None,
+    producible=None,
+    variables_of=None,
+    catalogue=None,
 ) -> None:
     """What a row alone cannot show: per-reading entries name known readings; the set of claim ids is the
     pinned one (a deleted row or file is an error listing the ids it lost); every dataset a claim reads,
-    per claims reading (``readings``), is an output of some rule (``producible(path) -> bool``), and names a
-    variable that dataset holds where ``variables_of(path)`` knows them (None: not known)."""
+    per claims reading (``readings``), is a catalogue path (``catalogue``: path -> Entry of
+    stickslip.catalogue), is an output of some rule (``producible(path) -> bool``), and names a variable
+    that dataset holds where ``variables_of(path)`` knows them (None: not known)."""
     known = set(known_readings or ())
     for c in claims if known_readings is not None else []:
         where = f"{c['_file']}: claim {c['id']}"
@@ -76,25 +83,33 @@ def check_claims(
             raise ClaimsError(
                 f"claims not in the pinned id list (add them to it deliberately): {', '.join(new)}"
             )
-    if producible is not None:
-        for c in claims:
-            refs = [("dataset", c)] + [
-                (f"{k}.dataset", c[k]) for k in ("lhs", "rhs") if isinstance(c.get(k), dict)
-            ]
-            for key, ref in refs:
-                if "dataset" not in ref:
-                    continue
-                for r in readings_of(c, readings) if "{reading}" in ref["dataset"] else [""]:
-                    path = ref["dataset"].format(reading=r)
-                    if not producible(path):
-                        raise ClaimsError(f"{c['_file']}: claim {c['id']}: {key}: no rule writes {path!r}")
-                    known_vars = variables_of(path) if variables_of is not None else None
-                    if known_vars is not None and ref["variable"] not in known_vars:
-                        var_key = key.replace("dataset", "variable")
-                        raise ClaimsError(
-                            f"{c['_file']}: claim {c['id']}: {var_key}: {ref['variable']!r} is not a "
-                            f"variable that {path!r} holds"
-                        )
+    for c, key, ref, path in claimed_paths(claims, readings):
+        where = f"{c['_file']}: claim {c['id']}: {key}"
+        if catalogue is not None and path not in catalogue:
+            raise ClaimsError(f"{where}: no rule writes {path!r}: not a catalogue path (stickslip.catalogue)")
+        if producible is not None and not producible(path):
+            raise ClaimsError(f"{where}: no rule writes {path!r}")
+        known_vars = variables_of(path) if variables_of is not None else None
+        if known_vars is not None and ref["variable"] not in known_vars:
+            var_key = key.replace("dataset", "variable")
+            raise ClaimsError(
+                f"{c['_file']}: claim {c['id']}: {var_key}: {ref['variable']!r} is not a "
+                f"variable that {path!r} holds"
+            )
+
+
+def claimed_paths(claims: list[dict], readings):
+    """(claim, key, operand, dataset path) of every dataset every claim reads, per claims reading for a
+    path with the ``{reading}`` placeholder."""
+    for c in claims:
+        refs = [("dataset", c)] + [
+            (f"{k}.dataset", c[k]) for k in ("lhs", "rhs") if isinstance(c.get(k), dict)
+        ]
+        for key, ref in refs:
+            if "dataset" not in ref:
+                continue
+            for r in readings_of(c, readings) if "{reading}" in ref["dataset"] else [""]:
+                yield c, key, ref, ref["dataset"].format(reading=r)
 
 
 #: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.

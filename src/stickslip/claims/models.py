@@ -20,7 +20,7 @@ import math
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
-from .rows import CONTINUUM_PREFIX, FE_PREFIX
+from ..catalogue import fe_model_of, last_name
 
 #: the claims table's keys on a claim mapping (set here, read by stickslip.claims.evaluate)
 NOT_ADEQUATE = "_model_not_adequate"
@@ -59,7 +59,7 @@ def beam_operands(claim: Mapping) -> list[tuple[str, str]]:
         if not isinstance(ref, Mapping) or not isinstance(ref.get("dataset"), str):
             continue
         path = ref["dataset"]
-        if path.startswith(FE_PREFIX) and not path.startswith(CONTINUUM_PREFIX):
+        if fe_model_of(path) == "beam":
             out.append((path, str(ref.get("variable", ""))))
     return out
 
@@ -82,7 +82,7 @@ def inadequacy(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) ->
     beam_refs = beam_operands(claim)  # a continuum row may still read the beam on its other side
     why = []
     for path, variable in beam_refs:
-        scene, quantity = Path(path).stem, COMPARED_AS.get(variable)
+        scene, quantity = last_name(path), COMPARED_AS.get(variable)
         row = comparison.get((scene, quantity)) if quantity else None
         if row is None or _agrees(row):
             continue
@@ -103,7 +103,7 @@ def model_values(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) 
     for ref in refs:
         if not isinstance(ref, Mapping) or not isinstance(ref.get("dataset"), str):
             continue
-        scene, quantity = Path(ref["dataset"]).stem, COMPARED_AS.get(str(ref.get("variable", "")))
+        scene, quantity = last_name(ref["dataset"]), COMPARED_AS.get(str(ref.get("variable", "")))
         row = comparison.get((scene, quantity)) if quantity else None
         if row is None or row.get("window") != "claim":
             continue

@@ -1,33 +1,47 @@
 """FE readings of the paper's ambiguous beam-on-disc geometry, and the claims checked under each.
 
-The claim rows of Sections 9-12 name the default reading's datasets (``results/fe/<default>/...``); for
-another reading the same rows are evaluated with those paths pointed at ``results/fe/<reading>/...``.
-Datasets outside a reading folder (sweeps, studies, the continuum increments) are shared by all readings.
+The claim rows of Sections 9-12 name the default reading's datasets; for another reading the same rows are
+evaluated on the same runs in that reading, looked up in the catalogue (``stickslip.catalogue``: the entry
+of the row's path, then the entry with the same names but the other reading). Datasets that are not a
+scene under a reading (sweeps, studies, the continuum runs) are shared by all readings and stay as they are.
 """
 
 from __future__ import annotations
 
 import copy
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 
+from ..catalogue import Entry, same_entry
 from .evaluate import ClaimResult, evaluate
 
 
-def repoint(claim: dict, default: str, reading: str) -> dict:
-    """A copy of ``claim`` with every dataset path under ``results/fe/<default>/`` moved to ``<reading>``."""
+def in_reading(path: str, reading: str, entries: Mapping[str, Entry]) -> str:
+    """The same run as ``path`` in FE reading ``reading``: ``path`` itself when its run has no reading."""
+    entry = entries.get(path)
+    if entry is None or "reading" not in dict(entry.names):
+        return path
+    other = same_entry(entries, entry, reading=reading)
+    if other is None:
+        raise KeyError(f"{path}: no {entry.kind} entry in FE reading {reading!r} in the catalogue")
+    return other.path
+
+
+def repoint(claim: dict, reading: str, entries: Mapping[str, Entry]) -> dict:
+    """A copy of ``claim`` reading, for every dataset it names, the same run in FE reading ``reading``."""
     c = copy.deepcopy(claim)
-    old, new = f"results/fe/{default}/", f"results/fe/{reading}/"
     for ref in [c, c.get("lhs"), c.get("rhs")]:
         if isinstance(ref, dict) and isinstance(ref.get("dataset"), str):
-            ref["dataset"] = ref["dataset"].replace(old, new)
+            ref["dataset"] = in_reading(ref["dataset"], reading, entries)
     return c
 
 
 def claims_per_reading(
-    claims: Iterable[dict], readings: Iterable[str], default: str, open_dataset: Callable
+    claims: Iterable[dict], readings: Iterable[str], entries: Mapping[str, Entry], open_dataset: Callable
 ) -> list[ClaimResult]:
     """Evaluate every claim once per FE reading; ``reading`` of each result is the FE reading's name.
+    ``entries``: the catalogue's FE scene entries (``stickslip.catalogue.fe_scene_entries``).
 
     ``expected`` / ``note`` given per reading (a mapping with the FE reading names, and ``default`` for the
     main claims table, which evaluates the rows with reading "") are picked per reading."""
-    return [evaluate(repoint(c, default, r), r, open_dataset) for r in readings for c in claims]
+    claims = list(claims)
+    return [evaluate(repoint(c, r, entries), r, open_dataset) for r in readings for c in claims]

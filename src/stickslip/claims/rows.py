@@ -20,6 +20,8 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from ..catalogue import fe_model_of
+
 STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
 
 #: What a claim row can show, declared on every row (``evidence``) and checked here. Only ``evidence`` rows
@@ -46,9 +48,6 @@ MODELS = {
     "peer": "the continuum strip beside CalculiX, an established FE code, on the strip's linear states",
 }
 Model = Literal["beam", "continuum", "reduced", "closed_form", "peer"]
-#: where the datasets of the beam-on-disc scenes live, and those of the continuum strip among them
-FE_PREFIX = "results/fe/"
-CONTINUUM_PREFIX = "results/fe/continuum"
 
 #: The paper's numbered figures (Figure 1 to Figure 36); a claim's ``figures`` name some of them.
 PAPER_FIGURES = range(1, 37)
@@ -167,12 +166,12 @@ class ClaimRow(_Strict):
         if self.evidence == "evidence" and self.evidence_note is not None:
             raise ValueError("evidence_note: only a row that is not evidence carries one")
         paths = self.dataset_paths()
-        fe = any(p.startswith(FE_PREFIX) for p in paths)
+        fe = any(fe_model_of(p) is not None for p in paths)
         if fe and self.model is None:
-            raise ValueError(f"model: a beam-on-disc row (dataset under {FE_PREFIX}) names its model")
+            raise ValueError("model: a beam-on-disc row (a dataset of the FE scenes) names its model")
         if not fe and self.model is not None:
-            raise ValueError(f"model: only a beam-on-disc row (dataset under {FE_PREFIX}) names one")
-        if self.model in ("beam", "continuum") and (paths[0].startswith(CONTINUUM_PREFIX)) != (
+            raise ValueError("model: only a beam-on-disc row (a dataset of the FE scenes) names one")
+        if self.model in ("beam", "continuum") and (fe_model_of(paths[0]) == "continuum") != (
             self.model == "continuum"
         ):
             raise ValueError(f"model: a {self.model} row's subject dataset is {paths[0]}")

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..model.params import BeltParams, ParameterError
 
@@ -214,15 +215,19 @@ def _tolerance_sd(row: dict) -> tuple[float, str]:
     return sd, str(tol.get("reason", ""))
 
 
+#: a claim names a per-reading dataset with this placeholder for the reading
+ANY_READING = "{reading}"
+
+
 def scene_dataset(scene: str) -> str:
-    """The dataset path a value claim names for a 1-DOF scene run by the exact solver (the pipeline's
-    ``onedof_path`` with the reading left as the claims' ``{reading}`` placeholder)."""
-    return f"results/onedof/{scene}/{{reading}}/exact.nc"
+    """The dataset path a value claim names for a 1-DOF scene run by the exact solver (the catalogue's
+    ``onedof_dataset`` with the reading left as the claims' ``{reading}`` placeholder)."""
+    return catalogue.onedof_dataset(scene, ANY_READING, "exact")
 
 
 def sweep_dataset(sweep: str) -> str:
-    """The dataset path a value claim names for a 1-DOF sweep (the pipeline's ``sweep_path``)."""
-    return f"results/onedof/sweeps/{sweep}/{{reading}}.nc"
+    """The dataset path a value claim names for a 1-DOF sweep (the catalogue's ``sweep_dataset``)."""
+    return catalogue.sweep_dataset(sweep, ANY_READING)
 
 
 def runs_by_dataset(onedof: dict) -> dict[str, tuple[str, str]]:

@@ -109,8 +109,6 @@ TIME_SERIES = {
     ),
     36: PaperFigure(12, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (contact at 30°)"),
 }
-#: the other paper figures: which section's scenes each one draws
-OTHER = {22: 9, 26: 10, 31: 11, 34: 12}
 PAPER_FIGURE_NUMBERS = tuple(range(21, 37))
 #: how the sketches name each contact method (stickslip.fe.params.ContactParams.method)
 METHOD_NOTE = {
@@ -120,14 +118,10 @@ METHOD_NOTE = {
 }
 
 
-def section_of(number: int) -> int:
-    return TIME_SERIES[number].section if number in TIME_SERIES else OTHER[number]
-
-
-def scenes_for(number: int, scenes) -> list[str]:
-    """The scenes a paper figure draws: its section's, the paper's stated 15.2 rev/min first."""
-    own = [s for s in scenes if s.startswith(f"section{section_of(number)}_")]
-    return sorted(own, key=lambda s: (not s.endswith("rpm"), s))
+def scenes_for(number: int, paper_figures) -> list[str]:
+    """The scenes a paper figure draws, as the config's ``fe.paper_figures`` lists them (its section's, the
+    paper's stated 15.2 rev/min first): a name prefix says nothing about which figure a scene belongs to."""
+    return list(paper_figures[number])
 
 
 def distinct_values(rows) -> list[dict]:

@@ -15,6 +15,8 @@ import json
 import os
 from pathlib import Path
 
+from stickslip.catalogue import figure_verdicts as figure_verdicts_path
+from stickslip.catalogue import page
 from stickslip.claims.rows import STATUSES
 from stickslip.presentation.plots import STATUS_COLOUR
 
@@ -212,7 +214,7 @@ def scorecard(frame, title: str = "Claims of this section", open_rows: int = OPE
     return HTML(scorecard_html(frame, title, open_rows, legend))
 
 
-VERDICTS_CSV = "results/claims/figure_verdicts.csv"
+VERDICTS_CSV = figure_verdicts_path()
 
 
 def figure_verdicts(figures, csv_path=VERDICTS_CSV):
@@ -277,7 +279,7 @@ def verdicts_html(figures, csv_path=VERDICTS_CSV) -> str:
         " counting only rows that could have failed (evidence). Each figure is judged first in the primary"
         " reading, declared in docs/READINGS.md before any result; beside it the equations as printed; the"
         f" best of all readings is a search over them, not a verdict. {rule}. The same verdicts head each"
-        " figure's card on the replication page, <code>results/index.html</code>.</p>"
+        f" figure's card on the replication page, <code>{page()}</code>.</p>"
     )
 
 

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 
 import xarray as xr
 
+from ..catalogue import fe_continuum_window
 from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from ..fe.metrics import trajectory_metrics
 from ..fe.modes import mode_growth
@@ -104,7 +105,7 @@ def continuum_window_dataset(
         lambda mp: continuum_dataset(mp, friction, nx=nx, ny=ny, name=name),
         mapping,
         spec,
-        run_id=f"results/fe/continuum_window/{name}.nc",
+        run_id=fe_continuum_window(name),
         fields=(),
     )
     ds = apply_step_halving(ds, step_member_values(ds))

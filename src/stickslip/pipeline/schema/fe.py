@@ -6,8 +6,12 @@ from typing import Annotated, Literal
 
 from pydantic import Field, create_model, field_validator, model_validator
 
+from ...catalogue import fe_paper_figure_numbers
 from ...fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
 from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
+
+#: the paper's beam-on-disc figures, one PNG each (rule fe_figures)
+FE_PAPER_FIGURES = tuple(fe_paper_figure_numbers())
 
 
 def _annotation(bound: Bound):
@@ -180,6 +184,9 @@ class Fe(Section):
     comparison: Comparison
     increments: Increments
     peer: FePeer | None = None
+    paper_figures: dict[int, Annotated[list[str], Field(min_length=1)]] = Field(
+        description="paper figure (21-36) -> the scenes it draws, the stated disc speed first"
+    )
 
     @model_validator(mode="after")
     def bases_are_scenes(self):
@@ -187,5 +194,16 @@ class Fe(Section):
         refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
         refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
         refs += [(f"fe.comparison.claim_windows.{n}", n) for n in self.comparison.claim_windows or {}]
+        refs += [(f"fe.paper_figures.{n}", s) for n, scenes in self.paper_figures.items() for s in scenes]
         check_refs(refs, self.scenes, "fe.scenes")
         return self
+
+    @field_validator("paper_figures")
+    @classmethod
+    def every_beam_on_disc_figure_once(cls, figures):
+        """One entry per figure the FE figure rule draws (Figs. 21-36), no other."""
+        wanted = set(FE_PAPER_FIGURES)
+        if set(figures) != wanted:
+            missing, extra = sorted(wanted - set(figures)), sorted(set(figures) - wanted)
+            raise ValueError(f"needs exactly Figs. 21-36 (missing {missing}, not beam-on-disc {extra})")
+        return figures

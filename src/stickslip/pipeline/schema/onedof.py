@@ -111,7 +111,13 @@ class Scene(RunLengths):
     law: Law | None = None  # any friction law replacing the reading's (as in sweeps; switch solver only)
 
 
+#: The paper figures a figure of the pipeline shows (the catalogue's ``figures`` of its runs' entries); none
+#: for a figure of one's own scene.
+PaperFigures = list[Annotated[int, Field(ge=1, le=36, description="a figure of the paper (1-36)")]]
+
+
 class Eq6(Section):
+    paper_figures: PaperFigures = []
     f_max: Positive
     points: Annotated[int, Field(ge=10)]
     force: str | None = None
@@ -156,6 +162,7 @@ class Sweep(Section):
 
 class SweepFigure(Section):
     title: str | None = None
+    paper_figures: PaperFigures = []
     sweep: str
     readings: Names
 
@@ -188,6 +195,7 @@ class FrictionTable(Section):
 
 class Figure(Section):
     title: str | None = None
+    paper_figures: PaperFigures = []
     scene: str
     plot: Literal["timeseries", "phase", "velocity"] | None = None
     readings: Names
