@@ -152,7 +152,22 @@ def test_page_sources_map_images_to_paper_figures_from_config_titles_fe_map_and_
     ]
     titled = {"fig12": {"title": "Fig. 12-13: damping"}}
     fe = {"section11_a": {"figures": "Fig. 29-33"}}
-    found = {s["path"]: s for s in page_sources(rules, titled, fe, tmp_path)}
+    from stickslip.catalogue import Entry
+
+    def image(group, name, rule):
+        path = f"results/figures/{group}/{name}.png"
+        return path, Entry("figure", (("group", group), ("name", name)), path, rule)
+
+    catalogue = dict(
+        [
+            image("fig12", "plateau_caption", "onedof_figure_fig12"),
+            image("fe", "section11_a", "fe_figures"),
+            image("fe", "readings", "fe_figures"),
+            image("fig04", "eq6", "eq6_curve"),
+            image("methods", "map", "other"),
+        ]
+    )
+    found = {s["path"]: s for s in page_sources(rules, titled, fe, tmp_path, catalogue)}
     assert {p: s["figures"] for p, s in found.items()} == {
         "results/figures/fig12/plateau_caption.png": [12, 13],
         "results/figures/fe/section11_a.png": [29, 30, 31, 32, 33],

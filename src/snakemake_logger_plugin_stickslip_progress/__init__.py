@@ -34,8 +34,10 @@ from pathlib import Path
 from snakemake_interface_logger_plugins.base import LogHandlerBase
 from snakemake_interface_logger_plugins.common import LogEvent
 
+from stickslip.catalogue import benchmarks_folder
+
 #: where a previous build's ``benchmark:`` files are, relative to the working directory
-BENCHMARKS = Path("results/benchmarks")
+BENCHMARKS = Path(benchmarks_folder())
 
 #: the per-job records the one line replaces (a dry run keeps them)
 REPLACED = {LogEvent.JOB_INFO, LogEvent.JOB_STARTED, LogEvent.JOB_FINISHED, LogEvent.PROGRESS}

@@ -226,6 +226,16 @@ def page_thumbs() -> str:
     return f"{RESULTS}/page/thumbs"
 
 
+def page_previews() -> str:
+    """Each linked dataset's ``stickslip show`` text as HTML (a folder: ``<path below results>.html``)."""
+    return f"{RESULTS}/page/datasets"
+
+
+def page_source_pages() -> str:
+    """Each linked source file rendered with line anchors (a folder: ``<file>.html#L<n>``)."""
+    return f"{RESULTS}/page/source"
+
+
 def benchmark_summary(ext: str = "csv") -> str:
     """Wall time and peak memory of every job, per rule, ``csv`` or ``md``."""
     return f"{RESULTS}/benchmarks/summary.{ext}"
@@ -238,7 +248,8 @@ def log(rule: str, name: str | None = None) -> str:
 
 def benchmark(rule: str, name: str | None = None) -> str:
     """A job's benchmark table, laid out as its log."""
-    return f"{RESULTS}/benchmarks/{rule}.tsv" if name is None else f"{RESULTS}/benchmarks/{rule}/{name}.tsv"
+    folder = benchmarks_folder()
+    return f"{folder}/{rule}.tsv" if name is None else f"{folder}/{rule}/{name}.tsv"
 
 
 def fe_model_of(path: str) -> str | None:
@@ -255,6 +266,16 @@ def last_name(path: str) -> str:
     """The name every path function puts last (a scene, a study, a figure): what a claims row's dataset is
     matched by against the model comparison's rows, without a catalogue at hand."""
     return path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
+
+
+def benchmarks_folder() -> str:
+    """Where every job's benchmark table is (``benchmark``)."""
+    return f"{RESULTS}/benchmarks"
+
+
+def is_benchmark(path: str) -> bool:
+    """Whether a path is a job's benchmark table (``benchmark``)."""
+    return path.startswith(benchmarks_folder() + "/")
 
 
 def is_result(path: str) -> bool:

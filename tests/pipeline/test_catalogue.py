@@ -19,13 +19,6 @@ from stickslip.pipeline.config import drop_removed, load_config
 
 from project_run import ROOT, run_snakemake, small_config_args
 
-#: Files of other engineers' work in progress that still write results/ paths themselves: ported at merge
-#: (the lead empties this list then). Everything else must look its paths up.
-PORTED_AT_MERGE = {
-    "src/stickslip/presentation/page.py",
-    "src/stickslip/presentation/sources.py",
-    "workflow/rules/page.smk",
-}
 #: The catalogue itself, the one module that makes the paths.
 THE_CATALOGUE = "src/stickslip/catalogue.py"
 LITERAL = "results/"
@@ -100,18 +93,12 @@ def test_no_results_path_is_written_outside_the_catalogue():
     found = {
         rel: hits
         for rel in scanned_files()
-        if rel != THE_CATALOGUE and rel not in PORTED_AT_MERGE
+        if rel != THE_CATALOGUE
         for hits in [literals_of(rel)]
         if hits
     }
     listing = "\n".join(f"{rel}:{line}: {text!r}" for rel, hits in found.items() for line, text in hits)
     assert not found, f"results/ paths written outside stickslip.catalogue (use its functions):\n{listing}"
-
-
-@pytest.mark.parametrize("rel", sorted(PORTED_AT_MERGE))
-def test_every_file_left_to_port_still_has_a_literal_to_port(rel):
-    """An allow-list entry with nothing left to port is stale: drop it, so the file stays ported."""
-    assert (ROOT / rel).is_file() and literals_of(rel), f"{rel} writes no results/ path: take it off the list"
 
 
 def test_the_catalogue_imports_nothing_of_the_project():

@@ -1,10 +1,10 @@
-# The replication page: results/index.html, one card per figure of the paper with its verdict and evidence.
+# The replication page (stickslip.catalogue.page()), one card per figure of the paper with its verdict and evidence.
 # Written after every other result (its input is every final target but the timing table).
 import yaml
 
 from stickslip.presentation.sources import page_sources
 
-PAGE = "results/index.html"
+PAGE = paths.page()
 PAGE_FILES = sorted(
     str(p.relative_to(workflow.basedir))
     for p in Path(workflow.basedir, "src", "stickslip", "presentation").rglob("*")
@@ -16,6 +16,7 @@ PAGE_SOURCES = page_sources(
     titled={**ONEDOF["figures"], **ONEDOF.get("sweep_figures", {})},
     fe_figures=yaml.safe_load(open(Path(workflow.basedir, "workflow", "report", "figures.yaml")))["fe"],
     basedir=workflow.basedir,
+    catalogue=CATALOGUE,
 )
 
 
@@ -23,16 +24,16 @@ rule figure_verdicts:
     """Every paper figure's verdict under the primary reading, as printed and in the best of its readings (a
     search): the one table the page and the notebooks read."""
     input:
-        deviations="results/claims/deviations.csv",
-        fe_readings="results/fe/readings_claims.csv",
+        deviations=paths.claims_table(),
+        fe_readings=paths.fe_readings_claims(),
         claims=CLAIM_FILES,
         paper="src/stickslip/presentation/paper.yaml",
     output:
-        "results/claims/figure_verdicts.csv",
+        paths.figure_verdicts(),
     log:
-        "results/logs/figure_verdicts/all.log",
+        paths.log("figure_verdicts", "all"),
     benchmark:
-        "results/benchmarks/figure_verdicts/all.tsv"
+        paths.benchmark("figure_verdicts", "all")
     conda:
         CONDA_ENV
     params:
@@ -43,31 +44,31 @@ rule figure_verdicts:
         "../scripts/figure_verdicts.py"
 
 
-ALL_TARGETS.append("results/claims/figure_verdicts.csv")
+ALL_TARGETS.append(paths.figure_verdicts())
 
 
 rule replication_page:
     """The replication at a glance: every paper figure's verdict, its claims and links to its evidence."""
     input:
         # every final target but the page and the timing table (evaluated once every rules file is read)
-        verdicts="results/claims/figure_verdicts.csv",
+        verdicts=paths.figure_verdicts(),
         results=lambda wc: list(
             dict.fromkeys(
-                [t for t in ALL_TARGETS if t != PAGE and not t.startswith("results/benchmarks/")]
+                [t for t in ALL_TARGETS if t != PAGE and not paths.is_benchmark(t)]
                 + [s["path"] for s in PAGE_SOURCES]
             )
         ),
         code=PAGE_FILES,
     output:
         html=PAGE,
-        thumbs=directory("results/page/thumbs"),
+        thumbs=directory(paths.page_thumbs()),
         # each linked dataset's `stickslip show` text and each linked source file with line anchors (#L<n>)
-        previews=directory("results/page/datasets"),
-        source_pages=directory("results/page/source"),
+        previews=directory(paths.page_previews()),
+        source_pages=directory(paths.page_source_pages()),
     log:
-        "results/logs/replication_page/all.log",
+        paths.log("replication_page", "all"),
     benchmark:
-        "results/benchmarks/replication_page/all.tsv"
+        paths.benchmark("replication_page", "all")
     conda:
         CONDA_ENV
     threads: 2  # thumbnails two at a time (the last job: both cores are free)

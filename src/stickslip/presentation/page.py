@@ -24,6 +24,7 @@ from pathlib import Path
 
 import yaml
 
+from .. import catalogue as paths
 from ..claims.load import load_claims
 from ..claims.rows import EVIDENCE_CLASSES
 from ..claims.table import read_table
@@ -251,9 +252,9 @@ class PageBuilder:
         inverse_figures: dict[str, list[str]],
         fe_default_reading: str = "",
         reading_descriptions: dict[str, str] | None = None,
-        friction_table: str = "results/onedof/friction_mu_vr.csv",
+        friction_table: str = paths.friction_table(),
         claims_glob: str = "config/claims/*.yaml",
-        results: str = "results",
+        results: str = paths.RESULTS,
         workers: int = 1,
     ):
         self.workdir = Path(workdir)
@@ -535,7 +536,7 @@ class PageBuilder:
             if found:
                 notebook = {
                     "name": found[0],
-                    "href": f"{self.href(f'results/notebooks/{found[0]}.html')}#{found[1]}",
+                    "href": f"{self.href(paths.notebook(found[0]))}#{found[1]}",
                 }
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
@@ -664,13 +665,13 @@ class PageBuilder:
             "apart": {k.replace("_", " "): v for k, v in sorted(apart.items())},
             "unplaced": unplaced,
             "links": {
-                "deviations": self.href("results/claims/deviations.csv"),
-                "deviations_md": self.href("results/claims/deviations.md"),
-                "verdicts": self.href("results/claims/figure_verdicts.csv"),
-                "ranking": self.href("results/claims/reading_ranking.csv"),
-                "fe_readings": self.href("results/fe/readings_claims.csv"),
-                "interpretation": self.href("results/notebooks/interpretation_study.html"),
-                "inverse": self.href("results/notebooks/inverse_study.html"),
+                "deviations": self.href(paths.claims_table()),
+                "deviations_md": self.href(paths.claims_table("md")),
+                "verdicts": self.href(paths.figure_verdicts()),
+                "ranking": self.href(paths.reading_ranking()),
+                "fe_readings": self.href(paths.fe_readings_claims()),
+                "interpretation": self.href(paths.notebook("interpretation_study")),
+                "inverse": self.href(paths.notebook("inverse_study")),
                 "readme": self.href("README.md"),
             },
         }

@@ -18,8 +18,6 @@ from pathlib import Path
 
 from .report import paper_figures
 
-_FIGURE_PNG = re.compile(r"results/figures/([^/{}]+)/([^/{}]+)\.png")
-
 
 def figure_numbers(
     folder: str, name: str, titled: dict, fe_figures: dict, docstring: str | None
@@ -32,10 +30,11 @@ def figure_numbers(
     return sorted(paper_figures(docstring or ""))
 
 
-def page_sources(rules, titled: dict, fe_figures: dict, basedir) -> list[dict]:
+def page_sources(rules, titled: dict, fe_figures: dict, basedir, catalogue: dict) -> list[dict]:
     """One entry per image a rule writes that shows a paper figure: its path, figures, label (reading or
     scene), rule name, rules file and script (relative to ``basedir``). ``rules``: objects with ``name``,
-    ``output``, ``docstring``, ``snakefile`` and ``script`` (Snakemake's rules)."""
+    ``output``, ``docstring``, ``snakefile`` and ``script`` (Snakemake's rules); ``catalogue``: path -> Entry
+    (stickslip.catalogue), where an image's group and name are looked up, never parsed from its path."""
 
     def relative(path) -> str:
         return os.path.relpath(os.path.normpath(path), basedir)
@@ -43,10 +42,11 @@ def page_sources(rules, titled: dict, fe_figures: dict, basedir) -> list[dict]:
     sources = []
     for rule in rules:
         for output in rule.output:
-            m = _FIGURE_PNG.fullmatch(str(output))
-            if not m:
+            entry = catalogue.get(str(output))
+            if entry is None or entry.kind != "figure":
                 continue
-            figures = figure_numbers(m[1], m[2], titled, fe_figures, rule.docstring)
+            label = entry.name("name")
+            figures = figure_numbers(entry.name("group"), label, titled, fe_figures, rule.docstring)
             if not figures:
                 continue
             script = Path(rule.snakefile).parent / rule.script if rule.script else None
@@ -54,7 +54,7 @@ def page_sources(rules, titled: dict, fe_figures: dict, basedir) -> list[dict]:
                 {
                     "path": str(output),
                     "figures": figures,
-                    "label": m[2],
+                    "label": label,
                     "rule": rule.name,
                     "rule_file": relative(rule.snakefile),
                     "script": relative(script) if script else "",
