@@ -17,14 +17,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, reading_model
-from .events import (
-    EventDrivenSolver,
-    Segment,
-    StickMotion,
-    sample_segments,
-    trajectory_from_segments,
-)
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
+from .events import EventDrivenSolver, Segment, StickMotion, sample_segments
 from .linear import LinearSegment
 
 __all__ = [
@@ -33,7 +27,6 @@ __all__ = [
     "StickMotion",
     "first_exit_root",
     "sample_segments",
-    "trajectory_from_segments",
 ]
 
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
@@ -79,9 +72,6 @@ class ExactSwitchSolver(EventDrivenSolver):
     @property
     def settings(self) -> dict:
         return {"samples_per_period": self.samples_per_period, "graze_tolerance": self.graze_tolerance}
-
-    def _integrated(self, model):
-        return reading_model(model, self.name)
 
     def _phase(self, model, mode, t, x, v, t_limit, stats):
         if mode == STICK:

@@ -37,6 +37,9 @@ from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError
 from .events import EventDrivenSolver, Segment, StickMotion
 from .exact import first_exit_root
 
+#: solve_ivp methods a slip phase may use.
+SWITCH_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+
 
 @dataclass(frozen=True)
 class DenseMotion:
@@ -74,17 +77,9 @@ class SwitchSolver(EventDrivenSolver):
     max_zero_length: int = 50
     name: str = "switch"
 
-    def __post_init__(self):
-        for key in ("rtol", "atol", "graze_tolerance"):
-            value = getattr(self, key)
-            if (
-                isinstance(value, bool)
-                or not isinstance(value, (int, float))
-                or not (math.isfinite(value) and value > 0)
-            ):
-                raise ParameterError(f"{key}: must be a finite number > 0, got {value!r}")
-        if self.method not in ("DOP853", "RK45", "Radau", "LSODA"):
-            raise ParameterError(f"method: {self.method!r} is not one of DOP853, RK45, Radau, LSODA")
+    def _check_own_settings(self):
+        if self.method not in SWITCH_METHODS:
+            raise ParameterError(f"method: {self.method!r} is not one of {', '.join(SWITCH_METHODS)}")
 
     @property
     def settings(self) -> dict:
