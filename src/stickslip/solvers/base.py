@@ -233,6 +233,8 @@ class OneDofSolver:
     """
 
     name: str
+    #: The fields a trajectory records as the method's settings, in this order.
+    SETTING_NAMES: tuple[str, ...] = ()
     #: A method that records stick/slip segments stores an empty table when it fails (same dataset layout).
     records_segments = False
 
@@ -243,7 +245,7 @@ class OneDofSolver:
     # -- hooks ----------------------------------------------------------------------------------------
     @property
     def settings(self) -> dict:
-        raise NotImplementedError
+        return {name: getattr(self, name) for name in self.SETTING_NAMES}
 
     @property
     def label(self) -> str:

@@ -13,7 +13,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .base import STICK, OneDofSolver, Samples, SolverError, SolverStats, checked_t_end
+from .base import (
+    SLIP_BACKWARD,
+    SLIP_FORWARD,
+    STICK,
+    OneDofSolver,
+    Samples,
+    SolverError,
+    SolverStats,
+    checked_t_end,
+)
 
 
 @dataclass(frozen=True)
@@ -50,7 +59,13 @@ class EventDrivenSolver(OneDofSolver):
 
     # -- hooks ----------------------------------------------------------------------------------------
     def _mode_from_state(self, model, t: float, x: float, v: float):
-        raise NotImplementedError
+        """Slip the way v_r points, or 'contact' (decided by ``_contact_decision``) where v_r = 0."""
+        vr = v - float(model.belt_velocity(t))
+        if vr > 0:
+            return SLIP_FORWARD
+        if vr < 0:
+            return SLIP_BACKWARD
+        return "contact"
 
     def _contact_decision(self, model, t: float, x: float):
         raise NotImplementedError

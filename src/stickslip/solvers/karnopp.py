@@ -26,9 +26,7 @@ class Karnopp(IvpSolver):
     max_step: float = np.inf
     name: str = "karnopp"
 
-    @property
-    def settings(self) -> dict:
-        return {"eta": self.eta, "method": self.method, "rtol": self.rtol, "atol": self.atol}
+    SETTING_NAMES = ("eta", "method", "rtol", "atol")
 
     @property
     def label(self) -> str:

@@ -31,9 +31,7 @@ class MoreauJean(OneDofSolver):
     name: str = "moreau"
     fixed_step = True  # its work is t_end / h steps, known before the run: it cannot stall
 
-    @property
-    def settings(self) -> dict:
-        return {"h": self.h, "theta": self.theta}
+    SETTING_NAMES = ("h", "theta")
 
     @property
     def label(self) -> str:

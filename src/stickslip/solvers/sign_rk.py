@@ -23,15 +23,7 @@ class SignRungeKutta(IvpSolver):
     """|v - V_b| [mm/s] below which a sample is labelled stick (the method itself has no stick state)."""
     name: str = "sign_rk"
 
-    @property
-    def settings(self) -> dict:
-        return {
-            "method": self.method,
-            "rtol": self.rtol,
-            "atol": self.atol,
-            "max_step": self.max_step,
-            "stick_tolerance": self.stick_tolerance,
-        }
+    SETTING_NAMES = ("method", "rtol", "atol", "max_step", "stick_tolerance")
 
     @property
     def label(self) -> str:

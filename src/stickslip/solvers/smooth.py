@@ -48,16 +48,7 @@ class SmoothedSign(IvpSolver):
     stick_tolerance: float = 1e-3
     name: str = "smooth"
 
-    @property
-    def settings(self) -> dict:
-        return {
-            "regularization": self.regularization,
-            "eps": self.eps,
-            "method": self.method,
-            "rtol": self.rtol,
-            "atol": self.atol,
-            "stick_tolerance": self.stick_tolerance,
-        }
+    SETTING_NAMES = ("regularization", "eps", "method", "rtol", "atol", "stick_tolerance")
 
     @property
     def label(self) -> str:
