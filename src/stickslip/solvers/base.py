@@ -228,8 +228,8 @@ class OneDofSolver:
       raises ``SolverError`` when it cannot proceed), and
     * ``_sample(raw, t_eval, belt_velocity) -> Samples``: that solution on the output times (not timed),
 
-    plus, where they differ from the defaults, ``settings``, ``label``, ``_integrated``, ``_solve_settings``
-    and ``_check_own_settings``. Subclasses are dataclasses with a ``name`` field.
+    plus ``SETTING_NAMES`` and, where they differ from the defaults, ``label``, ``_integrated``,
+    ``_solve_settings`` and ``_check_own_settings``. Subclasses are dataclasses with a ``name`` field.
     """
 
     name: str
