@@ -2,7 +2,16 @@
 
 from importlib import import_module
 
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError, SolverStats, Trajectory, check_settings
+from .base import (
+    SLIP_BACKWARD,
+    SLIP_FORWARD,
+    STICK,
+    OneDofSolver,
+    SolverError,
+    SolverStats,
+    Trajectory,
+    check_settings,
+)
 
 #: Method registry: config ``solver`` name -> (module, class). Later methods register here. The modules are
 #: imported on first use (module ``__getattr__``): a job that only reads trajectories and draws them need not
@@ -33,8 +42,7 @@ def make_solver(name: str, **settings):
     if name not in REGISTRY:
         raise ParameterError(f"solver: {name!r} is not one of {sorted(REGISTRY)}")
     try:
-        solver = __getattr__(REGISTRY[name][1])(**settings)
-        check_settings(solver)
+        solver = __getattr__(REGISTRY[name][1])(**settings)  # settings are checked at construction
     except (TypeError, ValueError) as exc:
         raise ParameterError(f"solver settings for {name!r}: {exc}") from None
     return solver
@@ -44,6 +52,7 @@ __all__ = [
     "SLIP_BACKWARD",
     "SLIP_FORWARD",
     "STICK",
+    "OneDofSolver",
     "SolverError",
     "SolverStats",
     "Trajectory",
@@ -53,4 +62,5 @@ __all__ = [
     "METHODS",
     "REGISTRY",
     "make_solver",
+    "check_settings",
 ]

@@ -15,6 +15,7 @@ def default_t_eval(t_end: float, t_eval=None) -> np.ndarray:
     """``t_eval`` as an array, or DEFAULT_SAMPLES evenly spaced times over [0, t_end]."""
     return np.linspace(0.0, t_end, DEFAULT_SAMPLES) if t_eval is None else np.asarray(t_eval, dtype=float)
 
+
 #: Phase codes stored per sample: slip with v < V_b, stick, slip with v > V_b.
 SLIP_BACKWARD, STICK, SLIP_FORWARD = -1, 0, 1
 
@@ -59,9 +60,12 @@ class Trajectory:
     segments: np.ndarray | None = None
 
     @classmethod
-    def failed(cls, t, belt_velocity, stats: SolverStats, method: str, settings: dict | None = None):
+    def failed(
+        cls, t, belt_velocity, stats: SolverStats, method: str, settings: dict | None = None, segments=None
+    ):
         """The one way to record a failed solve: NaN samples on ``t`` (never plotted as a result), phase 0,
-        the belt velocity for reference and the counters in ``stats`` (status 'failed' with its message)."""
+        the belt velocity for reference and the counters in ``stats`` (status 'failed' with its message).
+        ``segments``: an empty table for a method that records segments, so its datasets keep their shape."""
         t = np.asarray(t, dtype=float)
         nan = np.full(t.shape, np.nan)
         return cls(
@@ -73,6 +77,7 @@ class Trajectory:
             stats=stats,
             method=method,
             settings=dict(settings or {}),
+            segments=segments,
         )
 
     @property
@@ -123,24 +128,44 @@ IVP_METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA")
 def check_settings(solver) -> None:
     """Reject non-physical or meaningless method settings with the setting named, so a bad value in the
     config fails when the pipeline starts, not inside a job (a step or tolerance <= 0 or NaN, a count < 1,
-    theta outside (0, 1], an unknown solve_ivp method)."""
+    theta outside (0, 1], an unknown solve_ivp method). Raises ``ParameterError`` (a ``ValueError``): the
+    callers that re-key config errors catch that type."""
+    problem = settings_problem(solver)
+    if problem:
+        from ..model.params import (
+            ParameterError,  # lazy: model pulls in scipy; readers of Trajectory need not
+        )
+
+        raise ParameterError(problem)
+
+
+def settings_problem(solver) -> str:
+    """The first bad setting of ``solver`` as 'name: why, got value', or '' when all are good."""
     for name in POSITIVE_SETTINGS:
         value = getattr(solver, name, None)
-        if value is None:
-            continue
-        finite_ok = name == "max_step" and value == float("inf")
-        if not isinstance(value, (int, float)) or not (value > 0 and (finite_ok or np.isfinite(value))):
-            raise ValueError(f"{name}: must be a positive number, got {value!r}")
+        if value is not None and not _positive(value, allow_inf=name == "max_step"):
+            return f"{name}: must be a positive number, got {value!r}"
     for name in COUNT_SETTINGS:
         value = getattr(solver, name, None)
-        if value is not None and not (isinstance(value, int) and value >= 1):
-            raise ValueError(f"{name}: must be a whole number >= 1, got {value!r}")
+        if value is not None and not (_number(value, int) and value >= 1):
+            return f"{name}: must be a whole number >= 1, got {value!r}"
     theta = getattr(solver, "theta", None)
-    if theta is not None and not (isinstance(theta, (int, float)) and 0 < theta <= 1):
-        raise ValueError(f"theta: must be in (0, 1], got {theta!r}")
+    if theta is not None and not (_number(theta, (int, float)) and 0 < theta <= 1):
+        return f"theta: must be in (0, 1], got {theta!r}"
     method = getattr(solver, "method", None)
     if method is not None and method not in IVP_METHODS:
-        raise ValueError(f"method: {method!r} is not one of {IVP_METHODS}")
+        return f"method: {method!r} is not one of {IVP_METHODS}"
+    return ""
+
+
+def _number(value, kinds) -> bool:
+    return isinstance(value, kinds) and not isinstance(value, bool)  # True is an int, not a tolerance
+
+
+def _positive(value, allow_inf: bool) -> bool:
+    if not _number(value, (int, float)) or not value > 0:  # NaN fails value > 0
+        return False
+    return allow_inf and value == float("inf") or bool(np.isfinite(value))
 
 
 def reading_model(model, solver: str):
@@ -164,3 +189,115 @@ def reading_model(model, solver: str):
         f"solver: {solver!r} integrates the paper's affine friction readings only; a {law.kind!r} friction "
         "law needs the 'switch' solver (make_solver('switch'), or a method whose solver is 'switch')"
     )
+
+
+def checked_t_end(t_end, method: str) -> float:
+    """``t_end`` as a float; anything but a finite number > 0 is bad input, raised, never a failed run."""
+    try:
+        value = float(t_end)
+    except (TypeError, ValueError):
+        value = float("nan")
+    if not (np.isfinite(value) and value > 0):
+        raise SolverError(f"{method} solver: t_end must be a finite number > 0, got {t_end!r}")
+    return value
+
+
+def record_failure(stats: SolverStats, message: str) -> None:
+    stats.status, stats.message, stats.failures = "failed", message, 1
+
+
+@dataclass
+class Samples:
+    """A method's solution on the output times, as its ``_sample`` hook returns it."""
+
+    x: np.ndarray
+    v: np.ndarray
+    phase: np.ndarray
+    segments: np.ndarray | None = None
+    failure: str = ""
+    """Non-empty: the run failed although it has samples, which are kept as they are (e.g. non-finite)."""
+
+
+class OneDofSolver:
+    """The stepping contract of every 1-DOF method, split as scipy's ``OdeSolver`` splits ``step`` from
+    ``_step_impl``: this class owns ``solve()`` (model conversion, t_end check, output times, counters and
+    CPU time, a ``SolverError`` becoming ``Trajectory.failed``) and the construction-time check of the
+    settings; a method supplies only
+
+    * ``_integrate(model, t_end, stats) -> raw``: the integration itself (timed; counters go to ``stats``;
+      raises ``SolverError`` when it cannot proceed), and
+    * ``_sample(raw, t_eval, belt_velocity) -> Samples``: that solution on the output times (not timed),
+
+    plus ``SETTING_NAMES`` and, where they differ from the defaults, ``label``, ``_integrated``,
+    ``_solve_settings`` and ``_check_own_settings``. Subclasses are dataclasses with a ``name`` field.
+    """
+
+    name: str
+    #: The fields a trajectory records as the method's settings, in this order.
+    SETTING_NAMES: tuple[str, ...] = ()
+    #: A method that records stick/slip segments stores an empty table when it fails (same dataset layout).
+    records_segments = False
+
+    def __post_init__(self):
+        self._check_own_settings()  # first: a method's own list of choices is the more precise message
+        check_settings(self)
+
+    # -- hooks ----------------------------------------------------------------------------------------
+    @property
+    def settings(self) -> dict:
+        return {name: getattr(self, name) for name in self.SETTING_NAMES}
+
+    @property
+    def label(self) -> str:
+        """The method name a trajectory is stored under."""
+        return self.name
+
+    def _check_own_settings(self) -> None:
+        """Settings only this method has (the common ones are checked by ``check_settings``)."""
+
+    def _integrated(self, model):
+        """The model this method integrates: the paper's affine readings unless a method says otherwise."""
+        return reading_model(model, self.name)
+
+    def _solve_settings(self, model) -> dict:
+        return self.settings
+
+    def _integrate(self, model, t_end: float, stats: SolverStats):
+        raise NotImplementedError
+
+    def _sample(self, raw, t_eval: np.ndarray, belt_velocity: np.ndarray) -> Samples:
+        raise NotImplementedError
+
+    # -- owned here -----------------------------------------------------------------------------------
+    def solve(self, model, t_end: float, t_eval=None) -> Trajectory:
+        """Samples on ``t_eval`` (default DEFAULT_SAMPLES points over [0, t_end]); bad input raises, a run
+        that cannot proceed is a failed trajectory with its counters."""
+        model = self._integrated(model)
+        t_end = checked_t_end(t_end, self.name)
+        stats = SolverStats()
+        with Timer() as timer:
+            try:
+                raw = self._integrate(model, t_end, stats)
+            except SolverError as exc:
+                record_failure(stats, str(exc))
+        stats.cpu_time = timer.elapsed
+        t_eval = default_t_eval(t_end, t_eval)
+        belt = model.belt_velocity(t_eval)
+        settings = self._solve_settings(model)
+        if stats.status == "failed":
+            no_segments = np.empty((0, 3)) if self.records_segments else None
+            return Trajectory.failed(t_eval, belt, stats, self.label, settings, segments=no_segments)
+        samples = self._sample(raw, t_eval, belt)
+        if samples.failure:
+            record_failure(stats, samples.failure)
+        return Trajectory(
+            t=t_eval,
+            x=samples.x,
+            v=samples.v,
+            phase=samples.phase,
+            belt_velocity=belt,
+            stats=stats,
+            method=self.label,
+            settings=settings,
+            segments=samples.segments,
+        )

@@ -1,21 +1,28 @@
-"""The contract of the event-driven solvers (exact, switch), as scipy's ``OdeSolver`` splits its own.
+"""The event-driven family (exact, switch) of the 1-DOF contract (``base.OneDofSolver``).
 
-The base class owns what every such solver does the same way: ``solve()`` (sample times, counters, CPU time,
-a ``SolverError`` while building the phases becomes a failed run, never a result) and the phase loop
-(segment budget, the zero-length guard, the set-valued decision at v_r = 0, the belt's stop as a scheduled
-event). A subclass supplies only its phases: ``_phase`` (one stick or slip phase and the mode after it),
-``_mode_from_state`` and ``_contact_decision``, and, where it integrates a model of its own kind,
-``_integrated``. Settings are checked in the subclass's constructor.
+``solve()`` is the contract's; this family's ``_integrate`` is the phase loop (segment budget, the
+zero-length guard, the set-valued decision at v_r = 0, the belt's stop as a scheduled event) and its
+``_sample`` evaluates the segments on the output times. A subclass supplies only its phases: ``_phase`` (one
+stick or slip phase and the mode after it), ``_mode_from_state`` and ``_contact_decision``, and, where it
+integrates a model of its own kind, ``_integrated``.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from .base import STICK, SolverError, SolverStats, Timer, Trajectory, default_t_eval
+from .base import (
+    SLIP_BACKWARD,
+    SLIP_FORWARD,
+    STICK,
+    OneDofSolver,
+    Samples,
+    SolverError,
+    SolverStats,
+    checked_t_end,
+)
 
 
 @dataclass(frozen=True)
@@ -42,34 +49,23 @@ class Segment:
         return self.motion.state(np.asarray(t, dtype=float) - self.t0)
 
 
-def _check_t_end(t_end) -> float:
-    try:
-        value = float(t_end)
-    except (TypeError, ValueError):
-        value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        raise SolverError(f"exact solver: t_end must be a finite number > 0, got {t_end!r}")
-    return value
-
-
-class EventDrivenSolver:
+class EventDrivenSolver(OneDofSolver):
     """Base of the event-driven solvers: subclasses are dataclasses with ``name``, ``max_segments``,
     ``max_zero_length`` and ``settings``, and implement the phase hooks below."""
 
-    name: str
     max_segments: int
     max_zero_length: int
+    records_segments = True
 
     # -- hooks ----------------------------------------------------------------------------------------
-    def _integrated(self, model):
-        """The model this solver integrates (a conversion of ``model`` where it needs one)."""
-        return model
-
-    def _solve_settings(self, model) -> dict:
-        return self.settings
-
     def _mode_from_state(self, model, t: float, x: float, v: float):
-        raise NotImplementedError
+        """Slip the way v_r points, or 'contact' (decided by ``_contact_decision``) where v_r = 0."""
+        vr = v - float(model.belt_velocity(t))
+        if vr > 0:
+            return SLIP_FORWARD
+        if vr < 0:
+            return SLIP_BACKWARD
+        return "contact"
 
     def _contact_decision(self, model, t: float, x: float):
         raise NotImplementedError
@@ -79,17 +75,19 @@ class EventDrivenSolver:
         'contact' means v_r = 0 and the next mode is decided there)."""
         raise NotImplementedError
 
-    # -- owned here -----------------------------------------------------------------------------------
-    def solve(self, model, t_end: float, t_eval=None) -> Trajectory:
-        integrated = self._integrated(model)
-        settings = self._solve_settings(integrated)
-        return trajectory_from_segments(self.segments, integrated, t_end, t_eval, self.name, settings)
+    # -- the family's part of the contract -----------------------------------------------------------
+    def _sample(self, segments: list[Segment], t_eval: np.ndarray, belt_velocity) -> Samples:
+        x, v, phase = sample_segments(segments, t_eval)
+        table = np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3)
+        return Samples(x, v, phase, segments=table)
 
     def segments(self, model, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
-        """The phases of the motion up to ``t_end``."""
-        model = self._integrated(model)
+        """The phases of the motion up to ``t_end`` (a ``SolverError`` when they cannot be built)."""
         stats = stats if stats is not None else SolverStats()
-        t_end = _check_t_end(t_end)
+        return self._integrate(self._integrated(model), checked_t_end(t_end, self.name), stats)
+
+    def _integrate(self, model, t_end: float, stats: SolverStats) -> list[Segment]:
+        """The phase loop, on the integrated model up to a checked ``t_end``."""
         p = model.params
         stop = p.belt_stop_time
         t, x, v = 0.0, float(p.x0), float(p.v0)
@@ -122,34 +120,6 @@ class EventDrivenSolver:
                 next_mode = self._mode_from_state(model, t, x, v)  # the belt just stopped: decide again
             mode = next_mode
         return out
-
-
-def trajectory_from_segments(segments_of, model, t_end, t_eval, method: str, settings: dict) -> Trajectory:
-    """The solve of an event-driven solver (exact, switch): ``segments_of(model, t_end, stats)`` gives the
-    phases of the motion, sampled on ``t_eval`` (default DEFAULT_SAMPLES points); a ``SolverError`` while
-    building them is a failed run whose samples past the last good segment are NaN."""
-    stats = SolverStats()
-    t_end = _check_t_end(t_end)  # bad input is an error, not a failed run
-    with Timer() as timer:
-        try:
-            segments = segments_of(model, t_end, stats)
-        except SolverError as exc:
-            stats.status, stats.message, stats.failures = "failed", str(exc), 1
-            segments = []
-    stats.cpu_time = timer.elapsed
-    t_eval = default_t_eval(t_end, t_eval)
-    x, v, phase = sample_segments(segments, t_eval)
-    return Trajectory(
-        t=t_eval,
-        x=x,
-        v=v,
-        phase=phase,
-        belt_velocity=model.belt_velocity(t_eval),
-        stats=stats,
-        method=method,
-        settings=settings,
-        segments=np.array([[s.t0, s.t1, s.phase] for s in segments]).reshape(-1, 3),
-    )
 
 
 def sample_segments(segments: list[Segment], t_eval: np.ndarray):

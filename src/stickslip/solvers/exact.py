@@ -17,14 +17,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..model.equations import BeltModel
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, reading_model
-from .events import (
-    EventDrivenSolver,
-    Segment,
-    StickMotion,
-    sample_segments,
-    trajectory_from_segments,
-)
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
+from .events import EventDrivenSolver, Segment, StickMotion, sample_segments
 from .linear import LinearSegment
 
 __all__ = [
@@ -33,7 +27,6 @@ __all__ = [
     "StickMotion",
     "first_exit_root",
     "sample_segments",
-    "trajectory_from_segments",
 ]
 
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
@@ -76,12 +69,7 @@ class ExactSwitchSolver(EventDrivenSolver):
     max_zero_length: int = 50
     name: str = "exact"
 
-    @property
-    def settings(self) -> dict:
-        return {"samples_per_period": self.samples_per_period, "graze_tolerance": self.graze_tolerance}
-
-    def _integrated(self, model):
-        return reading_model(model, self.name)
+    SETTING_NAMES = ("samples_per_period", "graze_tolerance")
 
     def _phase(self, model, mode, t, x, v, t_limit, stats):
         if mode == STICK:
@@ -94,15 +82,6 @@ class ExactSwitchSolver(EventDrivenSolver):
         return seg, next_mode
 
     # -- pieces ---------------------------------------------------------------------------------------
-    @staticmethod
-    def _mode_from_state(model, t, x, v):
-        vr = v - float(model.belt_velocity(t))
-        if vr > 0:
-            return SLIP_FORWARD
-        if vr < 0:
-            return SLIP_BACKWARD
-        return "contact"
-
     @staticmethod
     def _contact_decision(model: BeltModel, t: float, x: float):
         """Stick or the slip direction at v_r = 0 (Filippov's rule; sgn(0) = 0 where v_r = 0 repels)."""

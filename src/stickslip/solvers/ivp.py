@@ -1,4 +1,10 @@
-"""The part every solve_ivp-based method shares: count, time, integrate, sample, record failures."""
+"""The solve_ivp family (sign-RK, smoothed, Karnopp) of the 1-DOF contract (``base.OneDofSolver``).
+
+``solve()`` is the contract's; this family's ``_integrate`` hands the method's right-hand side (and Jacobian,
+where it has one) to scipy's ``solve_ivp`` with dense output, counting their evaluations so the counters mean
+the same for every method, and its ``_sample`` evaluates the dense output on the output times and labels
+stick by the method's band. A method supplies only ``_rhs`` (and ``_jac``, ``_stick_band``, ``label``).
+"""
 
 from __future__ import annotations
 
@@ -7,82 +13,70 @@ from collections.abc import Callable
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..model.equations import BeltModel
-from .base import SolverStats, Timer, Trajectory, classify_phase, default_t_eval  # noqa: F401 (re-exported)
+from .base import OneDofSolver, Samples, SolverError, SolverStats, classify_phase
 
 
-def integrate(
-    model: BeltModel,
-    rhs: Callable,
-    t_end: float,
-    t_eval: np.ndarray,
-    *,
-    method: str,
-    rtol: float,
-    atol: float,
-    max_step: float,
-    stick_tolerance: float,
-    label: str,
-    settings: dict,
-    jac: Callable | None = None,
-) -> Trajectory:
-    """Integrate ``rhs`` from the model's initial state; a solver error or non-finite state is a failed run.
+def counted(fn: Callable, counts: dict, key: str) -> Callable:
+    """``fn`` that adds one to ``counts[key]`` per call."""
 
-    ``rhs`` and ``jac`` are counted here, so the counters are the same for every method.
-    """
-    stats = SolverStats()
-    counts = {"rhs": 0, "jac": 0}
+    def wrapper(t, y):
+        counts[key] += 1
+        return fn(t, y)
 
-    def counted_rhs(t, y):
-        counts["rhs"] += 1
-        return rhs(t, y)
+    return wrapper
 
-    kwargs = {}
-    if jac is not None:
 
-        def counted_jac(t, y):
-            counts["jac"] += 1
-            return jac(t, y)
+class IvpSolver(OneDofSolver):
+    """Base of the solve_ivp methods: subclasses are dataclasses with ``method``, ``rtol``, ``atol`` and
+    ``max_step`` fields and implement ``_rhs``."""
 
-        kwargs["jac"] = counted_jac
-    sol = None
-    with Timer() as timer:
+    method: str
+    rtol: float
+    atol: float
+    max_step: float
+
+    # -- hooks ----------------------------------------------------------------------------------------
+    def _rhs(self, model) -> Callable:
+        """The right-hand side f(t, y), y = (x, v), this method integrates."""
+        raise NotImplementedError
+
+    def _jac(self, model) -> Callable | None:
+        """Its Jacobian, for the implicit methods; None: solve_ivp estimates it where it needs one."""
+        return None
+
+    def _stick_band(self) -> float:
+        """|v - V_b| [mm/s] below which a sample is labelled stick (these methods have no stick state)."""
+        return self.stick_tolerance
+
+    # -- the family's part of the contract -----------------------------------------------------------
+    def _integrate(self, model, t_end: float, stats: SolverStats):
+        counts = {"rhs": 0, "jac": 0}
+        jac = self._jac(model)
+        kwargs = {} if jac is None else {"jac": counted(jac, counts, "jac")}
         try:
             sol = solve_ivp(
-                counted_rhs,
+                counted(self._rhs(model), counts, "rhs"),
                 (0.0, t_end),
                 [model.params.x0, model.params.v0],
-                method=method,
-                rtol=rtol,
-                atol=atol,
-                max_step=max_step,
+                method=self.method,
+                rtol=self.rtol,
+                atol=self.atol,
+                max_step=self.max_step,
                 dense_output=True,
                 **kwargs,
             )
         except (ValueError, ArithmeticError) as exc:  # e.g. a non-finite Jacobian
-            stats.message = f"{type(exc).__name__}: {exc}"
-    stats.cpu_time = timer.elapsed
-    stats.rhs_evaluations = counts["rhs"]
-    stats.jacobian_evaluations = counts["jac"]
-    if sol is None or not sol.success:
-        stats.status, stats.failures = "failed", 1
-        stats.message = stats.message or str(sol.message)
-        x = np.full(t_eval.shape, np.nan)
-        v = np.full(t_eval.shape, np.nan)
-    else:
+            raise SolverError(f"{type(exc).__name__}: {exc}") from None
+        finally:  # the work done counts on a failed run too
+            stats.rhs_evaluations, stats.jacobian_evaluations = counts["rhs"], counts["jac"]
+        if not sol.success:
+            raise SolverError(str(sol.message))
         stats.steps = max(len(sol.t) - 1, 0)
         stats.min_step = float(np.min(np.diff(sol.t))) if len(sol.t) > 1 else float("nan")
+        return sol
+
+    def _sample(self, sol, t_eval: np.ndarray, belt_velocity: np.ndarray) -> Samples:
         x, v = sol.sol(t_eval)
-        if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
-            stats.status, stats.message, stats.failures = "failed", "non-finite state", 1
-    vb = model.belt_velocity(t_eval)
-    return Trajectory(
-        t=t_eval,
-        x=x,
-        v=v,
-        phase=classify_phase(v, vb, stick_tolerance),
-        belt_velocity=vb,
-        stats=stats,
-        method=label,
-        settings=settings,
-    )
+        finite = np.all(np.isfinite(x)) and np.all(np.isfinite(v))
+        phase = classify_phase(v, belt_velocity, self._stick_band())
+        return Samples(x, v, phase, failure="" if finite else "non-finite state")

@@ -13,13 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.equations import BeltModel
-from .base import Trajectory, reading_model
-from .ivp import default_t_eval, integrate
+from .ivp import IvpSolver
 
 
 @dataclass
-class Karnopp:
+class Karnopp(IvpSolver):
     eta: float = 1e-3
     """Half-width of the stick band [mm/s]."""
     method: str = "RK45"
@@ -28,15 +26,16 @@ class Karnopp:
     max_step: float = np.inf
     name: str = "karnopp"
 
-    @property
-    def settings(self) -> dict:
-        return {"eta": self.eta, "method": self.method, "rtol": self.rtol, "atol": self.atol}
+    SETTING_NAMES = ("eta", "method", "rtol", "atol")
 
-    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        model = reading_model(model, self.name)
-        if self.eta <= 0:
-            raise ValueError(f"eta: must be > 0, got {self.eta!r}")
-        t_eval = default_t_eval(t_end, t_eval)
+    @property
+    def label(self) -> str:
+        return f"{self.name}_{self.method}"
+
+    def _stick_band(self) -> float:
+        return self.eta  # the band is where this method sticks
+
+    def _rhs(self, model):
         p, f, m = model.params, model.friction, model.mass
         a_abs = abs(f.a)
         eta = self.eta
@@ -52,16 +51,4 @@ class Karnopp:
                 return np.array([v, model.acceleration(t, x, v, sign=lambda _u: s_eff)])
             return np.array([v, model.acceleration(t, x, v)])
 
-        return integrate(
-            model,
-            rhs,
-            t_end,
-            t_eval,
-            method=self.method,
-            rtol=self.rtol,
-            atol=self.atol,
-            max_step=self.max_step,
-            stick_tolerance=eta,
-            label=f"{self.name}_{self.method}",
-            settings=self.settings,
-        )
+        return rhs

@@ -19,22 +19,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.equations import BeltModel
-from .base import (
-    SLIP_BACKWARD,
-    SLIP_FORWARD,
-    STICK,
-    SolverError,
-    SolverStats,
-    Timer,
-    Trajectory,
-    default_t_eval,
-    reading_model,
-)
+from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, OneDofSolver, Samples, SolverError, SolverStats
 
 
 @dataclass
-class MoreauJean:
+class MoreauJean(OneDofSolver):
     h: float = 1e-3
     """Time step [s]."""
     theta: float = 0.5
@@ -42,47 +31,20 @@ class MoreauJean:
     name: str = "moreau"
     fixed_step = True  # its work is t_end / h steps, known before the run: it cannot stall
 
+    SETTING_NAMES = ("h", "theta")
+
     @property
-    def settings(self) -> dict:
-        return {"h": self.h, "theta": self.theta}
+    def label(self) -> str:
+        return f"{self.name}_theta{self.theta:g}"
 
-    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        model = reading_model(model, self.name)
-        if not self.h > 0:
-            raise ValueError(f"h: must be > 0, got {self.h!r}")
-        if not 0.0 < self.theta <= 1.0:  # the range check_settings enforces at parse time
-            raise ValueError(f"theta: must be in (0, 1], got {self.theta!r}")
-        t_eval = default_t_eval(t_end, t_eval)
-        stats = SolverStats()
-        with Timer() as timer:
-            try:
-                ts, xs, vs, ph = self._march(model, t_end, stats)
-            except SolverError as exc:
-                stats.status, stats.message, stats.failures = "failed", str(exc), 1
-                ts = xs = vs = ph = None
-        stats.cpu_time = timer.elapsed
-        vb = model.belt_velocity(t_eval)
-        if ts is None:
-            x = np.full(t_eval.shape, np.nan)
-            v = np.full(t_eval.shape, np.nan)
-            phase = np.zeros(t_eval.shape, dtype=np.int8)
-        else:
-            x = np.interp(t_eval, ts, xs)
-            v = np.interp(t_eval, ts, vs)
-            idx = np.clip(np.searchsorted(ts, t_eval, side="right"), 1, len(ts) - 1)
-            phase = ph[idx - 1].astype(np.int8)  # the step that contains the sample
-        return Trajectory(
-            t=t_eval,
-            x=x,
-            v=v,
-            phase=phase,
-            belt_velocity=vb,
-            stats=stats,
-            method=f"{self.name}_theta{self.theta:g}",
-            settings=self.settings,
-        )
+    def _sample(self, steps, t_eval: np.ndarray, belt_velocity) -> Samples:
+        """Linear between the step points; each sample takes the phase of the step that contains it."""
+        ts, xs, vs, ph = steps
+        idx = np.clip(np.searchsorted(ts, t_eval, side="right"), 1, len(ts) - 1)
+        return Samples(np.interp(t_eval, ts, xs), np.interp(t_eval, ts, vs), ph[idx - 1].astype(np.int8))
 
-    def _march(self, model, t_end, stats):
+    def _integrate(self, model, t_end: float, stats: SolverStats):
+        """The fixed-step march: (step times, x, v at them, the phase of each step)."""
         p, f, m = model.params, model.friction, model.mass
         n = int(np.ceil(t_end / self.h - 1e-9))
         if n > self.max_steps:

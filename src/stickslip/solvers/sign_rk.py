@@ -10,13 +10,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.equations import BeltModel
-from .base import Trajectory, reading_model
-from .ivp import default_t_eval, integrate
+from .ivp import IvpSolver
 
 
 @dataclass
-class SignRungeKutta:
+class SignRungeKutta(IvpSolver):
     method: str = "RK45"
     rtol: float = 1e-3
     atol: float = 1e-6
@@ -25,28 +23,11 @@ class SignRungeKutta:
     """|v - V_b| [mm/s] below which a sample is labelled stick (the method itself has no stick state)."""
     name: str = "sign_rk"
 
-    @property
-    def settings(self) -> dict:
-        return {
-            "method": self.method,
-            "rtol": self.rtol,
-            "atol": self.atol,
-            "max_step": self.max_step,
-            "stick_tolerance": self.stick_tolerance,
-        }
+    SETTING_NAMES = ("method", "rtol", "atol", "max_step", "stick_tolerance")
 
-    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        model = reading_model(model, self.name)
-        return integrate(
-            model,
-            model.rhs,
-            t_end,
-            default_t_eval(t_end, t_eval),
-            method=self.method,
-            rtol=self.rtol,
-            atol=self.atol,
-            max_step=self.max_step,
-            stick_tolerance=self.stick_tolerance,
-            label=f"{self.name}_{self.method}",
-            settings=self.settings,
-        )
+    @property
+    def label(self) -> str:
+        return f"{self.name}_{self.method}"
+
+    def _rhs(self, model):
+        return model.rhs

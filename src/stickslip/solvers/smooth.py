@@ -12,9 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.equations import BeltModel
-from .base import Trajectory, reading_model
-from .ivp import default_t_eval, integrate
+from ..model.params import ParameterError
+from .ivp import IvpSolver
 
 REGULARIZATIONS = ("tanh", "arctan")
 
@@ -33,8 +32,12 @@ def smooth_sign(kind: str, eps: float):
     raise ValueError(f"regularization: {kind!r} is not one of {REGULARIZATIONS}")
 
 
+#: solve_ivp's explicit methods: they take no Jacobian.
+EXPLICIT_METHODS = ("RK45", "DOP853", "RK23")
+
+
 @dataclass
-class SmoothedSign:
+class SmoothedSign(IvpSolver):
     regularization: str = "tanh"
     eps: float = 1e-3
     """Regularization velocity [mm/s]."""
@@ -45,43 +48,33 @@ class SmoothedSign:
     stick_tolerance: float = 1e-3
     name: str = "smooth"
 
-    @property
-    def settings(self) -> dict:
-        return {
-            "regularization": self.regularization,
-            "eps": self.eps,
-            "method": self.method,
-            "rtol": self.rtol,
-            "atol": self.atol,
-            "stick_tolerance": self.stick_tolerance,
-        }
+    SETTING_NAMES = ("regularization", "eps", "method", "rtol", "atol", "stick_tolerance")
 
-    def solve(self, model: BeltModel, t_end: float, t_eval=None) -> Trajectory:
-        model = reading_model(model, self.name)
-        t_eval = default_t_eval(t_end, t_eval)
-        sgn, dsgn = smooth_sign(self.regularization, self.eps)
-        p, f, m = model.params, model.friction, model.mass
+    @property
+    def label(self) -> str:
+        return f"{self.name}_{self.regularization}_{self.method}"
+
+    def _check_own_settings(self):
+        if self.regularization not in REGULARIZATIONS:
+            raise ParameterError(f"regularization: {self.regularization!r} is not one of {REGULARIZATIONS}")
+
+    def _rhs(self, model):
+        sgn, _ = smooth_sign(self.regularization, self.eps)
 
         def rhs(t, y):
             return model.rhs(t, y, sign=sgn)
+
+        return rhs
+
+    def _jac(self, model):
+        if self.method in EXPLICIT_METHODS:
+            return None
+        _, dsgn = smooth_sign(self.regularization, self.eps)
+        p, f, m = model.params, model.friction, model.mass
 
         def jac(t, y):
             vr = y[1] - float(model.belt_velocity(t))
             dfdv = f.a * dsgn(vr) + f.b - p.damping
             return np.array([[0.0, 1.0], [-p.stiffness / m, dfdv / m]])
 
-        explicit = self.method in ("RK45", "DOP853", "RK23")
-        return integrate(
-            model,
-            rhs,
-            t_end,
-            t_eval,
-            method=self.method,
-            rtol=self.rtol,
-            atol=self.atol,
-            max_step=self.max_step,
-            stick_tolerance=self.stick_tolerance,
-            label=f"{self.name}_{self.regularization}_{self.method}",
-            settings=self.settings,
-            jac=None if explicit else jac,
-        )
+        return jac

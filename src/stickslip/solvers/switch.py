@@ -37,6 +37,9 @@ from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError
 from .events import EventDrivenSolver, Segment, StickMotion
 from .exact import first_exit_root
 
+#: solve_ivp methods a slip phase may use.
+SWITCH_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+
 
 @dataclass(frozen=True)
 class DenseMotion:
@@ -74,35 +77,17 @@ class SwitchSolver(EventDrivenSolver):
     max_zero_length: int = 50
     name: str = "switch"
 
-    def __post_init__(self):
-        for key in ("rtol", "atol", "graze_tolerance"):
-            value = getattr(self, key)
-            if (
-                isinstance(value, bool)
-                or not isinstance(value, (int, float))
-                or not (math.isfinite(value) and value > 0)
-            ):
-                raise ParameterError(f"{key}: must be a finite number > 0, got {value!r}")
-        if self.method not in ("DOP853", "RK45", "Radau", "LSODA"):
-            raise ParameterError(f"method: {self.method!r} is not one of DOP853, RK45, Radau, LSODA")
+    def _check_own_settings(self):
+        if self.method not in SWITCH_METHODS:
+            raise ParameterError(f"method: {self.method!r} is not one of {', '.join(SWITCH_METHODS)}")
 
-    @property
-    def settings(self) -> dict:
-        return {
-            "rtol": self.rtol,
-            "atol": self.atol,
-            "method": self.method,
-            "graze_tolerance": self.graze_tolerance,
-        }
+    SETTING_NAMES = ("rtol", "atol", "method", "graze_tolerance")
 
     def _integrated(self, model) -> LawModel:
         return as_law_model(model)
 
     def _solve_settings(self, model) -> dict:
         return {**self.settings, "law": model.law.describe()}
-
-    def _mode_from_state(self, lm, t, x, v):
-        return _mode_from_state(lm, t, x, v)
 
     def _contact_decision(self, lm, t, x):
         return contact_decision(lm, t, x)
@@ -204,15 +189,6 @@ def smooth_interval(nodes: tuple[float, ...], rel: float, rate: float) -> tuple[
         if 0 <= j < len(nodes) and abs(nodes[j] - rel) <= 1e-9 * max(nodes[j], abs(rel)):
             return (nodes[j], node(j + 1)) if rate >= 0 else (node(j - 1), nodes[j])
     return node(i - 1), node(i)
-
-
-def _mode_from_state(lm: LawModel, t: float, x: float, v: float):
-    vr = v - float(lm.belt_velocity(t))
-    if vr > 0:
-        return SLIP_FORWARD
-    if vr < 0:
-        return SLIP_BACKWARD
-    return "contact"
 
 
 def contact_decision(lm: LawModel, t: float, x: float):
