@@ -14,7 +14,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..model.equations import BeltModel
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
@@ -239,6 +238,9 @@ class ExactSwitchSolver(EventDrivenSolver):
         g_k - bound * (hi - lo)^2 / 2 > tol cannot hide a touch or a crossing (the true minimum is within
         (hi - lo) / 2 of a sample, so at most bound * (hi - lo)^2 / 8 below it) and needs no root search: the
         result is the same, found without evaluating the gap at every oscillation of a long slip."""
+        # imported here: the config check at parse time builds every solver, and scipy.optimize is ~0.5 s
+        from scipy.optimize import brentq
+
         nonpos = np.nonzero(gaps[1:] <= 0.0)[0]
         first_cross = nonpos[0] + 1 if nonpos.size else len(gaps)
         # interior local minima of the gap before the first crossing could hide a touch or a double root

@@ -11,7 +11,6 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from .base import OneDofSolver, Samples, SolverError, SolverStats, classify_phase
 
@@ -50,6 +49,9 @@ class IvpSolver(OneDofSolver):
 
     # -- the family's part of the contract -----------------------------------------------------------
     def _integrate(self, model, t_end: float, stats: SolverStats):
+        # imported here: the config check at parse time builds every solver, and scipy.integrate is ~0.5 s
+        from scipy.integrate import solve_ivp
+
         counts = {"rhs": 0, "jac": 0}
         jac = self._jac(model)
         kwargs = {} if jac is None else {"jac": counted(jac, counts, "jac")}

@@ -28,7 +28,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
@@ -119,6 +118,8 @@ class SwitchSolver(EventDrivenSolver):
 
     def _slip(self, lm: LawModel, t0: float, x0: float, v0: float, s: int, t_limit: float, stats):
         """One slip phase in direction s; it ends at v_r = 0 ('contact'), a law breakpoint or t_limit."""
+        from scipy.integrate import solve_ivp  # here: the parse-time config check builds every solver
+
         vb = lm.belt_velocity
 
         def rhs(t, y):

@@ -9,7 +9,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..solvers.base import STICK
 
@@ -44,6 +43,8 @@ def record_from_segments(segments, samples: int = 64) -> EventRecord:
     Extrema are the roots of v = 0 inside slip phases, bracketed on ``samples`` points and refined with
     Brent's method on the phase's own (closed-form or dense) solution.
     """
+    from scipy.optimize import brentq  # here: the parse-time config check imports this module
+
     onsets, releases, extrema = [], [], []
     for k, seg in enumerate(segments):
         if seg.phase == STICK:
