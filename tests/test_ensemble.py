@@ -16,7 +16,7 @@ from stickslip.ensemble import (
     ensemble_dataset,
     members,
     perturbed_mapping,
-    step_mapping,
+    scaled_mapping,
 )
 
 MAPPING = {"params": {"mass": 1.0, "x0": 0.0, "n": 3, "flag": True}, "solver": {"safety_factor": 0.9}}
@@ -104,8 +104,8 @@ def test_declared_fields_match_a_path_or_its_tail_with_list_positions_dropped():
 
 
 def test_step_member_only_where_a_step_setting_exists():
-    assert step_mapping(MAPPING, 0.8, ("safety_factor",))["solver"]["safety_factor"] == pytest.approx(0.72)
-    assert step_mapping({"params": {"mass": 1.0}}, 0.8, ("safety_factor",)) is None
+    assert scaled_mapping(MAPPING, 0.8, ("safety_factor",))["solver"]["safety_factor"] == pytest.approx(0.72)
+    assert scaled_mapping({"params": {"mass": 1.0}}, 0.8, ("safety_factor",)) is None
     labels = [label for label, _, _ in members({"params": {"mass": 1.0}}, EnsembleSpec(), **RUN)]
     assert labels == ["base", "perturbed-1", "perturbed-2", "blas-threads-1"]
     assert "step" in [label for label, _, _ in members(MAPPING, EnsembleSpec().without_blas(), **RUN)]
@@ -247,3 +247,31 @@ def test_identical_members_decide_even_at_zero_margin():
     }
     res = evaluate(row, "", lambda p: zero)
     assert res.status == "deviates" and res.margin == 0.0 and res.spread == 0.0
+
+
+def test_window_member_starts_the_steady_window_later_and_only_where_a_run_has_one():
+    spec = EnsembleSpec(seeds=(), window_factor=1.25, blas_threads=None)
+    labels = {label: m for label, m, _ in members({"defaults": {"transient": 10.0, "t_end": 40.0}}, spec, **RUN)}
+    assert labels["window"]["defaults"] == {"transient": 12.5, "t_end": 40.0}
+    assert "window" not in {label for label, *_ in members({"fe": {"t_end": 1.0}}, spec, **RUN)}
+    assert "window" not in {label for label, *_ in members({"transient": 0.0}, spec, **RUN)}
+    with pytest.raises(ValueError, match="window_factor"):
+        EnsembleSpec(window_factor=1.0)
+
+
+def test_window_member_leaves_a_limit_cycle_alone_and_unsettles_a_decaying_run():
+    """Fig. 2 in the consistent reading is a stick-slip limit cycle: its amplitude does not depend on where
+    the steady window starts. In Eq. 4 as printed the run decays to rest, and what is left at the window's
+    start is all its 'amplitude' measures: the window member moves it by far more than the base value's 3
+    spreads could ever tolerate, so such a number decides nothing."""
+    from stickslip import simulate
+
+    def spread(reading):
+        ds = simulate("fig02", reading=reading, ensemble=True)
+        members = ds["amplitude_peak_to_peak_ensemble"].values
+        labels = list(ds[f"{MEMBER_DIM}_label"].values)
+        assert "window" in labels
+        return float(np.ptp(members)) / abs(float(members[0]))
+
+    assert spread("consistent_caption") < 1e-2
+    assert spread("eq4_caption") > 0.5

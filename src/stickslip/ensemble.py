@@ -11,6 +11,11 @@ mapping and on perturbed copies of it:
 * ``step``: the step-controlling settings named in ``step_keys`` (tolerances, fixed steps, safety factors)
   multiplied by ``step_factor`` - a second time step for the time-stepping methods; left out when the
   mapping has none of them (the exact solver has no step), so it never duplicates the base run;
+* ``window``: the measurement window's start (``window_keys``: the 1-DOF ``transient``) times
+  ``window_factor``, the same run measured over a later, shorter steady window. On a limit cycle every metric
+  stays put; on a run that decays to rest the amplitudes are what is left of a transient where the window
+  begins, and this member moves them by orders of magnitude: such numbers are never ordered (a window is a
+  measuring choice, and a result must not depend on it). Left out when the mapping has no window start;
 * ``blas-threads-<n>``: the base mapping run with the BLAS limited to ``n`` threads (a different summation
   order in every BLAS call).
 
@@ -36,6 +41,8 @@ SUFFIX = "_ensemble"
 
 #: Settings that control a time step or an error tolerance (1-DOF methods and the FE solvers).
 DEFAULT_STEP_KEYS = ("rtol", "atol", "h", "max_step", "safety_factor", "eta", "first_step")
+#: Settings where a run's measurement window starts (the 1-DOF steady window; the FE scenes have none).
+DEFAULT_WINDOW_KEYS = ("transient",)
 
 
 @dataclass(frozen=True)
@@ -47,12 +54,16 @@ class EnsembleSpec:
     step_factor: float = 0.5
     step_keys: tuple[str, ...] = DEFAULT_STEP_KEYS
     blas_threads: int | None = 1
+    window_factor: float | None = None
+    window_keys: tuple[str, ...] = DEFAULT_WINDOW_KEYS
 
     def __post_init__(self):
         if not (np.isfinite(self.relative) and 0 < self.relative < 1e-3):
             raise ValueError(f"ensemble.relative: must be in (0, 1e-3), got {self.relative!r}")
         if not (np.isfinite(self.step_factor) and 0 < self.step_factor < 1):
             raise ValueError(f"ensemble.step_factor: must be in (0, 1), got {self.step_factor!r}")
+        if self.window_factor is not None and not (np.isfinite(self.window_factor) and 1 < self.window_factor <= 2):
+            raise ValueError(f"ensemble.window_factor: must be in (1, 2], got {self.window_factor!r}")
         if self.blas_threads is not None and int(self.blas_threads) < 1:
             raise ValueError(f"ensemble.blas_threads: must be >= 1, got {self.blas_threads!r}")
 
@@ -65,7 +76,7 @@ class EnsembleSpec:
     def from_mapping(cls, data: Mapping | None) -> EnsembleSpec:
         """From the ``ensemble`` config section (its keys and types checked by the typed config layer)."""
         data = {k: v for k, v in (data or {}).items() if v is not None}
-        for key in ("seeds", "step_keys"):
+        for key in ("seeds", "step_keys", "window_keys"):
             if key in data:
                 data[key] = tuple(data[key])
         return cls(**data)
@@ -121,8 +132,9 @@ def perturbed_mapping(
     return _map_numbers(copy.deepcopy(dict(mapping)), scale)
 
 
-def step_mapping(mapping: Mapping, factor: float, keys: tuple[str, ...]) -> dict | None:
-    """The mapping with its step/tolerance settings times ``factor``; None when it has none."""
+def scaled_mapping(mapping: Mapping, factor: float, keys: tuple[str, ...]) -> dict | None:
+    """The mapping with every setting named in ``keys`` times ``factor``; None when that changes nothing
+    (no such setting, or only zeros)."""
     scaled = _map_numbers(
         copy.deepcopy(dict(mapping)), lambda _p, key, v: float(v) * factor if key in keys else v
     )
@@ -138,9 +150,12 @@ def members(
         (f"perturbed-{s}", perturbed_mapping(mapping, spec.relative, s, run_id=run_id, fields=fields), None)
         for s in spec.seeds
     ]
-    stepped = step_mapping(mapping, spec.step_factor, spec.step_keys)
+    stepped = scaled_mapping(mapping, spec.step_factor, spec.step_keys)
     if stepped is not None:
         out.append(("step", stepped, None))
+    windowed = scaled_mapping(mapping, spec.window_factor, spec.window_keys) if spec.window_factor else None
+    if windowed is not None:
+        out.append(("window", windowed, None))
     if spec.blas_threads is not None:
         out.append((f"blas-threads-{spec.blas_threads}", dict(mapping), int(spec.blas_threads)))
     return out

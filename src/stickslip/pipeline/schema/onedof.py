@@ -294,6 +294,10 @@ class Ensemble(Section):
     step_factor: Annotated[float, Field(gt=0, lt=1, allow_inf_nan=False)] | None = None
     step_keys: list[str] | None = None
     blas_threads: Annotated[int, Field(ge=1)] | None = None
+    window_factor: Annotated[float, Field(gt=1, le=2, allow_inf_nan=False)] | None = Field(
+        None, description="a later measurement-window start (transient x factor) as one more member"
+    )
+    window_keys: list[str] | None = None
 
 
 class Notebook(Section):
