@@ -251,7 +251,8 @@ def test_identical_members_decide_even_at_zero_margin():
 
 def test_window_member_starts_the_steady_window_later_and_only_where_a_run_has_one():
     spec = EnsembleSpec(seeds=(), window_factor=1.25, blas_threads=None)
-    labels = {label: m for label, m, _ in members({"defaults": {"transient": 10.0, "t_end": 40.0}}, spec, **RUN)}
+    run = {"defaults": {"transient": 10.0, "t_end": 40.0}}
+    labels = {label: m for label, m, _ in members(run, spec, **RUN)}
     assert labels["window"]["defaults"] == {"transient": 12.5, "t_end": 40.0}
     assert "window" not in {label for label, *_ in members({"fe": {"t_end": 1.0}}, spec, **RUN)}
     assert "window" not in {label for label, *_ in members({"transient": 0.0}, spec, **RUN)}

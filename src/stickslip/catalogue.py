@@ -527,6 +527,11 @@ def catalogue(config: Mapping) -> dict[str, Entry]:
     return {e.path: e for e in entries}
 
 
+def showing(entries: Mapping[str, Entry], figure: int) -> list[Entry]:
+    """The entries that show paper figure ``figure`` (their ``figures``), by path: its runs and images."""
+    return sorted((e for e in entries.values() if figure in e.figures), key=lambda e: e.path)
+
+
 def onedof_catalogue(onedof: Mapping) -> dict[str, Entry]:
     """dataset path -> Entry of every 1-DOF run (scene x reading x method) of the ``onedof`` section."""
     return {e.path: e for e in _onedof_entries(onedof) if e.kind == "onedof_dataset"}

@@ -373,6 +373,11 @@ def cmd_claims(args) -> int:
         print(f'    "{r["quote"]}"')
         if r["reason"]:
             print(f"    reason: {r['reason']}")
+    made = paths.showing(paths.catalogue(config), args.figure)
+    if made:
+        print(f"Runs and images of Fig. {args.figure} (stickslip.catalogue; `snakemake -n PATH`: its job):")
+        for entry in made:
+            print(f"  {entry.path}  (rule {entry.rule})")
     return 0
 
 

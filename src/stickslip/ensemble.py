@@ -62,7 +62,8 @@ class EnsembleSpec:
             raise ValueError(f"ensemble.relative: must be in (0, 1e-3), got {self.relative!r}")
         if not (np.isfinite(self.step_factor) and 0 < self.step_factor < 1):
             raise ValueError(f"ensemble.step_factor: must be in (0, 1), got {self.step_factor!r}")
-        if self.window_factor is not None and not (np.isfinite(self.window_factor) and 1 < self.window_factor <= 2):
+        factor = self.window_factor
+        if factor is not None and not (np.isfinite(factor) and 1 < factor <= 2):
             raise ValueError(f"ensemble.window_factor: must be in (1, 2], got {self.window_factor!r}")
         if self.blas_threads is not None and int(self.blas_threads) < 1:
             raise ValueError(f"ensemble.blas_threads: must be >= 1, got {self.blas_threads!r}")
