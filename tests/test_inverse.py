@@ -113,6 +113,7 @@ def test_mu_k_keeps_the_stick_limit_and_changes_the_slip():
         ({"joint": ["fig02", "fig99"]}, "inverse.joint: 'fig99'"),
         ({"figures": {"fig02": {"claims": ["no_such_claim"]}}}, "'no_such_claim' is not a claim"),
         ({"settings": {"default": {"loo": "sometimes"}}}, "inverse.settings.default.loo"),
+        ({"settings": {"default": {"profile": ["fig99"]}}}, "inverse.settings.default.profile: 'fig99'"),
     ],
 )
 def test_bad_inverse_config_names_the_key(change, key):

@@ -57,8 +57,11 @@ def fit_problem(
             source = "conflict search"
     ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
     # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
-    # the straight-line analysis only
-    profiled = np.isfinite(fit.chi2) and problem.name != "joint"
+    # the straight-line analysis only, as does a figure the settings leave out (``profile``: the CI-size
+    # configuration profiles one figure, to test the path, not all eight)
+    chosen = settings.get("profile")
+    wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
+    profiled = np.isfinite(fit.chi2) and wanted
     profile = profile_identify(forward, fit.free_values) if profiled else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     refit = loo and settings["loo"] == "refit"

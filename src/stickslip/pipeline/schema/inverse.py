@@ -74,6 +74,9 @@ class InverseSettings(Section):
     loo: Literal["linear", "refit"]
     loo_nfev: Annotated[int, Field(ge=1)] | None = None
     corner: list[str] = []
+    profile: list[str] | None = Field(
+        None, description="figures whose fits get the profile likelihood (default: every figure)"
+    )
     seed: int
 
 
@@ -99,5 +102,7 @@ class Inverse(Section):
                 raise ValueError(f"settings.{mode}: missing")
             corner = [(f"inverse.settings.{mode}.corner", f) for f in self.settings[mode].corner]
             check_refs([c for c in corner if c[1] != "joint"], self.figures, "inverse.figures")
+            profiled = [(f"inverse.settings.{mode}.profile", f) for f in self.settings[mode].profile or []]
+            check_refs(profiled, self.figures, "inverse.figures")
         check_refs([("inverse.joint", f) for f in self.joint], self.figures, "inverse.figures")
         return self
