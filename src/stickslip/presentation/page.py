@@ -48,8 +48,8 @@ STATUS_MEANING = {
     "reproduced": "the measured number or statement agrees with the paper's within the row's tolerance",
     "deviates": "it does not, beyond the run's own numerical noise",
     "indistinguishable": "the margin to the threshold is below three times its spread over a perturbation "
-    "ensemble (inputs x (1 +- 1e-12), a second step size): the run's own noise could decide it, so it is "
-    'called neither way ("undecided")',
+    "ensemble (inputs x (1 +- 1e-12), a second step size, a later measurement window): the run's own noise "
+    'could decide it, so it is called neither way ("undecided")',
     "not-comparable": "nothing to compare: nothing computed in this reading, a failed solver run, a value "
     "withheld for moving under step halving, or a sentence the paper contradicts elsewhere",
 }
