@@ -93,7 +93,12 @@ def pairs(row):
     return ", ".join(out)
 
 
-table = summary.assign(**{"fitted (stated)": summary.apply(pairs, axis=1)})[
+def pairs_html(row):
+    """One quantity per line: a range list set in a table cell otherwise wraps to a word per line."""
+    return pairs(row).replace(", open", "; open").replace(", ", "<br>").replace("; open", ", open")
+
+
+table = summary.assign(**{"fitted (stated)": summary.apply(pairs_html, axis=1)})[
     [
         "figure",
         "family",
@@ -115,7 +120,10 @@ display(
             * len(r)
         ),
         axis=1,
-    ).hide(axis="index")
+    )
+    .format(precision=3)
+    .set_properties(subset=["fitted (stated)"], **{"min-width": "24em", "text-align": "left"})
+    .hide(axis="index")
 )
 
 # %% [markdown]

@@ -226,6 +226,9 @@ def figure_verdicts(figures, csv_path=VERDICTS_CSV):
     from stickslip.claims.table import read_table
 
     rows = {r["figure"]: r for r in read_table(csv_path)}
+    # one column for the search: a figure with no claims searched no reading, the others the same number
+    counts = [int(rows[str(n)]["readings_searched"] or 0) for n in figures if str(n) in rows]
+    searched = max(counts, default=0)
     out = []
     for number in figures:
         r = rows.get(str(number))
@@ -243,7 +246,7 @@ def figure_verdicts(figures, csv_path=VERDICTS_CSV):
                 "verdict (primary reading)": cell("primary"),
                 "primary reading": r["primary_reading"],
                 "as printed": cell("printed"),
-                f"best of {r['readings_searched']} readings (a search)": cell("best"),
+                f"best of {searched} readings (a search)": cell("best"),
                 "best reading": r["best_reading"] or "-",
                 "not evidence": r["not_evidence"] or "-",
             }
