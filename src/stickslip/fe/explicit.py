@@ -18,6 +18,7 @@ u_{n+1} = u_n + dt v_{n+1/2}.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass
@@ -341,29 +342,14 @@ def integrate(
     ``drop``), ``blowup=1e6`` mm (not 1e3); its result counts the second half's states apart
     (``extra['second_half_counts']``) and a blow-up reports the sampled step at which it was found.
     """
-    if backend == "python":
-        return integrate_python(
-            system,
-            law,
-            duration,
-            dt=dt,
-            safety_factor=safety_factor,
-            output_interval=output_interval,
-            initial_state=initial_state,
-            q0=q0,
-            v0=v0,
-            mass_damping=mass_damping,
-            stiffness_damping=stiffness_damping,
-            record_state=record_state,
-            blowup=blowup,
-            progress=progress,
-        )
-    if backend != "compiled":
+    if backend not in ("compiled", "python"):
         raise ValueError(f"backend: must be 'compiled' or 'python', got {backend!r}")
     pr = _prepare(
         system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
         mass_damping, stiffness_damping,
     )  # fmt: skip
+    if backend == "python":
+        return _python_loop(system, law, pr, stiffness_damping, record_state, blowup, progress)
     out = np.zeros((8, pr.n_out))  # the point recorder writes the series by row
     st = np.zeros(pr.n_out, dtype=np.int8)
     rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
@@ -386,28 +372,8 @@ def integrate(
     )  # fmt: skip
 
 
-def integrate_python(
-    system: System,
-    law: ContactLaw,
-    duration: float,
-    *,
-    dt: float | None = None,
-    safety_factor: float = 0.9,
-    output_interval: float | None = None,
-    initial_state: str = "static",
-    q0: np.ndarray | None = None,
-    v0: np.ndarray | None = None,
-    mass_damping: float = 0.0,
-    stiffness_damping: float = 0.0,
-    record_state: bool = False,
-    blowup: float = 1e6,
-    progress=None,
-) -> ExplicitResult:
-    """Reference per-step Python loop of :func:`integrate` (slow; the oracle of the compiled engine)."""
-    pr = _prepare(
-        system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
-        mass_damping, stiffness_damping,
-    )  # fmt: skip
+def _python_loop(system, law, pr: _Prepared, stiffness_damping, record_state, blowup, progress):
+    """The per-step Python loop of :func:`integrate` (slow; the oracle of the compiled engine)."""
     dt, n_steps, every, n_out = pr.dt, pr.n_steps, pr.every, pr.n_out
     G, af, Mcn, Mct = pr.G, pr.af, pr.Mcn, pr.Mct
     Wnn, Wnt, Wtt = pr.Wnn, pr.Wnt, pr.Wtt
@@ -497,3 +463,8 @@ def integrate_python(
     res = _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
     res.extra["second_half_counts"] = named_counts(np.subtract(counts, first_half))
     return res
+
+
+#: The reference per-step Python loop, with :func:`integrate`'s own signature and setup (the oracle of the
+#: compiled engine: tests/fe/test_engine.py compares them step by step).
+integrate_python = functools.partial(integrate, backend="python")
