@@ -513,6 +513,13 @@ def _product_entries(config: Mapping) -> Iterator[Entry]:
         yield _entry("notebook", {"name": name}, notebook(name), "render_notebooks")
     yield _entry("report_captions", {}, report_captions(), "report_captions")
     yield _entry("page", {}, page(), "replication_page")
+    # the page's folders: thumbnails, each linked dataset's text preview, each linked source with line anchors
+    for kind, folder in (
+        ("page_thumbs", page_thumbs()),
+        ("page_previews", page_previews()),
+        ("page_source_pages", page_source_pages()),
+    ):
+        yield _entry(kind, {}, folder, "replication_page")
 
 
 def catalogue(config: Mapping) -> dict[str, Entry]:

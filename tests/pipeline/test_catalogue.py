@@ -231,8 +231,8 @@ def test_1dof_runs_show_the_paper_figures_drawn_from_them():
 
 
 #: Outputs of the DAG that are no catalogue entry: a dense map's chunks (temporary; how many is decided by
-#: studies.specs at parse time) and the page's thumbnail folder (the page's own, ported with it).
-NOT_CATALOGUED = (re.compile(r"results/dense_map/chunks/"), re.compile(r"results/page/thumbs$"))
+#: studies.specs at parse time).
+NOT_CATALOGUED = (re.compile(r"results/dense_map/chunks/"),)
 
 
 def dry_run_jobs(text: str) -> list[tuple[str, list[str]]]:
