@@ -113,7 +113,13 @@ def test_step_member_only_where_a_step_setting_exists():
 
 @pytest.mark.parametrize(
     "bad,key",
-    [({"relative": -1}, "relative"), ({"step_factor": 1.5}, "step_factor"), ({"seedz": [1]}, "seedz")],
+    [
+        ({"relative": -1}, "relative"),
+        ({"step_factor": 1.5}, "step_factor"),
+        ({"seedz": [1]}, "seedz"),
+        ({"window_factor": 1.0}, "window_factor"),
+        ({"window_factor": 3.0}, "window_factor"),
+    ],
 )
 def test_bad_ensemble_settings_name_their_key(bad, key, repo_root):
     from stickslip.pipeline.config import ConfigError, load_config, validate_config
