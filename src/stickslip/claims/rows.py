@@ -142,10 +142,15 @@ class ClaimRow(_Strict):
     min_relative_change: NonNegative | None = None
     model: Model | None = Field(None, description="the model that decides a beam-on-disc row (MODELS)")
 
+    def dataset_refs(self) -> list[tuple[str, ClaimRow | Operand]]:
+        """(key, row or operand) of every dataset the row reads, its subject (``dataset`` or ``lhs``) first;
+        the key is the one an error names (``dataset``, ``lhs.dataset``, ``rhs.dataset``)."""
+        sides = [("dataset", self), ("lhs.dataset", self.lhs), ("rhs.dataset", self.rhs)]
+        return [(key, ref) for key, ref in sides if ref is not None and ref.dataset is not None]
+
     def dataset_paths(self) -> list[str]:
         """Every dataset the row reads, its subject (``dataset`` or ``lhs``) first."""
-        refs = [self.dataset] + [o.dataset for o in (self.lhs, self.rhs) if o is not None]
-        return [p for p in refs if p is not None]
+        return [ref.dataset for _, ref in self.dataset_refs()]
 
     @model_validator(mode="after")
     def _fits_its_kind(self):
@@ -181,3 +186,16 @@ class ClaimRow(_Strict):
         if len(set(self.figures)) != len(self.figures):
             raise ValueError("figures: a figure is listed twice")
         return self
+
+
+class Claim(ClaimRow):
+    """A row as the claims files hand it on (stickslip.claims.load.load_claims): the checked row, the file it
+    came from (for error messages), and what the model comparison says about it once read
+    (stickslip.claims.models.annotate). Never read from a claims file itself: the loader checks the file's
+    row as a ``ClaimRow`` (so ``file`` there is an unknown key) and adds ``file`` after."""
+
+    file: str = ""
+    #: why the beam may not decide this row ("" when it may): the row is then not comparable
+    not_adequate: str = ""
+    #: both models' values at dt and dt/2 over the row's window, cited in its reason ("" when none)
+    model_values: str = ""
