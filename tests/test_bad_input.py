@@ -637,7 +637,7 @@ def _pinned_ids():
     text = (ROOT / "config" / "claims" / "ids.txt").read_text()
     pinned = [ln.strip() for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]
     assert sorted(pinned) == sorted(
-        c["id"] for c in load(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+        c.id for c in load(sorted((ROOT / "config" / "claims").glob("*.yaml")))
     )
     return pinned
 

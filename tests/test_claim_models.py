@@ -10,7 +10,7 @@ from pydantic import ValidationError
 from stickslip.claims.evaluate import evaluate
 from stickslip.claims.load import load_claims
 from stickslip.claims.models import annotate, read_comparison
-from stickslip.claims.rows import ClaimRow
+from stickslip.claims.rows import Claim, ClaimRow
 
 BEAM = "results/fe/lower_face_drop/s10.nc"
 CONT = "results/fe/continuum_window/s10.nc"
@@ -57,34 +57,30 @@ def test_a_beam_on_disc_row_names_a_model_that_matches_its_dataset():
 
 
 def test_every_beam_on_disc_row_of_the_project_names_its_model():
-    rows = [c for c in load_claims(["config/claims/sections_09_12.yaml"])]
-    fe = [
-        c
-        for c in rows
-        if any(
-            p.startswith("results/fe/")
-            for p in ClaimRow.model_validate({k: v for k, v in c.items() if k != "_file"}).dataset_paths()
-        )
-    ]
-    assert fe and all(c["model"] in ("beam", "continuum", "reduced", "closed_form", "peer") for c in fe)
+    rows = load_claims(["config/claims/sections_09_12.yaml"])
+    fe = [c for c in rows if any(p.startswith("results/fe/") for p in c.dataset_paths())]
+    assert fe and all(c.model in ("beam", "continuum", "reduced", "closed_form", "peer") for c in fe)
     # Section 10 is decided by the model of its literal setup (upper face held): the continuum
-    assert all(c["model"] == "continuum" for c in rows if c["section"] == "10")
+    assert all(c.model == "continuum" for c in rows if c.section == "10")
 
 
 def test_a_beam_row_whose_comparison_disagrees_is_not_decided(tmp_path):
     ds = xr.Dataset({"max_horizontal_displacement": 3e-4})
     disagree = {"scene": "s10", "quantity": "horizontal_amplitude", "continuum": "1e-8", "beam": "3e-4"}
     disagree |= {"agreement": "False", "note": "not the same model", "window": "short"}
-    (row,) = annotate([ROW], _comparison(tmp_path, [disagree]))
+    (row,) = annotate([Claim.model_validate(ROW)], _comparison(tmp_path, [disagree]))
+    assert row.not_adequate.startswith("the beam is not adequate here") and row.model_values == ""
     result = evaluate(row, "", lambda path: ds)
     assert result.status == "not-comparable"
     assert "the beam is not adequate here" in result.reason and "not the same model" in result.reason
     # the same row where the models agree is decided as before
     agree = {**disagree, "agreement": "True", "note": ""}
-    (row,) = annotate([ROW], _comparison(tmp_path, [agree]))
+    (row,) = annotate([Claim.model_validate(ROW)], _comparison(tmp_path, [agree]))
+    assert row.not_adequate == ""
     assert evaluate(row, "", lambda path: ds).status == "deviates"
     # the continuum's own row is never held back by the beam's disagreement
-    (row,) = annotate([{**ROW, "dataset": CONT, "model": "continuum"}], _comparison(tmp_path, [disagree]))
+    continuum = Claim.model_validate({**ROW, "dataset": CONT, "model": "continuum"})
+    (row,) = annotate([continuum], _comparison(tmp_path, [disagree]))
     assert evaluate(row, "", lambda path: ds).status == "deviates"
 
 
@@ -93,10 +89,9 @@ def test_a_beam_operand_on_the_other_side_of_a_continuum_row_is_checked_too(tmp_
     row |= {"kind": "compare", "relation": ">", "model": "continuum"}
     row |= {"lhs": {"dataset": CONT, "variable": "max_horizontal_displacement"}}
     row |= {"rhs": {"dataset": BEAM, "variable": "max_horizontal_displacement"}}
-    ClaimRow.model_validate(row)
     disagree = {"scene": "s10", "quantity": "horizontal_amplitude", "continuum": "1", "beam": "2"}
     disagree |= {"agreement": "False", "note": "n", "window": "short"}
-    (annotated,) = annotate([row], _comparison(tmp_path, [disagree]))
+    (annotated,) = annotate([Claim.model_validate(row)], _comparison(tmp_path, [disagree]))
     assert evaluate(annotated, "", lambda path: xr.Dataset({"max_horizontal_displacement": 1.0})).status == (
         "not-comparable"
     )
@@ -109,7 +104,7 @@ def test_a_growth_verdict_cites_both_models_at_both_steps(tmp_path):
     row = {**ROW, "kind": "compare", "relation": ">", "rhs": {"value": 0.0}}
     row = {k: v for k, v in row.items() if k not in ("dataset", "variable", "value", "unit", "tolerance")}
     row["lhs"] = {"dataset": BEAM, "variable": "first_mode_growth_rate"}
-    (annotated,) = annotate([row], _comparison(tmp_path, [window]))
+    (annotated,) = annotate([Claim.model_validate(row)], _comparison(tmp_path, [window]))
     result = evaluate(annotated, "", lambda path: xr.Dataset({"first_mode_growth_rate": 0.565}))
     assert result.status == "reproduced"
     assert "beam 0.565/0.536, continuum 0.523/0.57 (agree)" in result.reason

@@ -7,6 +7,7 @@ import yaml
 
 from stickslip.claims.evaluate import evaluate, evaluate_all
 from stickslip.claims.load import ClaimsError, load_claims
+from stickslip.claims.rows import Claim
 from stickslip.claims.table import main, write_table
 
 
@@ -35,59 +36,65 @@ ROW = {
     "expected": "reproduced",
     "evidence": "evidence",
 }
+#: keys of ROW that only a value (or ratio) row holds: a compare or trend row built from ROW drops them
+VALUE_ONLY = {"value": None, "tolerance": None}
+
+
+def claim(**changes) -> Claim:
+    """ROW with ``changes`` as the loader hands it on (checked: a row no claims file could hold is an error
+    here too); a key changed to None is left out."""
+    row = {k: v for k, v in {**ROW, **changes}.items() if v is not None}
+    return Claim.model_validate(row)
+
+
+def compare(lhs, rhs, relation=">", **changes) -> Claim:
+    """A comparison built from ROW: ``lhs`` and ``rhs`` as a claims file spells them."""
+    return claim(kind="compare", lhs=lhs, rhs=rhs, relation=relation, **VALUE_ONLY, **changes)
+
+
+def trend(**changes) -> Claim:
+    return claim(kind="trend", **VALUE_ONLY, **changes)
 
 
 def test_value_claim_per_reading():
-    a = evaluate(ROW, "a", opener)
-    b = evaluate(ROW, "b", opener)
+    a = evaluate(claim(), "a", opener)
+    b = evaluate(claim(), "b", opener)
     assert a.status == "reproduced" and a.deviation == pytest.approx(0.116)
     assert b.status == "deviates" and not b.matches_expected
 
 
 def test_compare_ratio_and_trend_claims():
-    cmp_row = {
-        **ROW,
-        "kind": "compare",
-        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
-        "relation": ">",
-        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
-    }
+    cmp_row = compare({"dataset": "r/a.nc", "variable": "amp"}, {"dataset": "r/b.nc", "variable": "amp"})
     compared = evaluate(cmp_row, "", opener)
     assert compared.status == "reproduced"
     # the paper states a relation, not a number: `reported` carries its words, the model's other side is
     # the `reference`, never passed off as the paper's
     assert compared.reported == "amp > amp"
     assert compared.measured == pytest.approx(0.93) and compared.reference == pytest.approx(0.45)
-    ratio = {
-        **ROW,
-        "kind": "ratio",
-        "value": 2.0,
-        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
-        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
-        "tolerance": {"rel": 0.1},
-    }
+    ratio = claim(
+        kind="ratio",
+        dataset=None,
+        variable=None,
+        value=2.0,
+        lhs={"dataset": "r/a.nc", "variable": "amp"},
+        rhs={"dataset": "r/b.nc", "variable": "amp"},
+        tolerance={"rel": 0.1, "reason": "test"},
+    )
     assert evaluate(ratio, "", opener).measured == pytest.approx(0.93 / 0.45)
-    trend = {
-        **ROW,
-        "kind": "trend",
-        "dataset": "sweep.nc",
-        "coord": "mu_s",
-        "variable": "frequency",
-        "sign": -1,
-    }
-    res = evaluate(trend, "", opener)
+    sweep = {"dataset": "sweep.nc", "coord": "mu_s", "variable": "frequency"}
+    res = evaluate(trend(**sweep, sign=-1), "", opener)
     assert res.status == "reproduced" and res.measured < 0
     assert res.reported == "frequency decreases with mu_s" and res.reference != res.reference  # NaN
-    assert evaluate({**trend, "sign": 1}, "", opener).status == "deviates"
+    assert evaluate(trend(**sweep, sign=1), "", opener).status == "deviates"
 
 
 def test_missing_variable_is_not_comparable_and_declared_contradictions_are_too():
-    assert evaluate({**ROW, "variable": "nope"}, "a", opener).status == "not-comparable"
-    assert evaluate({**ROW, "comparable": False}, "a", opener).status == "not-comparable"
+    assert evaluate(claim(variable="nope"), "a", opener).status == "not-comparable"
+    assert evaluate(claim(comparable=False), "a", opener).status == "not-comparable"
 
 
 def test_expected_per_reading_with_default():
-    row = {**ROW, "expected": {"default": "deviates", "a": "reproduced"}}
+    row = claim(expected={"default": "deviates", "a": "reproduced"})
     results = evaluate_all([row], ["a", "b"], opener)
     assert [r.matches_expected for r in results] == [True, True]
 
@@ -119,14 +126,8 @@ def test_duplicate_ids_are_rejected(tmp_path):
 
 
 def test_tables_write_words_and_numbers_in_the_reported_column(tmp_path):
-    cmp_row = {
-        **ROW,
-        "kind": "compare",
-        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
-        "relation": ">",
-        "rhs": {"dataset": "r/b.nc", "variable": "amp"},
-    }
-    results = [evaluate(ROW, "a", opener), evaluate(cmp_row, "", opener)]
+    cmp_row = compare({"dataset": "r/a.nc", "variable": "amp"}, {"dataset": "r/b.nc", "variable": "amp"})
+    results = [evaluate(claim(), "a", opener), evaluate(cmp_row, "", opener)]
     write_table(results, tmp_path / "d.csv", tmp_path / "d.md")
     import csv
 
@@ -138,7 +139,7 @@ def test_tables_write_words_and_numbers_in_the_reported_column(tmp_path):
 
 
 def test_check_fails_on_a_changed_status(tmp_path, capsys):
-    results = evaluate_all([ROW], ["a", "b"], opener)
+    results = evaluate_all([claim()], ["a", "b"], opener)
     write_table(results, tmp_path / "d.csv", tmp_path / "d.md")
     assert main(["check", str(tmp_path / "d.csv")]) == 1
     assert "CHANGED f [b]" in capsys.readouterr().out
@@ -150,28 +151,32 @@ def test_check_fails_on_a_changed_status(tmp_path, capsys):
 def test_repository_claims_files_load(repo_root):
     claims = load_claims(sorted((repo_root / "config" / "claims").glob("*.yaml")))
     assert len(claims) >= 10
-    assert all(np.isfinite(c["value"]) for c in claims if c["kind"] == "value")
+    assert all(isinstance(c, Claim) and c.file.endswith(".yaml") for c in claims)
+    assert all(np.isfinite(c.value) for c in claims if c.kind == "value")
+
+
+def test_a_claims_file_may_not_set_what_the_loader_adds(tmp_path):
+    """``file`` (and the model comparison's notes) are the loader's, never a claims file's keys."""
+    for key in ("file", "not_adequate"):
+        path = tmp_path / f"{key}.yaml"
+        path.write_text(yaml.safe_dump([{**ROW, key: "x"}]))
+        with pytest.raises(ClaimsError, match=key):
+            load_claims([path])
 
 
 def test_compare_against_a_constant_and_trend_along_a_data_variable():
-    row = {
-        **ROW,
-        "kind": "compare",
-        "lhs": {"dataset": "r/a.nc", "variable": "amp"},
-        "relation": ">",
-        "rhs": {"value": 0.0},
-    }
+    row = compare({"dataset": "r/a.nc", "variable": "amp"}, {"value": 0.0})
     assert evaluate(row, "", opener).status == "reproduced"
     ds = xr.Dataset({"env": ("window", [1.0, 2.0, 3.0]), "window_time": ("window", [0.0, 1.0, 2.0])})
-    trend = {**ROW, "kind": "trend", "dataset": "w.nc", "coord": "window_time", "variable": "env", "sign": 1}
-    assert evaluate(trend, "", lambda p: ds).status == "reproduced"
+    rising = trend(dataset="w.nc", coord="window_time", variable="env", sign=1)
+    assert evaluate(rising, "", lambda p: ds).status == "reproduced"
 
 
 def test_round_off_is_no_trend_and_no_effect_claims_hold():
     ds = xr.Dataset({"amp": ("m", [1.0, 1.0 + 1e-12, 1.0 + 2e-12])}, coords={"m": [1.0, 2.0, 3.0]})
-    rising = {**ROW, "kind": "trend", "dataset": "s.nc", "coord": "m", "variable": "amp", "sign": 1}
-    assert evaluate(rising, "", lambda p: ds).status == "deviates"
-    assert evaluate({**rising, "sign": 0}, "", lambda p: ds).status == "reproduced"
+    rising = {"dataset": "s.nc", "coord": "m", "variable": "amp"}
+    assert evaluate(trend(**rising, sign=1), "", lambda p: ds).status == "deviates"
+    assert evaluate(trend(**rising, sign=0), "", lambda p: ds).status == "reproduced"
 
 
 # -- reasons a reader can scan ------------------------------------------------------------------------
@@ -189,15 +194,8 @@ def _withheld_dataset(full, half):
 
 
 def test_a_withheld_value_still_decides_which_side_of_a_threshold_it_is_on():
-    row = {
-        **ROW,
-        "kind": "compare",
-        "lhs": {"dataset": "s.nc", "variable": "stick_fraction"},
-        "relation": ">",
-        "rhs": {"value": 0.0},
-    }
-    for key in ("dataset", "variable", "value", "unit", "tolerance"):
-        row.pop(key)
+    subject = {"dataset": None, "variable": None, "unit": None}  # a comparison's subject is its lhs
+    row = compare({"dataset": "s.nc", "variable": "stick_fraction"}, {"value": 0.0}, **subject)
     decided = evaluate(row, "", lambda p: _withheld_dataset(0.404, 0.338))
     assert decided.status == "reproduced"  # both steps > 0, far beyond their difference
     assert "0.404 at dt, 0.338 at dt/2" in decided.reason
@@ -206,7 +204,7 @@ def test_a_withheld_value_still_decides_which_side_of_a_threshold_it_is_on():
 
 
 def test_a_withheld_value_claim_names_both_steps_and_is_not_called_unmeasurable():
-    row = {**ROW, "dataset": "s.nc", "variable": "stick_fraction", "value": 0.4, "unit": "1"}
+    row = claim(dataset="s.nc", variable="stick_fraction", value=0.4, unit="1")
     res = evaluate(row, "", lambda p: _withheld_dataset(0.404, 0.338))
     assert res.status == "not-comparable"
     assert res.reason.startswith("Not comparable: the value moves under step halving, so it is withheld.")
@@ -217,14 +215,14 @@ def test_a_withheld_value_claim_names_both_steps_and_is_not_called_unmeasurable(
 def test_reason_opens_with_one_short_conclusion_and_keeps_every_caveat():
     from stickslip.claims.evaluate import CONCLUSION_LENGTH
 
-    noted = {**ROW, "note": "a caveat that must survive a reproduced status"}
+    noted = claim(note="a caveat that must survive a reproduced status")
     for reading in ("a", "b"):
         res = evaluate(noted, reading, opener)
         conclusion = res.reason.split(" | ")[0]
         assert len(conclusion) <= CONCLUSION_LENGTH and conclusion.endswith((".", "…"))
         assert conclusion.startswith(("Reproduced", "Deviates", "Undecided", "Not comparable"))
         assert "a caveat that must survive" in res.reason
-    apart = evaluate({**ROW, "evidence": "by_construction", "evidence_note": "an input"}, "a", opener)
+    apart = evaluate(claim(evidence="by_construction", evidence_note="an input"), "a", opener)
     assert apart.evidence == "by_construction"
     assert "by construction" in apart.reason.split(" | ")[0] and "an input" in apart.reason
 
@@ -241,27 +239,16 @@ def test_failed_sweep_members_are_named_in_the_reason():
         },
         coords={"mu_s": [0.2, 0.5, 0.9]},
     )
-    trend = {
-        **ROW,
-        "kind": "trend",
-        "dataset": "s.nc",
-        "coord": "mu_s",
-        "sign": -1,
-        "variable": "frequency_peaks",
-    }
-    for key in ("value", "unit", "tolerance"):
-        trend.pop(key)
-    res = evaluate(trend, "", lambda p: ds)
+    falling = trend(dataset="s.nc", coord="mu_s", sign=-1, variable="frequency_peaks", unit=None)
+    res = evaluate(falling, "", lambda p: ds)
     assert "mu_s = 0.9 failed (diverged at |x| = 3.3e16 mm)" in res.reason
 
 
 def test_a_comparison_needs_its_margin_beyond_three_spreads_not_only_unanimous_members():
     """Every member on one side is not enough when the margin is within the noise (a tie set by round-off);
     a margin beyond three spreads decides, at any size of the value."""
-    row = {**ROW, "kind": "compare", "lhs": {"dataset": "s.nc", "variable": "sep"}, "relation": ">",
-           "rhs": {"value": 0.0}}  # fmt: skip
-    for key in ("dataset", "variable", "value", "unit", "tolerance"):
-        row.pop(key)
+    subject = {"dataset": None, "variable": None, "unit": None}  # a comparison's subject is its lhs
+    row = compare({"dataset": "s.nc", "variable": "sep"}, {"value": 0.0}, **subject)
 
     def members(*values):
         return xr.Dataset({"sep": ((), values[0]), "sep_ensemble": (("member",), list(values))})
@@ -274,10 +261,8 @@ def test_a_comparison_needs_its_margin_beyond_three_spreads_not_only_unanimous_m
 def test_two_numbers_equal_to_a_tenth_of_a_percent_are_not_ordered():
     """A comparison of two runs that both settle at the same rest position (0.8502 vs 0.85) is undecided
     even when the perturbation ensemble moves neither: the run resolves numbers to 0.1 % at best."""
-    row = {**ROW, "kind": "compare", "lhs": {"dataset": "a.nc", "variable": "amp"}, "relation": ">",
-           "rhs": {"dataset": "b.nc", "variable": "amp"}}  # fmt: skip
-    for key in ("dataset", "variable", "value", "unit", "tolerance"):
-        row.pop(key)
+    subject = {"dataset": None, "variable": None, "unit": None}  # a comparison's subject is its lhs
+    row = compare({"dataset": "a.nc", "variable": "amp"}, {"dataset": "b.nc", "variable": "amp"}, **subject)
     sets = {"a.nc": xr.Dataset({"amp": 0.8502}), "b.nc": xr.Dataset({"amp": 0.85})}
     assert evaluate(row, "", lambda p: sets[p]).status == "indistinguishable"
     sets["a.nc"] = xr.Dataset({"amp": 0.86})

@@ -181,7 +181,7 @@ def test_a_claim_dataset_is_looked_up_in_the_config_not_parsed(config, claims):
 
     onedof = config["onedof"]
     row = claims["s5_fig6_frequency"]
-    assert runs_by_dataset(onedof)[row["dataset"]] == ("scene", "fig06")
+    assert runs_by_dataset(onedof)[row.dataset] == ("scene", "fig06")
     assert claim_run(row, onedof)[:2] == ("fig06", "frequency_peaks")
     without = {**onedof, "scenes": {k: v for k, v in onedof["scenes"].items() if k != "fig06"}}
     with pytest.raises(ParameterError, match=r"claim s5_fig6_frequency\.dataset: .* onedof\.scenes"):

@@ -323,11 +323,17 @@ def _tiny_table(tmp_path):
     """A claims table of two figures in two readings, one fitted row, as figure_verdicts.csv holds it."""
     import csv
 
-    claims = [
-        {"id": "a", "section": "3", "figures": [2], "evidence": "evidence"},
-        {"id": "b", "section": "3", "figures": [2, 3], "evidence": "evidence"},
-        {"id": "f", "section": "3", "figures": [2], "evidence": "fit"},
-    ]
+    from stickslip.claims.rows import Claim
+
+    def claim(id, figures, evidence):
+        """A value row on Fig. 2's run: only its id, section, figures and evidence class matter here."""
+        why = {} if evidence == "evidence" else {"evidence_note": "fitted to the paper's numbers"}
+        row = {"id": id, "section": "3", "figure": "Fig. 2", "figures": figures, "quote": "q"}
+        row |= {"kind": "value", "dataset": "results/onedof/fig02/{reading}/exact.nc", "variable": "f"}
+        row |= {"value": 0.25, "unit": "Hz", "tolerance": {"rel": 0.1, "reason": "test"}}
+        return Claim.model_validate(row | {"expected": "reproduced", "evidence": evidence, **why})
+
+    claims = [claim("a", [2], "evidence"), claim("b", [2, 3], "evidence"), claim("f", [2], "fit")]
     rows = [
         {"claim": "a", "reading": "r1", "status": "reproduced", "evidence": "evidence"},
         {"claim": "b", "reading": "r1", "status": "deviates", "evidence": "evidence"},

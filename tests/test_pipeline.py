@@ -49,7 +49,7 @@ def test_small_run_deviations_table_has_one_row_per_claim_and_reading(small_run)
     rows = read_table(work / "results" / "claims" / "deviations.csv")
     claims = load_claims(glob(str(work / "config" / "claims" / "*.yaml")))
     readings = sorted({r["reading"] for r in rows if r["reading"]})
-    expected = sorted((c["id"], r) for c in claims for r in readings_of(c, readings))
+    expected = sorted((c.id, r) for c in claims for r in readings_of(c, readings))
     assert sorted((r["claim"], r["reading"]) for r in rows) == expected
 
 
@@ -63,11 +63,8 @@ def test_every_comparable_claim_has_a_measured_spread(small_run):
     assert measured
     # a peer row compares linear static and modal solves (no time stepping, round-off ~1e-12 relative, nine
     # decades below the 0.5 % band it is decided by): it carries no ensemble by design
-    peer = {
-        c["id"]
-        for c in load_claims(sorted((work / "config" / "claims").glob("*.yaml")))
-        if c.get("model") == "peer"
-    }
+    claims = load_claims(sorted((work / "config" / "claims").glob("*.yaml")))
+    peer = {c.id for c in claims if c.model == "peer"}
     # NaN: no ensemble was read. An infinite spread is a measurement (a member had nothing to measure, e.g.
     # the later window of the window member holds no full cycle), and such a claim is indistinguishable.
     missing = [

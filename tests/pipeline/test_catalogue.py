@@ -15,6 +15,7 @@ import yaml
 from stickslip import catalogue as paths
 from stickslip.claims.load import ClaimsError, check_claims, load_claims, required_datasets
 from stickslip.claims.per_reading import in_reading, repoint
+from stickslip.claims.rows import Claim
 from stickslip.pipeline.config import drop_removed, load_config
 
 from project_run import ROOT, run_snakemake, small_config_args
@@ -201,15 +202,27 @@ def test_a_reading_the_catalogue_does_not_have_is_an_error_naming_the_path():
 
 
 def test_repoint_moves_every_operand_and_leaves_the_row_alone():
-    claim = {
-        "id": "c",
-        "lhs": {"dataset": paths.fe_scene("default", "section9_a"), "variable": "x"},
-        "rhs": {"dataset": paths.fe_study("angle_sweep"), "variable": "y"},
-    }
+    claim = Claim.model_validate(
+        {
+            "id": "c",
+            "section": "9",
+            "figure": "Fig. 21",
+            "figures": [21],
+            "quote": "q",
+            "kind": "compare",
+            "expected": "reproduced",
+            "evidence": "evidence",
+            "model": "beam",
+            "lhs": {"dataset": paths.fe_scene("default", "section9_a"), "variable": "x"},
+            "relation": ">",
+            "rhs": {"dataset": paths.fe_study("angle_sweep"), "variable": "y"},
+        }
+    )
     moved = repoint(claim, "upper", FE_ENTRIES)
-    assert moved["lhs"]["dataset"] == paths.fe_scene("upper", "section9_a")
-    assert moved["rhs"]["dataset"] == paths.fe_study("angle_sweep")
-    assert claim["lhs"]["dataset"] == paths.fe_scene("default", "section9_a")  # a copy
+    assert moved.lhs.dataset == paths.fe_scene("upper", "section9_a")
+    assert moved.rhs.dataset == paths.fe_study("angle_sweep")
+    assert claim.lhs.dataset == paths.fe_scene("default", "section9_a")  # a copy
+    assert moved.model_copy(update={"lhs": claim.lhs}) == claim  # nothing but the dataset moved
 
 
 def test_a_1dof_figures_title_names_the_paper_figures_its_config_entry_maps():

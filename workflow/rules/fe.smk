@@ -99,7 +99,7 @@ rule fe_setup_fit:
         config=lambda wildcards: fe_job_config(FE_EFFECTIVE, scenes=[FE_SETUP_FITS[wildcards.fe_fit]]),
         ensemble=ENSEMBLE,
         base=lambda wildcards: FE_SETUP_FITS[wildcards.fe_fit],
-        centre=next(c["value"] for c in CLAIMS if c["id"] == "s9_oscillation_centre"),
+        centre=next(c.value for c in CLAIMS if c.id == "s9_oscillation_centre"),
     script:
         "../scripts/fe_setup_fit.py"
 
@@ -222,16 +222,16 @@ rule fe_figures:
         paper_figures=FE["paper_figures"],
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
-            c["variable"]: c["value"]
+            c.variable: c.value
             for c in CLAIMS
-            if c["id"] in ("s9_max_horizontal_displacement", "s9_oscillation_centre")
+            if c.id in ("s9_max_horizontal_displacement", "s9_oscillation_centre")
         },
         # per scene: the paper's numbers in mm that its claims compare with, drawn on the scene figure
         scene_reported={
             s: {
-                c["variable"].replace("_", " "): c["value"]
+                c.variable.replace("_", " "): c.value
                 for c in CLAIMS
-                if c.get("kind") == "value" and c.get("unit") == "mm" and fe_scene_of(c.get("dataset")) == s
+                if c.kind == "value" and c.unit == "mm" and fe_scene_of(c.dataset) == s
             }
             for s in FE_SCENES
         },
@@ -240,17 +240,15 @@ rule fe_figures:
         # and its times in s (drawn as vertical lines)
         paper_reported={
             n: [
-                {"label": c["variable"].replace("_", " "), "value": c["value"], "unit": c["unit"]}
+                {"label": c.variable.replace("_", " "), "value": c.value, "unit": c.unit}
                 for c in CLAIMS
-                if n in (c.get("figures") or [])
-                and c.get("unit") in ("mm", "mm s-1", "s")
-                and isinstance(c.get("value"), (int, float))
+                if n in c.figures and c.unit in ("mm", "mm s-1", "s") and c.value is not None
             ]
             for n in range(21, 37)
         },
         # Fig. 31: the "several times the initial normal force" the claims row compares with
         paper_normal_force_ratio=next(
-            (c["rhs"]["value"] for c in CLAIMS if c["id"] == "s11_normal_force_several_times"), None
+            (c.rhs.value for c in CLAIMS if c.id == "s11_normal_force_several_times"), None
         ),
     script:
         "../scripts/fe_figures.py"

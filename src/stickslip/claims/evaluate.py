@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from .load import readings_of
 from .measure import MEASURE, Measurement, member_failures, solver_failures, status_of
-from .models import MODEL_VALUES, NOT_ADEQUATE
+from .rows import Claim
 
 
 @dataclass
@@ -54,15 +54,15 @@ def _short(text: str, limit: int) -> str:
     return text if len(text) <= limit else text[: limit - 1].rstrip(" ,;:(") + "…"
 
 
-def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) -> str:
+def conclusion(claim: Claim, m: Measurement, status: str, failures: list[str]) -> str:
     """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters."""
-    kind = claim["kind"]
+    kind = claim.kind
     if status == "not-comparable":
         if failures:
             why = "the solver run failed"
-        elif claim.get(NOT_ADEQUATE):
+        elif claim.not_adequate:
             why = "the beam is not the paper's model here (model comparison)"
-        elif claim.get("comparable", True) is False:
+        elif claim.comparable is False:
             why = "the paper contradicts this sentence elsewhere"
         elif m.withheld:
             why = "the value moves under step halving, so it is withheld"
@@ -74,7 +74,7 @@ def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) ->
     else:
         verb = "Reproduced" if status == "reproduced" else "Deviates"
         if kind in ("value", "ratio"):
-            unit = "" if claim.get("unit") in (None, "1") else f" {claim['unit']}"
+            unit = "" if claim.unit in (None, "1") else f" {claim.unit}"
             text = (
                 f"{verb}: {m.measured:.3g}{unit} against the paper's {float(m.reported):.3g}{unit} "
                 f"({100 * m.deviation:+.0f} %)."
@@ -84,26 +84,26 @@ def conclusion(claim: dict, m: Measurement, status: str, failures: list[str]) ->
             text = f"{verb}: the paper's {m.quantity} {says} ({m.measured:.3g} vs {m.reference:.3g})."
         else:
             text = f"{verb}: the paper says {m.reported}; the run {'agrees' if m.holds else 'does not'}."
-    if claim.get("evidence", "evidence") != "evidence":
-        text = text[:-1] + f", {claim['evidence'].replace('_', ' ')}."
+    if claim.evidence != "evidence":
+        text = text[:-1] + f", {claim.evidence.replace('_', ' ')}."
     return _short(text, CONCLUSION_LENGTH)
 
 
-def reason_text(claim: dict, reading: str, m: Measurement, status: str, detail: str, failures, caveats):
+def reason_text(claim: Claim, reading: str, m: Measurement, status: str, detail: str, failures, caveats):
     """The conclusion sentence, then the numbers, then every caveat: why the row is not evidence, values
     computed but withheld, failed sweep members, and the row's note (never dropped)."""
     parts = [conclusion(claim, m, status, failures), detail]
-    if claim.get("evidence_note"):
-        parts.append(f"Not evidence ({claim['evidence'].replace('_', ' ')}): {claim['evidence_note']}")
+    if claim.evidence_note:
+        parts.append(f"Not evidence ({claim.evidence.replace('_', ' ')}): {claim.evidence_note}")
     if m.withheld and not detail.startswith("withheld"):
         parts.append("withheld: " + "; ".join(m.withheld))
     parts += caveats
-    note = _per_reading(claim.get("note"), reading)
+    note = _per_reading(claim.note, reading)
     parts.append(note)
     return " | ".join(" ".join(str(p).split()) for p in parts if p)
 
 
-def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
+def evaluate(claim: Claim, reading: str, open_dataset: Callable) -> ClaimResult:
     opened: list = []  # every dataset this claim reads, to refuse numbers from a failed solver run
 
     def recording_open(path, _open=open_dataset):
@@ -111,25 +111,25 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         opened.append((path, ds))
         return ds
 
-    m = MEASURE[claim["kind"]](claim, reading, recording_open)
+    m = MEASURE[claim.kind](claim, reading, recording_open)
     failures = solver_failures(opened)
-    adequate = not claim.get(NOT_ADEQUATE)  # set by stickslip.claims.models.annotate
-    status, detail = status_of(m, claim.get("comparable", True) is not False and adequate, failures)
+    adequate = not claim.not_adequate  # set by stickslip.claims.models.annotate
+    status, detail = status_of(m, claim.comparable is not False and adequate, failures)
     if not adequate and not failures:
-        detail = f"{claim[NOT_ADEQUATE]} | {detail}"
+        detail = f"{claim.not_adequate} | {detail}"
     members = member_failures(opened)
     caveats = [f"{len(members)} sweep runs failed: " + "; ".join(members)] if members else []
-    caveats += [claim[MODEL_VALUES]] if claim.get(MODEL_VALUES) else []
-    expected = _per_reading(claim["expected"], reading, default="(not pinned)")
+    caveats += [claim.model_values] if claim.model_values else []
+    expected = _per_reading(claim.expected, reading, default="(not pinned)")
     return ClaimResult(
-        claim=claim["id"],
+        claim=claim.id,
         reading=reading,
-        section=str(claim["section"]),
-        figure=str(claim["figure"]),
-        kind=claim["kind"],
+        section=claim.section,
+        figure=claim.figure,
+        kind=claim.kind,
         quantity=m.quantity,
         reported=m.reported,
-        unit=str(claim.get("unit", "")),
+        unit="" if claim.unit is None else claim.unit,
         measured=m.measured,
         reference=m.reference,
         deviation=m.deviation,
@@ -138,11 +138,11 @@ def evaluate(claim: dict, reading: str, open_dataset: Callable) -> ClaimResult:
         status=status,
         expected=expected,
         matches_expected=(status == expected),
-        evidence=str(claim.get("evidence", "evidence")),
+        evidence=claim.evidence,
         reason=reason_text(claim, reading, m, status, detail, failures, caveats),
-        quote=" ".join(str(claim["quote"]).split()),
+        quote=" ".join(claim.quote.split()),
     )
 
 
-def evaluate_all(claims: list[dict], readings: list[str], open_dataset: Callable) -> list[ClaimResult]:
+def evaluate_all(claims: list[Claim], readings: list[str], open_dataset: Callable) -> list[ClaimResult]:
     return [evaluate(c, r, open_dataset) for c in claims for r in readings_of(c, readings)]

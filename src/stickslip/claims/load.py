@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from .rows import Claim, ClaimRow
+
 
 class ClaimsError(ValueError):
     """A claims file is malformed; the message names the file, the claim and the key."""
@@ -18,15 +20,13 @@ def _row_errors(exc) -> str:
     return typed_errors(exc).replace("\n", "; ")
 
 
-def load_claims(paths) -> list[dict]:
+def load_claims(paths) -> list[Claim]:
     """Every row of the claims files, each checked against ``ClaimRow`` (stickslip.claims.rows); an error
-    names the file, the row's id and the key. Rows come back as plain mappings (the measuring functions
-    read them by key) with the file they came from in ``_file``."""
+    names the file, the row's id and the key. Rows come back typed (``Claim``: the checked row and the file
+    it came from)."""
     from pydantic import ValidationError
 
     from stickslip.io.yaml_files import YamlFileError, load_yaml
-
-    from .rows import ClaimRow
 
     claims, seen = [], {}
     for path in sorted(Path(p) for p in paths):
@@ -41,18 +41,19 @@ def load_claims(paths) -> list[dict]:
             if not isinstance(row, dict):
                 raise ClaimsError(f"{where}: expected a mapping")
             try:
-                ClaimRow.model_validate(row)
+                checked = ClaimRow.model_validate(row)
             except ValidationError as exc:
                 raise ClaimsError(f"{where}: {_row_errors(exc)}") from None
-            if row["id"] in seen:
-                raise ClaimsError(f"{where}: id {row['id']!r} already used in {seen[row['id']]}")
-            seen[row["id"]] = path
-            claims.append({**row, "_file": str(path)})
+            if checked.id in seen:
+                raise ClaimsError(f"{where}: id {checked.id!r} already used in {seen[checked.id]}")
+            seen[checked.id] = path
+            # checked above as a ClaimRow, where ``file`` is an unknown key: add it without a second check
+            claims.append(Claim.model_construct(**dict(checked), file=str(path)))
     return claims
 
 
 def check_claims(
-    claims: list[dict],
+    claims: list[Claim],
     readings,
     known_readings=None,
     pinned_ids=None,
@@ -67,15 +68,15 @@ def check_claims(
     that dataset holds where ``variables_of(path)`` knows them (None: not known)."""
     known = set(known_readings or ())
     for c in claims if known_readings is not None else []:
-        where = f"{c['_file']}: claim {c['id']}"
+        where = f"{c.file}: claim {c.id}"
         for key in ("expected", "note"):
-            if isinstance(c.get(key), dict):
-                for name in c[key]:
+            if isinstance(getattr(c, key), dict):
+                for name in getattr(c, key):
                     if name != "default" and name not in known:
                         raise ClaimsError(f"{where}: {key}.{name}: not a reading ({sorted(known)})")
     _check_speed_twins(claims)
     if pinned_ids is not None:
-        ids = {c["id"] for c in claims}
+        ids = {c.id for c in claims}
         lost, new = sorted(set(pinned_ids) - ids), sorted(ids - set(pinned_ids))
         if lost:
             raise ClaimsError(f"claims pinned but not found in any claims file: {', '.join(lost)}")
@@ -84,79 +85,68 @@ def check_claims(
                 f"claims not in the pinned id list (add them to it deliberately): {', '.join(new)}"
             )
     for c, key, ref, path in claimed_paths(claims, readings):
-        where = f"{c['_file']}: claim {c['id']}: {key}"
+        where = f"{c.file}: claim {c.id}: {key}"
         if catalogue is not None and path not in catalogue:
             raise ClaimsError(f"{where}: no rule writes {path!r}: not a catalogue path (stickslip.catalogue)")
         if producible is not None and not producible(path):
             raise ClaimsError(f"{where}: no rule writes {path!r}")
         known_vars = variables_of(path) if variables_of is not None else None
-        if known_vars is not None and ref["variable"] not in known_vars:
+        if known_vars is not None and ref.variable not in known_vars:
             var_key = key.replace("dataset", "variable")
             raise ClaimsError(
-                f"{c['_file']}: claim {c['id']}: {var_key}: {ref['variable']!r} is not a "
-                f"variable that {path!r} holds"
+                f"{c.file}: claim {c.id}: {var_key}: {ref.variable!r} is not a variable that {path!r} holds"
             )
 
 
-def claimed_paths(claims: list[dict], readings):
-    """(claim, key, operand, dataset path) of every dataset every claim reads, per claims reading for a
-    path with the ``{reading}`` placeholder."""
+def claimed_paths(claims: list[Claim], readings):
+    """(claim, key, row or operand, dataset path) of every dataset every claim reads, per claims reading for
+    a path with the ``{reading}`` placeholder."""
     for c in claims:
-        refs = [("dataset", c)] + [
-            (f"{k}.dataset", c[k]) for k in ("lhs", "rhs") if isinstance(c.get(k), dict)
-        ]
-        for key, ref in refs:
-            if "dataset" not in ref:
-                continue
-            for r in readings_of(c, readings) if "{reading}" in ref["dataset"] else [""]:
-                yield c, key, ref, ref["dataset"].format(reading=r)
+        for key, ref in c.dataset_refs():
+            for r in readings_of(c, readings) if "{reading}" in ref.dataset else [""]:
+                yield c, key, ref, ref.dataset.format(reading=r)
 
 
 #: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.
 DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
 
 
-def disc_speed(claim: dict) -> str:
+def disc_speed(claim: Claim) -> str:
     """The disc speed a claim reads (one of DISC_SPEEDS), ``""`` for none or several."""
-    found = {s for p in dataset_paths(claim) for s in DISC_SPEEDS if f"_{s}" in p}
+    found = {s for p in claim.dataset_paths() for s in DISC_SPEEDS if f"_{s}" in p}
     return found.pop() if len(found) == 1 else ""
 
 
-def _check_speed_twins(claims: list[dict]) -> None:
+def _check_speed_twins(claims: list[Claim]) -> None:
     """Every claim read at one disc speed is decided at the other too (``twin``: the row that does, reading
     the other speed, and naming this row back) or says why not (``one_speed``)."""
-    by_id = {c["id"]: c for c in claims}
+    by_id = {c.id: c for c in claims}
     for c in claims:
-        where = f"{c['_file']}: claim {c['id']}"
+        where = f"{c.file}: claim {c.id}"
         speed = disc_speed(c)
-        if c.get("twin") is None:
-            if speed and not c.get("one_speed"):
+        if c.twin is None:
+            if speed and not c.one_speed:
                 raise ClaimsError(
                     f"{where}: reads the {speed} scenes only: add its twin at the other speed (twin: <id>) "
                     "or say why not (one_speed: <reason>)"
                 )
             continue
-        twin = by_id.get(c["twin"])
+        twin = by_id.get(c.twin)
         if twin is None:
-            raise ClaimsError(f"{where}: twin: {c['twin']!r} is not a claim id")
-        if twin.get("twin") != c["id"]:
-            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not name {c['id']!r} back")
+            raise ClaimsError(f"{where}: twin: {c.twin!r} is not a claim id")
+        if twin.twin != c.id:
+            raise ClaimsError(f"{where}: twin: {c.twin!r} does not name {c.id!r} back")
         if not speed or disc_speed(twin) in ("", speed):
-            raise ClaimsError(f"{where}: twin: {c['twin']!r} does not read the other disc speed")
+            raise ClaimsError(f"{where}: twin: {c.twin!r} does not read the other disc speed")
 
 
-def dataset_paths(claim: dict) -> list[str]:
-    refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
-    return [r["dataset"] for r in refs if "dataset" in r]
+def readings_of(claim: Claim, readings: list[str]) -> list[str]:
+    return list(readings) if any("{reading}" in p for p in claim.dataset_paths()) else [""]
 
 
-def readings_of(claim: dict, readings: list[str]) -> list[str]:
-    return list(readings) if any("{reading}" in p for p in dataset_paths(claim)) else [""]
-
-
-def required_datasets(claims: list[dict], readings: list[str]) -> list[str]:
+def required_datasets(claims: list[Claim], readings: list[str]) -> list[str]:
     out = set()
     for c in claims:
         for r in readings_of(c, readings):
-            out.update(p.format(reading=r) for p in dataset_paths(c))
+            out.update(p.format(reading=r) for p in c.dataset_paths())
     return sorted(out)

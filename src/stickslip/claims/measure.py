@@ -12,6 +12,8 @@ import numpy as np
 
 from stickslip.ensemble import SUFFIX
 
+from .rows import Claim, ClaimRow, Operand
+
 #: A claim is decided only when its margin to the threshold exceeds this many ensemble spreads.
 MARGIN_FACTOR = 3.0
 #: ... and this fraction of the numbers it compares: every metric is read off a sampled trajectory over a
@@ -47,28 +49,32 @@ def withheld_values(ds, variable: str) -> tuple[float, float] | None:
 
 
 def _member_values(
-    open_dataset: Callable, ref: dict, reading: str, side_only: bool = False, notes: list | None = None
+    open_dataset: Callable,
+    ref: ClaimRow | Operand,
+    reading: str,
+    side_only: bool = False,
+    notes: list | None = None,
 ) -> np.ndarray:
-    """A dataset's scalar variable per perturbation-ensemble member (base run first), or a constant given as
-    ``{value: number}``. Without an ensemble in the dataset: the base value alone.
+    """A dataset's scalar variable per perturbation-ensemble member (base run first), or a constant (an
+    operand with a value and no dataset). Without an ensemble in the dataset: the base value alone.
 
     A value withheld for moving under step halving is NaN here, its two steps' values named in ``notes``;
     with ``side_only`` (a claim that reads only which side of a threshold the value is on) those two values
     are the members: the side is decided when both steps agree on it beyond the noise, as for growth."""
-    if "value" in ref and "dataset" not in ref:
-        return np.array([float(ref["value"])])
-    ds = open_dataset(ref["dataset"].format(reading=reading))
-    if ref["variable"] not in ds:
+    if ref.dataset is None:  # a value row always names its dataset: only an operand is a constant
+        return np.array([float(ref.value)])
+    ds = open_dataset(ref.dataset.format(reading=reading))
+    if ref.variable not in ds:
         return np.array([np.nan])
-    withheld = withheld_values(ds, ref["variable"])
+    withheld = withheld_values(ds, ref.variable)
     if withheld is not None:
         if notes is not None:
             full, half = withheld
-            notes.append(f"{ref['variable']} moves under step halving ({full:.3g} at dt, {half:.3g} at dt/2)")
+            notes.append(f"{ref.variable} moves under step halving ({full:.3g} at dt, {half:.3g} at dt/2)")
         if side_only:
             return np.array(withheld)
-    base = float(np.asarray(ds[ref["variable"]].values).reshape(-1)[0])
-    members = ds.get(ref["variable"] + SUFFIX)
+    base = float(np.asarray(ds[ref.variable].values).reshape(-1)[0])
+    members = ds.get(ref.variable + SUFFIX)
     if members is None:
         return np.array([base])
     values = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)[:, 0]
@@ -116,32 +122,34 @@ class Measurement:
     scale: float = 1.0
 
 
-def _tolerance_band(claim: dict, reported: float) -> float:
-    """Half-width of the accepted interval around the reported number (the larger of rel and abs)."""
-    tol = claim.get("tolerance", {})
-    band = [float(tol["abs"])] if "abs" in tol else []
-    if "rel" in tol:
-        band.append(float(tol["rel"]) * abs(reported))
-    return max(band) if band else 0.0
+def _tolerance_band(claim: ClaimRow, reported: float) -> float:
+    """Half-width of the accepted interval around the reported number (the larger of rel and abs; a value
+    or ratio row always has a tolerance with one of them, stickslip.claims.rows)."""
+    tol = claim.tolerance
+    band = [] if tol.abs is None else [tol.abs]
+    if tol.rel is not None:
+        band.append(tol.rel * abs(reported))
+    return max(band)
 
 
-def decide_value(claim: dict, measured: float) -> tuple[bool, float]:
+def decide_value(claim: ClaimRow, measured: float) -> tuple[bool, float]:
     """(holds, margin) of a value/ratio claim for one measured number."""
-    reported = float(claim["value"])
+    reported = float(claim.value)
     band = _tolerance_band(claim, reported)
     distance = abs(measured - reported)
     return bool(distance <= band), abs(distance - band)
 
 
-def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
-    out = Measurement(reported=float(claim["value"]), quantity=str(claim.get("variable", "")))
-    if claim["kind"] == "value":
+def measure_value(claim: Claim, reading: str, open_dataset: Callable) -> Measurement:
+    # a ratio row holds no variable of its own: its quantity is named from its operands below
+    out = Measurement(reported=float(claim.value), quantity=claim.variable or "")
+    if claim.kind == "value":
         members = _member_values(open_dataset, claim, reading, notes=out.withheld)
     else:
-        lhs = _member_values(open_dataset, claim["lhs"], reading, notes=out.withheld)
-        rhs = _member_values(open_dataset, claim["rhs"], reading, notes=out.withheld)
+        lhs = _member_values(open_dataset, claim.lhs, reading, notes=out.withheld)
+        rhs = _member_values(open_dataset, claim.rhs, reading, notes=out.withheld)
         members = _pairwise(lambda a, b: np.where(b != 0, a / np.where(b != 0, b, 1.0), np.nan), lhs, rhs)
-        out.quantity = f"{_name(claim['lhs'])} / {_name(claim['rhs'])}"
+        out.quantity = f"{_name(claim.lhs)} / {_name(claim.rhs)}"
     out.measured = float(members[0])
     if math.isfinite(out.measured):
         r = out.reported
@@ -153,12 +161,12 @@ def measure_value(claim: dict, reading: str, open_dataset: Callable) -> Measurem
     return out
 
 
-def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
+def measure_compare(claim: Claim, reading: str, open_dataset: Callable) -> Measurement:
     withheld: list = []
-    lhs = _member_values(open_dataset, claim["lhs"], reading, side_only=True, notes=withheld)
-    rhs = _member_values(open_dataset, claim["rhs"], reading, side_only=True, notes=withheld)
-    rel = claim["relation"]
-    statement = f"{_name(claim['lhs'])} {rel} {_name(claim['rhs'])}"
+    lhs = _member_values(open_dataset, claim.lhs, reading, side_only=True, notes=withheld)
+    rhs = _member_values(open_dataset, claim.rhs, reading, side_only=True, notes=withheld)
+    rel = claim.relation
+    statement = f"{_name(claim.lhs)} {rel} {_name(claim.rhs)}"
     out = Measurement(
         reported=statement,  # the paper states a relation, not a number
         measured=float(lhs[0]),
@@ -176,9 +184,9 @@ def measure_compare(claim: dict, reading: str, open_dataset: Callable) -> Measur
     return out
 
 
-def _trend_change(claim: dict, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
+def _trend_change(claim: ClaimRow, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
     """(least-squares slope, fitted change relative to the mean) of y along x; NaN when not measurable."""
-    if claim.get("coord_scale") == "log":  # decade sweeps: the trend per decade
+    if claim.coord_scale == "log":  # decade sweeps: the trend per decade
         x = np.log10(np.where(x > 0, x, np.nan))
     ok = np.isfinite(x) & np.isfinite(y)
     if ok.sum() < 2 or np.ptp(x[ok]) <= 0:
@@ -187,30 +195,30 @@ def _trend_change(claim: dict, x: np.ndarray, y: np.ndarray) -> tuple[float, flo
     return slope, float(relative_change(slope, x[ok], y[ok]))
 
 
-def decide_trend(claim: dict, change: float) -> tuple[bool, float, float]:
+def decide_trend(claim: ClaimRow, change: float) -> tuple[bool, float, float]:
     """(holds, margin, direction) of a trend claim for one relative change: |change| below the floor is no
     trend, so the thresholds sit at +-floor."""
-    floor = float(claim.get("min_relative_change", TREND_FLOOR))
+    floor = TREND_FLOOR if claim.min_relative_change is None else claim.min_relative_change
     direction = 0.0 if abs(change) < floor else float(np.sign(change))
-    return bool(direction == np.sign(float(claim["sign"]))), abs(abs(change) - floor), direction
+    return bool(direction == np.sign(float(claim.sign))), abs(abs(change) - floor), direction
 
 
-def measure_trend(claim: dict, reading: str, open_dataset: Callable) -> Measurement:
-    ds = open_dataset(claim["dataset"].format(reading=reading))
-    says = "increases" if float(claim["sign"]) > 0 else "decreases"
+def measure_trend(claim: Claim, reading: str, open_dataset: Callable) -> Measurement:
+    ds = open_dataset(claim.dataset.format(reading=reading))
+    says = "increases" if claim.sign > 0 else "decreases"
     out = Measurement(
-        reported=f"{claim['variable']} {says} with {claim['coord']}",  # the paper's words, not a number
-        quantity=f"d {claim['variable']} / d {claim['coord']}",
+        reported=f"{claim.variable} {says} with {claim.coord}",  # the paper's words, not a number
+        quantity=f"d {claim.variable} / d {claim.coord}",
     )
-    if claim["variable"] not in ds or claim["coord"] not in ds.variables:
+    if claim.variable not in ds or claim.coord not in ds.variables:
         return out
-    x = np.asarray(ds[claim["coord"]].values, dtype=float).reshape(-1)
-    y = np.asarray(ds[claim["variable"]].values, dtype=float).reshape(-1)
+    x = np.asarray(ds[claim.coord].values, dtype=float).reshape(-1)
+    y = np.asarray(ds[claim.variable].values, dtype=float).reshape(-1)
     out.measured, change = _trend_change(claim, x, y)
     if not math.isfinite(change):
         return out
     out.holds, out.margin, direction = decide_trend(claim, change)
-    members = ds.get(claim["variable"] + SUFFIX)
+    members = ds.get(claim.variable + SUFFIX)
     if members is not None:
         rows = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
         changes = [change] + [_trend_change(claim, x, row)[1] for row in rows[1:]]
@@ -276,5 +284,5 @@ def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[st
     return ("reproduced" if m.holds else "deviates"), m.detail
 
 
-def _name(ref: dict) -> str:
-    return ref.get("variable", f"{ref.get('value')}")
+def _name(ref: Operand) -> str:
+    return ref.variable if ref.variable is not None else f"{ref.value}"

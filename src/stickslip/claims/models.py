@@ -6,11 +6,11 @@ paper's own kind of model, beside the beam on every scene; a row per (scene, qua
 agree under its stated rule. A dataset operand of a claim read from the beam (any dataset under
 ``results/fe/`` that is not the continuum's) whose scene and quantity have a comparison row that does not
 agree cannot decide the claim: the beam is not the paper's model there. The claims table then calls the
-claim not comparable with that reason (``NOT_ADEQUATE``), so its pinned status must say so too, or the row
-be pointed at the continuum.
+claim not comparable with that reason (``Claim.not_adequate``), so its pinned status must say so too, or the
+row be pointed at the continuum.
 
 Where a comparison row over a claim's window exists (first-mode growth, the separation burst), the claim's
-reason also cites both models' values at dt and dt/2 (``MODEL_VALUES``).
+reason also cites both models' values at dt and dt/2 (``Claim.model_values``).
 """
 
 from __future__ import annotations
@@ -21,10 +21,7 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from ..catalogue import fe_model_of, last_name
-
-#: the claims table's keys on a claim mapping (set here, read by stickslip.claims.evaluate)
-NOT_ADEQUATE = "_model_not_adequate"
-MODEL_VALUES = "_model_values"
+from .rows import Claim, ClaimRow
 
 #: claim variables that measure one of the comparison's quantities (the same motion of node 1, read
 #: another way): a disagreement in the quantity is one in the variable. A variable not listed has no
@@ -51,17 +48,10 @@ def read_comparison(path) -> dict[tuple[str, str], dict]:
         return {(r["scene"], r["quantity"]): r for r in csv.DictReader(fh)}
 
 
-def beam_operands(claim: Mapping) -> list[tuple[str, str]]:
+def beam_operands(claim: ClaimRow) -> list[tuple[str, str]]:
     """(dataset, variable) of every operand the claim reads from the beam model."""
-    refs = [claim] + [claim.get(k) for k in ("lhs", "rhs")]
-    out = []
-    for ref in refs:
-        if not isinstance(ref, Mapping) or not isinstance(ref.get("dataset"), str):
-            continue
-        path = ref["dataset"]
-        if fe_model_of(path) == "beam":
-            out.append((path, str(ref.get("variable", ""))))
-    return out
+    refs = [ref for _, ref in claim.dataset_refs()]
+    return [(ref.dataset, ref.variable or "") for ref in refs if fe_model_of(ref.dataset) == "beam"]
 
 
 def _agrees(row: Mapping) -> bool:
@@ -75,7 +65,7 @@ def _num(text) -> float:
         return math.nan
 
 
-def inadequacy(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) -> str:
+def inadequacy(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
     """Why the beam may not decide ``claim`` ("" when it may): every beam operand whose (scene, quantity)
     comparison row disagrees, with the row's numbers and note (whatever model the row names: a continuum
     row may compare with a beam dataset)."""
@@ -95,15 +85,12 @@ def inadequacy(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) ->
     )
 
 
-def model_values(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) -> str:
+def model_values(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
     """Both models' values at dt and dt/2 from every comparison row over a claim's window that the claim's
     operands (beam or continuum) read; "" when there is none."""
-    refs = [claim] + [claim.get(k) for k in ("lhs", "rhs")]
     out = []
-    for ref in refs:
-        if not isinstance(ref, Mapping) or not isinstance(ref.get("dataset"), str):
-            continue
-        scene, quantity = last_name(ref["dataset"]), COMPARED_AS.get(str(ref.get("variable", "")))
+    for _, ref in claim.dataset_refs():
+        scene, quantity = last_name(ref.dataset), COMPARED_AS.get(ref.variable or "")
         row = comparison.get((scene, quantity)) if quantity else None
         if row is None or row.get("window") != "claim":
             continue
@@ -116,17 +103,11 @@ def model_values(claim: Mapping, comparison: Mapping[tuple[str, str], Mapping]) 
     return "; ".join(dict.fromkeys(out))
 
 
-def annotate(claims: Iterable[dict], comparison: Mapping[tuple[str, str], Mapping]) -> list[dict]:
-    """Copies of the claims with NOT_ADEQUATE (beam rows the comparison does not license) and MODEL_VALUES
-    (the window comparison's values) set where they apply; other rows unchanged."""
+def annotate(claims: Iterable[Claim], comparison: Mapping[tuple[str, str], Mapping]) -> list[Claim]:
+    """Copies of the claims with ``not_adequate`` (why the comparison does not license a beam row) and
+    ``model_values`` (the window comparison's values) set; both "" where they do not apply."""
     out = []
     for c in claims:
-        extra = {}
-        why = inadequacy(c, comparison)
-        if why:
-            extra[NOT_ADEQUATE] = why
-        values = model_values(c, comparison)
-        if values:
-            extra[MODEL_VALUES] = values
-        out.append({**c, **extra} if extra else c)
+        notes = {"not_adequate": inadequacy(c, comparison), "model_values": model_values(c, comparison)}
+        out.append(c.model_copy(update=notes))
     return out

@@ -8,11 +8,11 @@ scene under a reading (sweeps, studies, the continuum runs) are shared by all re
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Callable, Iterable, Mapping
 
 from ..catalogue import Entry, same_entry
 from .evaluate import ClaimResult, evaluate
+from .rows import Claim
 
 
 def in_reading(path: str, reading: str, entries: Mapping[str, Entry]) -> str:
@@ -26,17 +26,19 @@ def in_reading(path: str, reading: str, entries: Mapping[str, Entry]) -> str:
     return other.path
 
 
-def repoint(claim: dict, reading: str, entries: Mapping[str, Entry]) -> dict:
+def repoint(claim: Claim, reading: str, entries: Mapping[str, Entry]) -> Claim:
     """A copy of ``claim`` reading, for every dataset it names, the same run in FE reading ``reading``."""
-    c = copy.deepcopy(claim)
-    for ref in [c, c.get("lhs"), c.get("rhs")]:
-        if isinstance(ref, dict) and isinstance(ref.get("dataset"), str):
-            ref["dataset"] = in_reading(ref["dataset"], reading, entries)
-    return c
+
+    def moved(ref):
+        if ref is None or ref.dataset is None:
+            return ref
+        return ref.model_copy(update={"dataset": in_reading(ref.dataset, reading, entries)})
+
+    return moved(claim).model_copy(update={"lhs": moved(claim.lhs), "rhs": moved(claim.rhs)})
 
 
 def claims_per_reading(
-    claims: Iterable[dict], readings: Iterable[str], entries: Mapping[str, Entry], open_dataset: Callable
+    claims: Iterable[Claim], readings: Iterable[str], entries: Mapping[str, Entry], open_dataset: Callable
 ) -> list[ClaimResult]:
     """Evaluate every claim once per FE reading; ``reading`` of each result is the FE reading's name.
     ``entries``: the catalogue's FE scene entries (``stickslip.catalogue.fe_scene_entries``).

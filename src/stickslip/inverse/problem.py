@@ -25,6 +25,7 @@ import numpy as np
 
 from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
+from ..claims.rows import Claim
 from ..model.params import BeltParams, ParameterError
 
 #: Free parameters the study may vary, in a fixed order (BeltParams field names).
@@ -191,28 +192,27 @@ class Problem:
 # -- building problems from the config and the claims table ----------------------------------------------
 
 
-def load_claim_rows(paths) -> dict:
+def load_claim_rows(paths) -> dict[str, Claim]:
     """Claim id -> row, read (and checked) by the claims table's own loader."""
     from ..claims.load import load_claims
 
-    return {row["id"]: row for row in load_claims(paths)}
+    return by_id(load_claims(paths))
 
 
-def _tolerance_sd(row: dict) -> tuple[float, str]:
-    tol = row.get("tolerance")
-    where = f"claim {row['id']}.tolerance"
-    if not isinstance(tol, dict):
-        raise ParameterError(f"{where}: missing (a reported number needs its reading precision)")
-    value = float(row["value"])
-    if "rel" in tol:
-        sd = float(tol["rel"]) * abs(value)
-    elif "abs" in tol:
-        sd = float(tol["abs"])
-    else:
-        raise ParameterError(f"{where}: needs rel or abs")
-    if not (math.isfinite(sd) and sd > 0):
+def by_id(claims) -> dict[str, Claim]:
+    """Claim id -> row of rows already read (ids are unique: the loader checks)."""
+    return {row.id: row for row in claims}
+
+
+def _tolerance_sd(row: Claim) -> tuple[float, str]:
+    """The reading precision of a value row as a standard deviation: its relative band if it has one (a
+    value row always has a tolerance with rel or abs: stickslip.claims.rows)."""
+    tol = row.tolerance
+    where = f"claim {row.id}.tolerance"
+    sd = tol.rel * abs(row.value) if tol.rel is not None else tol.abs
+    if not (math.isfinite(sd) and sd > 0):  # rel or abs 0 is a valid band, but no spread to fit with
         raise ParameterError(f"{where}: must give a positive spread, got {sd!r}")
-    return sd, str(tol.get("reason", ""))
+    return sd, tol.reason
 
 
 #: a claim names a per-reading dataset with this placeholder for the reading
@@ -241,17 +241,15 @@ def _value_tag(value: float) -> str:
     return f"{value:g}".replace(".", "p")  # as workflow/scripts/onedof_sweeps.py names the variables
 
 
-def claim_run(row: dict, onedof: dict) -> tuple[str, str, dict]:
+def claim_run(row: Claim, onedof: dict) -> tuple[str, str, dict]:
     """(run name, metric, overrides relative to the defaults) of a value claim: its dataset looked up among
     the datasets the config's scenes and sweeps produce (``runs_by_dataset``)."""
-    where = f"claim {row['id']}"
-    if row.get("kind") != "value":
-        raise ParameterError(
-            f"{where}.kind: only value claims are reported numbers (got {row.get('kind')!r})"
-        )
-    if row.get("comparable", True) is False:
+    where = f"claim {row.id}"
+    if row.kind != "value":
+        raise ParameterError(f"{where}.kind: only value claims are reported numbers (got {row.kind!r})")
+    if row.comparable is False:
         raise ParameterError(f"{where}.comparable: false (the paper contradicts itself there); not fitted")
-    path, variable = row["dataset"], row["variable"]
+    path, variable = row.dataset, row.variable
     kind, name = runs_by_dataset(onedof).get(path, (None, None))
     if kind == "scene":
         if variable not in METRICS:
@@ -280,7 +278,7 @@ def _bounds(cfg: dict) -> dict:
     return {name: (float(cfg["bounds"][name]["min"]), float(cfg["bounds"][name]["max"])) for name in PARAMS}
 
 
-def build_problem(config: dict, claims: dict, name: str, family: str) -> Problem:
+def build_problem(config: dict, claims: dict[str, Claim], name: str, family: str) -> Problem:
     """The identification problem of one figure (or ``joint``) for one model family."""
     inv, onedof = config["inverse"], config["onedof"]
     fam = inv["families"][family]
@@ -310,12 +308,12 @@ def build_problem(config: dict, claims: dict, name: str, family: str) -> Problem
                     claim=cid,
                     run=names.index(run_name),
                     metric=metric,
-                    value=float(row["value"]),
+                    value=row.value,
                     sd=sd,
-                    unit=str(row.get("unit", "")),
+                    unit=row.unit,  # a value row always has one (stickslip.claims.rows)
                     reason=reason,
                     figure=fig,
-                    quote=str(row.get("quote", "")),
+                    quote=row.quote,
                 )
             )
         if name != "joint" and "scene" in fig_cfg:

@@ -26,7 +26,7 @@ import yaml
 
 from .. import catalogue as paths
 from ..claims.load import load_claims
-from ..claims.rows import EVIDENCE_CLASSES
+from ..claims.rows import EVIDENCE_CLASSES, Claim
 from ..claims.table import read_table
 from .report import paper_figures
 from .show import show_text
@@ -96,13 +96,9 @@ def read_csv(path) -> list[dict]:
         return list(csv.DictReader(fh))
 
 
-def claim_figures(claims: list[dict]) -> dict[str, list[int]]:
-    """Claim id -> the paper figures it is about (its ``figures`` key; the free-text label otherwise)."""
-    out = {}
-    for c in claims:
-        figs = c.get("figures")
-        out[c["id"]] = sorted(figs) if figs is not None else sorted(paper_figures(c.get("figure", "")))
-    return out
+def claim_figures(claims: list[Claim]) -> dict[str, list[int]]:
+    """Claim id -> the paper figures it is about (its ``figures``, which every row declares)."""
+    return {c.id: sorted(c.figures) for c in claims}
 
 
 def module_file(module: str, src: Path) -> Path | None:
@@ -263,7 +259,7 @@ class PageBuilder:
         self.paper = paper_spec()
         self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
         self.figures_of = claim_figures(self.claims)
-        self.claim = {c["id"]: c for c in self.claims}
+        self.claim = {c.id: c for c in self.claims}
         self.rows = read_table(self.results / "claims" / "deviations.csv")
         #: every figure's verdicts, the table the notebooks read too (stickslip.presentation.verdicts)
         self.verdicts = {r["figure"]: r for r in read_csv(self.results / "claims" / "figure_verdicts.csv")}
@@ -373,13 +369,19 @@ class PageBuilder:
 
     # -- cards ----------------------------------------------------------------------------------------
 
+    def dataset_paths(self, claim_id: str) -> list[str]:
+        """Every dataset the claim reads; none for an id in no claims file (a table older than the files)."""
+        claim = self.claim.get(claim_id)
+        return [] if claim is None else claim.dataset_paths()
+
     def rows_about(self, number: int | None, section: str | None = None) -> list[dict]:
         if number is None:
             return [
                 r
                 for r in self.rows
                 if not self.figures_of.get(r["claim"])
-                and str(self.claim.get(r["claim"], {}).get("section")) == section
+                and r["claim"] in self.claim
+                and self.claim[r["claim"]].section == section
             ]
         return [r for r in self.rows if number in self.figures_of.get(r["claim"], [])]
 
@@ -400,7 +402,7 @@ class PageBuilder:
         """The images showing figure ``number``: the best reading's first, then the scenes its claims read."""
         mine = [s for s in self.sources if number in s.figures and (self.workdir / s.path).is_file()]
         preferred = readings_by_preference(rows, self.order)
-        datasets = [p for r in rows for p in dataset_paths_of(self.claim.get(r["claim"], {}))]
+        datasets = [p for r in rows for p in self.dataset_paths(r["claim"])]
 
         out = []
         for s in sorted(mine, key=lambda s: image_rank(s, reading, preferred, datasets)):
@@ -472,7 +474,7 @@ class PageBuilder:
         out = []
         for r in sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank):
             dev = _number(r["deviation"])
-            claim = self.claim.get(r["claim"], {})
+            claim = self.claim.get(r["claim"])
             out.append(
                 {
                     "claim": r["claim"],
@@ -527,7 +529,7 @@ class PageBuilder:
                 images = [{"label": "drawn by this page from the friction table", "full": thumb, "path": ""}]
         data = [self.friction_table] if from_table else []
         for r in judged:
-            for p in dataset_paths_of(self.claim.get(r["claim"], {})):
+            for p in self.dataset_paths(r["claim"]):
                 data.append(p.format(reading=primary) if "{reading}" in p else p)
         datasets = [self.dataset_link(p) for p in dict.fromkeys(data)]
         notebook = None
@@ -544,7 +546,7 @@ class PageBuilder:
         speeds = []
         if fe:
             for speed, label in SPEEDS.items():
-                mine = [r for r in evidence if speed_of(self.claim.get(r["claim"], {})) in ("", speed)]
+                mine = [r for r in evidence if speed_of(self.claim.get(r["claim"])) in ("", speed)]
                 t = tally(mine)
                 speeds.append({"label": label, "text": t.text, "verdict": t.label})
         verdict = v["primary"]["label"]
@@ -577,7 +579,7 @@ class PageBuilder:
 
     def claim_row(self, r: dict) -> dict:
         conclusion, _, rest = r["reason"].partition(" | ")
-        claim = self.claim.get(r["claim"], {})
+        claim = self.claim.get(r["claim"])
         return {
             "claim": r["claim"],
             "reading": r["reading"] or "all",
@@ -704,11 +706,6 @@ def write_atomically(out: Path, text: str) -> None:
     tmp = out.with_name(out.name + ".tmp")
     tmp.write_text(text)
     tmp.replace(out)
-
-
-def dataset_paths_of(claim: dict) -> list[str]:
-    refs = [claim] + [claim[k] for k in ("lhs", "rhs") if isinstance(claim.get(k), dict)]
-    return [r["dataset"] for r in refs if isinstance(r, dict) and "dataset" in r]
 
 
 @functools.cache

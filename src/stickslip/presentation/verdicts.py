@@ -16,6 +16,10 @@ Every consumer (the page, the notebooks) reads the one table :func:`figure_table
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # annotations only: like speed_of, the module imports the claims package when it runs
+    from ..claims.rows import Claim
 
 #: Figure verdicts, best first.
 VERDICTS = ("reproduced", "mostly reproduced", "partly", "deviating", "not comparable")
@@ -121,11 +125,12 @@ def status_counts(statuses) -> dict[str, int]:
     return {s: statuses.count(s) for s in STATUSES}
 
 
-def speed_of(claim: dict) -> str:
-    """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both."""
+def speed_of(claim: Claim | None) -> str:
+    """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both (or no
+    claim: a table row whose id is in no claims file)."""
     from ..claims.load import disc_speed
 
-    return disc_speed(claim)
+    return "" if claim is None else disc_speed(claim)
 
 
 def _columns(prefix: str, t: Tally | None, reading: str) -> dict:
@@ -145,7 +150,7 @@ def figure_row(
     key: str,
     half: str,
     rows: list[dict],
-    claims: dict[str, dict],
+    claims: dict[str, Claim],
     primary: str,
     printed: str,
     order: list[str],
@@ -158,7 +163,8 @@ def figure_row(
     apart: dict[str, int] = {}  # rows set apart, counted once (in the primary reading, if they have one)
     for r in rows if fe_rows is not None else rows_in_reading(rows, primary):
         if not is_evidence(r):
-            cls = claims.get(r["claim"], {}).get("evidence", r.get("evidence", ""))
+            claim = claims.get(r["claim"])
+            cls = r.get("evidence", "") if claim is None else claim.evidence
             apart[cls] = apart.get(cls, 0) + 1
     out = {"figure": key, "half": half}
     if fe_rows is None:
@@ -170,7 +176,7 @@ def figure_row(
         out["readings_searched"] = len(readings)
         out |= {"stated_speed": "", "implied_speed": ""}
     else:
-        by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"], {})) in ("", s)] for s in SPEEDS}
+        by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"])) in ("", s)] for s in SPEEDS}
         out |= _columns("primary", tally(rows), primary)
         stated = tally(by_speed["15p2rpm"])
         out |= _columns("printed", stated, f"{primary} at 15.2 rev/min")
@@ -193,7 +199,7 @@ def figure_row(
 def figure_table(
     paper: dict,
     rows: list[dict],
-    claims: list[dict],
+    claims: list[Claim],
     primary: str,
     printed: str,
     fe_primary: str,
@@ -203,8 +209,8 @@ def figure_table(
     verdicts (:func:`figure_row`). ``rows``: the claims table; ``fe_rows``: the FE readings table."""
     from ..studies.ranking import rank_readings
 
-    by_id = {c["id"]: c for c in claims}
-    figs_of = {c["id"]: sorted(c.get("figures") or []) for c in claims}
+    by_id = {c.id: c for c in claims}
+    figs_of = {c.id: sorted(c.figures) for c in claims}
     order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
     out = []
     for entry in paper["figures"] + paper.get("text", []):
@@ -217,7 +223,8 @@ def figure_table(
                 r
                 for r in rows
                 if not figs_of.get(r["claim"])
-                and str(by_id.get(r["claim"], {}).get("section")) == entry["section"]
+                and r["claim"] in by_id
+                and by_id[r["claim"]].section == entry["section"]
             ]
             key = entry["key"]
         fe = entry.get("half") == "fe"
