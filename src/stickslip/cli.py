@@ -196,18 +196,16 @@ def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]
 def paper_values(config: dict, root: Path) -> dict[str, list[tuple[float, str]]]:
     """The paper's numbers for the baseline run: every ``value`` claim on the baseline's dataset."""
     from .catalogue import onedof_dataset
+    from .claims.load import load_claims
 
     base = config["onedof"]["baseline"]
     target = onedof_dataset(base["scene"], "{reading}", base["method"])
-    from .io.yaml_files import load_yaml
-
+    # read (and check) only the files with a claim on the baseline's dataset: the run waits for no others
+    files = [p for p in sorted((root / "config" / "claims").glob("*.yaml")) if target in p.read_text()]
     out: dict[str, list[tuple[float, str]]] = {}
-    for path in sorted((root / "config" / "claims").glob("*.yaml")):
-        if target not in path.read_text():  # parse only the files with a claim on the baseline's dataset
-            continue
-        for row in load_yaml(path) or []:
-            if row.get("kind") == "value" and row.get("dataset") == target and row.get("variable") in METRICS:
-                out.setdefault(row["variable"], []).append((float(row["value"]), row["id"]))
+    for row in load_claims(files):
+        if row.kind == "value" and row.dataset == target and row.variable in METRICS:
+            out.setdefault(row.variable, []).append((row.value, row.id))
     return out
 
 
@@ -334,8 +332,8 @@ def cmd_fe(args) -> int:
 
 def cmd_claims(args) -> int:
     from . import api
+    from .claims.load import load_claims
     from .claims.table import read_table
-    from .io.yaml_files import load_yaml
     from .presentation.verdicts import VERDICT_RULE, is_evidence, rows_in_reading, tally
 
     root = api.project_root(args.root)
@@ -345,12 +343,8 @@ def cmd_claims(args) -> int:
             f"--figure: {table} does not exist: build the claims table first "
             f"(`make figures`, or `.venv/bin/snakemake -j2 {paths.claims_table()}`)"
         )
-    ids = {
-        row["id"]
-        for path in sorted((root / "config" / "claims").glob("*.yaml"))
-        for row in load_yaml(path) or []
-        if args.figure in (row.get("figures") or [])
-    }
+    claims = load_claims(sorted((root / "config" / "claims").glob("*.yaml")))
+    ids = {row.id for row in claims if args.figure in row.figures}
     if not ids:
         raise UsageError(f"--figure: no claim of config/claims/*.yaml is about Fig. {args.figure}")
     rows = [r for r in read_table(table) if r["claim"] in ids]
