@@ -1,5 +1,7 @@
 """Bad configuration fails before any job runs, naming the key; nothing is written."""
 
+from pathlib import Path
+
 import pytest
 import yaml
 
@@ -45,6 +47,60 @@ def test_config_errors_name_the_key(repo_root, mutate, key):
     mutate(bad)
     with pytest.raises(ConfigError, match=key):
         validate_config(bad, producible=["results/onedof/friction_mu_vr.csv"])
+
+
+def _no_claims_file_read(monkeypatch):
+    """Make reading a claims file an error (the claims loader imports load_yaml when it reads)."""
+
+    def refuse(path):
+        raise AssertionError(f"{path} was read again")
+
+    monkeypatch.setattr("stickslip.io.yaml_files.load_yaml", refuse)
+
+
+def test_the_config_check_reads_no_claims_file_the_parse_has_read(repo_root, monkeypatch):
+    """The Snakefile reads the claims files once (workflow/rules/common.smk) and hands the rows to the
+    config check; a fitted claim id that no row has is the same error as when the check reads the files."""
+    from glob import glob
+
+    from stickslip.claims.load import load_claims
+    from stickslip.pipeline.config import ConfigError, load_config, validate_config
+
+    monkeypatch.chdir(repo_root)  # inverse.claims_glob, like the parse's claims files, is project-relative
+    config = load_config(sorted(glob("config/*.yaml")))
+    claims = load_claims(sorted(glob("config/claims/*.yaml")))
+    _no_claims_file_read(monkeypatch)
+    validate_config(config, producible=["results/onedof/friction_mu_vr.csv"], claims=claims)
+    config["inverse"]["figures"]["fig02"]["claims"].append("no_such_claim")
+    message = "inverse.figures.fig02.claims: 'no_such_claim' is not a claim id"
+    with pytest.raises(ConfigError, match=message):
+        validate_config(config, producible=["results/onedof/friction_mu_vr.csv"], claims=claims)
+    monkeypatch.undo()
+    monkeypatch.chdir(repo_root)
+    with pytest.raises(ConfigError, match=message):
+        validate_config(config, producible=["results/onedof/friction_mu_vr.csv"])
+
+
+def test_rows_of_files_outside_the_inverse_glob_are_not_its_claims(repo_root, monkeypatch):
+    """Rows of only some of the glob's files: the check reads the glob's files itself (so a fitted claim of a
+    file the rows did not come from is still found), and counts no row of a file outside the glob."""
+    from glob import glob
+
+    from stickslip.claims.load import load_claims
+    from stickslip.pipeline.config import ConfigError, load_config, validate_config
+
+    monkeypatch.chdir(repo_root)
+    config = load_config(sorted(glob("config/*.yaml")))
+    fitted = config["inverse"]["figures"]["fig02"]["claims"][0]
+    without = [f for f in sorted(glob("config/claims/*.yaml")) if fitted not in Path(f).read_text()]
+    validate_config(config, producible=["results/onedof/friction_mu_vr.csv"], claims=load_claims(without))
+    config["inverse"]["claims_glob"] = "config/claims/sections_09_12.yaml"  # no 1-DOF claim in it
+    with pytest.raises(ConfigError, match=f"'{fitted}' is not a claim id"):
+        validate_config(
+            config,
+            producible=["results/onedof/friction_mu_vr.csv"],
+            claims=load_claims(sorted(glob("config/claims/*.yaml"))),
+        )
 
 
 @pytest.mark.pipeline

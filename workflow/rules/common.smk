@@ -17,21 +17,22 @@ from stickslip.studies.specs import dense_map
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = [paths.friction_table("csv")]
 
+#: Relative to the working directory (the project folder), so a moved project keeps its inputs' names.
+CLAIM_FILES = sorted(glob("config/claims/*.yaml"))
+#: The claims rows, read once at parse time for every rule that needs them (and the config check).
+CLAIMS = load_claims(CLAIM_FILES)
+
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
-validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES)
+validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")
 
-#: Relative to the working directory (the project folder), so a moved project keeps its inputs' names.
-CLAIM_FILES = sorted(glob("config/claims/*.yaml"))
 #: The pinned set of claim ids: a deleted row or claims file is an error naming the ids it lost.
 CLAIM_IDS_FILE = "config/claims/ids.txt"
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
-#: The claims rows, read once at parse time for every rule that needs them.
-CLAIMS = load_claims(CLAIM_FILES)
 #: Every product the config makes, path -> Entry (stickslip.catalogue): a claimed path must be one of them.
 CATALOGUE = paths.catalogue(config)
 check_claims(

@@ -11,10 +11,14 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..io.typed_errors import typed_errors
 from ..io.yaml_files import YamlFileError, key_location, load_yaml
 from ..model.params import ParameterError
+
+if TYPE_CHECKING:  # annotations only: the claims package is imported when claims are checked
+    from ..claims.rows import Claim
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -73,20 +77,25 @@ def located(message: str, sources: Sequence[str | Path]) -> str:
 
 
 def validate_config(
-    config: dict, *, producible: Iterable[str] = (), sources: Sequence[str | Path] = ()
+    config: dict,
+    *,
+    producible: Iterable[str] = (),
+    sources: Sequence[str | Path] = (),
+    claims: Sequence[Claim] | None = None,
 ) -> None:
     """Raise ConfigError naming the key of the first bad value (all typed errors at once).
 
     ``producible`` lists files a rule writes (a friction table need not exist before the run); ``sources``
     the config files the config was loaded from, in order: each error line then starts with the file and
-    line that set its key."""
+    line that set its key. ``claims``: the claim rows the caller has read already (``load_claims``), so
+    the claims files are not read a second time; None reads the files ``inverse.claims_glob`` names."""
     try:
-        _validate(config, list(producible))
+        _validate(config, list(producible), claims)
     except ConfigError as exc:
         raise ConfigError(located(str(exc), sources)) from None
 
 
-def _validate(config: dict, producible: list[str]) -> None:
+def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | None = None) -> None:
     from pydantic import ValidationError
 
     from .config_models import PipelineConfig
@@ -108,7 +117,7 @@ def _validate(config: dict, producible: list[str]) -> None:
             allow_expensive=config.get("allow_expensive", False),
         )
         _check_validation(config, list(producible))
-        _check_inverse_claims(config)
+        _check_inverse_claims(config, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
 
@@ -129,13 +138,19 @@ def _check_validation(config: dict, producible: list[str]) -> None:
     ValidationSetup(config["validation"]).check(producible)
 
 
-def _check_inverse_claims(config: dict) -> None:
-    """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names."""
+def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> None:
+    """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names. ``read``:
+    rows already read, each with its file; the glob's files are read here only when it names one that
+    no row came from (or nothing was read)."""
     from glob import glob
 
-    from ..inverse.problem import load_claim_rows
+    from ..inverse.problem import by_id, load_claim_rows
 
-    claims = load_claim_rows(sorted(glob(config["inverse"]["claims_glob"])))
+    files = {Path(p) for p in glob(config["inverse"]["claims_glob"])}
+    if read is None or not files <= {Path(c.file) for c in read}:
+        # read as the inverse study reads them: every file of the glob together (ids unique across them)
+        read = list(load_claim_rows(sorted(str(f) for f in files)).values())
+    claims = by_id(c for c in read if Path(c.file) in files)
     for name, figure in config["inverse"]["figures"].items():
         for claim in figure["claims"]:
             if claim not in claims:
