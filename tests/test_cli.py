@@ -144,6 +144,22 @@ def test_claims_without_a_build_says_how_to_build_it(tmp_path, capsys):
     assert "results/claims/deviations.csv" in capsys.readouterr().err
 
 
+def test_claims_with_a_misspelt_claims_key_names_file_and_key_without_a_traceback(tmp_path, capsys):
+    import shutil
+
+    shutil.copytree(ROOT / "config", tmp_path / "config")
+    table = tmp_path / "results" / "claims" / "deviations.csv"
+    table.parent.mkdir(parents=True)
+    table.write_text("claim,reading,status\n")
+    claims = tmp_path / "config" / "claims" / "section_03_baseline.yaml"
+    claims.write_text(claims.read_text().replace("tolerance:", "tolerence:", 1))
+    with pytest.raises(SystemExit) as exit_:
+        main(["claims", "--figure", "2", "--root", str(tmp_path)])
+    assert exit_.value.code == 2
+    err = capsys.readouterr().err
+    assert "stickslip claims: error:" in err and "section_03_baseline.yaml" in err and "tolerence" in err
+
+
 def test_show_reports_the_checksum_state_of_a_dataset(tmp_path, capsys):
     ds = stickslip.simulate(t_end=12.0, transient=4.0, count_window=12.0)
     path = tmp_path / "run.nc"

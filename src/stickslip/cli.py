@@ -398,11 +398,13 @@ COMMANDS = {"run": cmd_run, "fe": cmd_fe, "claims": cmd_claims, "show": cmd_show
 
 
 def main(argv: list[str] | None = None) -> int:
+    from .claims.load import ClaimsError  # a damaged claims file is the user's input: a message, no traceback
+
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
         return COMMANDS[args.command](args)
-    except (UsageError, FileNotFoundError) as exc:
+    except (UsageError, FileNotFoundError, ClaimsError) as exc:
         parser.exit(2, f"stickslip {args.command}: error: {exc}\n")
 
 
