@@ -19,8 +19,8 @@ import numpy as np
 from stickslip.fe.continuum import build_continuum, increments, integrate_continuum, stable_time_step
 from stickslip.fe.explicit import integrate
 from stickslip.fe.metrics import dominant_frequency
-from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
+from stickslip.fe.scene import build_scene
 
 ABAQUS_INCREMENTS = 3_688_747  # paper, Fig. 33 banner: "Increment 3688747: Step Time = 0.6500"
 DURATION = 0.65

@@ -657,7 +657,7 @@ def test_claims_rows_that_contradict_the_config_or_the_pins_are_rejected(case, t
 
 def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_path):
     from stickslip.catalogue import onedof_catalogue
-    from stickslip.io.netcdf import run_dataset_variables
+    from stickslip.io.run_variables import run_dataset_variables
 
     (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump([_with(VALUE_ROW, variable="max_displacment")]))
     claims = load_claims([tmp_path / "zz_broken.yaml"])
@@ -672,7 +672,7 @@ def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_pat
 
 
 def test_every_variable_a_run_dataset_holds_is_in_the_registry():
-    from stickslip.io.netcdf import run_dataset_variables
+    from stickslip.io.run_variables import run_dataset_variables
     from stickslip.studies.onedof import scene_run_dataset
     from stickslip.studies.specs import run_spec
 

@@ -32,9 +32,12 @@ import hashlib
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, replace
 from fnmatch import fnmatchcase
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
+
+if TYPE_CHECKING:  # the config check reads EnsembleSpec at parse time: no xarray there (0.5 s a no-op)
+    import xarray as xr
 
 MEMBER_DIM = "ensemble_member"
 SUFFIX = "_ensemble"

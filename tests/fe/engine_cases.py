@@ -27,9 +27,9 @@ from stickslip.ensemble import perturbed_mapping
 from stickslip.fe.continuum import build_continuum, integrate_continuum
 from stickslip.fe.continuum import stable_time_step as continuum_stable_time_step
 from stickslip.fe.explicit import integrate, stable_time_step
-from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
 from stickslip.fe.reduced import contact_boundary, craig_bampton
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.scene import build_scene
 from stickslip.studies.fe_config import scene_mapping
 
 ROOT = Path(__file__).resolve().parents[2]

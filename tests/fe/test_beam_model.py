@@ -6,8 +6,8 @@ import pytest
 
 from stickslip.fe.beam import element_mass
 from stickslip.fe.explicit import static_state
-from stickslip.fe.params import BeamParams, FrictionTable, SolverParams
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.params import BeamParams, FrictionTable, SceneParams, SolverParams
+from stickslip.fe.scene import build_scene
 from stickslip.fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 from stickslip.studies.fe_config import scene_mapping
 from stickslip.studies.fe_scene import run_scene

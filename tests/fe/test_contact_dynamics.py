@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from stickslip.fe.explicit import ContactLaw, integrate, stable_time_step, static_state
-from stickslip.fe.params import FrictionTable
+from stickslip.fe.params import FrictionTable, SceneParams
 from stickslip.fe.reduced import contact_boundary, craig_bampton
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.scene import build_scene
 from stickslip.fe.stability import max_growth, sliding_eigenvalues, transient_growth_rate
 
 FIG17 = FrictionTable.paper_fig17()

@@ -8,9 +8,9 @@ import pytest
 from stickslip.fe import continuum, driver, engine, explicit
 from stickslip.fe.continuum import build_continuum, integrate_continuum
 from stickslip.fe.explicit import integrate, integrate_python
-from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
 from stickslip.fe.reduced import contact_boundary, craig_bampton
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.scene import build_scene
 
 FIG17 = FrictionTable.paper_fig17()
 SERIES = ("t", "x", "y", "vx", "vy", "normal_force", "friction_force", "slip_velocity")

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from stickslip.fe.explicit import integrate
-from stickslip.fe.params import FrictionTable
-from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.fe.params import FrictionTable, SceneParams
+from stickslip.fe.scene import build_scene
 
 FIG17 = FrictionTable.paper_fig17()
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from stickslip.pipeline.config import drop_removed, validate_config
 from stickslip.claims.load import ClaimsError, check_claims, load_claims, required_datasets
-from stickslip.io.netcdf import run_dataset_variables
+from stickslip.io.run_variables import run_dataset_variables
 import stickslip.catalogue as paths
 from stickslip.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file

@@ -11,14 +11,17 @@ import itertools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import BeltParams, ParameterError
 from .metrics import PAPER_COUNT_WINDOW, limit_cycle_metrics
+
+if TYPE_CHECKING:  # the workflow builds sweep specs at parse time: xarray only where a dataset is made
+    import xarray as xr
 
 
 @dataclass(frozen=True)
@@ -108,6 +111,8 @@ def run_points(
 
 def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: dict) -> xr.Dataset:
     """One chunk as a dataset over the flattened grid index ``point``."""
+    import xarray as xr
+
     n = grid_size(axes)
     start = chunk * chunk_size
     count = len(next(v for k, v in results.items() if k != "_meta"))
@@ -125,6 +130,8 @@ def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: d
 
 def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
     """Concatenate chunk datasets and unflatten the grid into one dimension per axis."""
+    import xarray as xr
+
     flat = xr.concat(sorted(chunks, key=lambda d: int(d.point[0])), dim="point")
     n = grid_size(axes)
     if flat.sizes["point"] != n or not np.array_equal(flat.point.values, np.arange(n)):

@@ -239,6 +239,26 @@ class SolverParams:
 
 
 @dataclass(frozen=True)
+class SceneParams:
+    beam: BeamParams
+    disc: DiscParams
+    contact: ContactParams
+    solver: SolverParams
+
+    @classmethod
+    def from_mapping(cls, data: Mapping[str, Any]) -> SceneParams:
+        """The parameters of a scene mapping: its beam, disc, contact and solver sections. Its other keys
+        (output windows, description) are the studies'; which keys a scene may have is the config's typed
+        model's to check (stickslip.pipeline.schema.fe.FeScene), not listed again here."""
+        return cls(
+            BeamParams.from_mapping(data.get("beam", {})),
+            DiscParams.from_mapping(data.get("disc", {"speed_rev_per_min": 15.2})),
+            ContactParams.from_mapping(data.get("contact", {})),
+            SolverParams.from_mapping(data.get("solver", {})),
+        )
+
+
+@dataclass(frozen=True)
 class FrictionTable:
     """Tabulated mu(|v_r|) as fed to ABAQUS (Fig. 17 / Fig. 18): static limit mu(0), linear interpolation,
     constant extrapolation beyond the last speed."""

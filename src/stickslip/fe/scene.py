@@ -2,34 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
 
 from .beam import BeamModel, assemble_beam
 from .contact import ContactGeometry, contact_geometry
 from .explicit import ContactLaw, System, static_state
-from .params import BeamParams, ContactParams, DiscParams, FrictionTable, SolverParams
-
-
-@dataclass(frozen=True)
-class SceneParams:
-    beam: BeamParams
-    disc: DiscParams
-    contact: ContactParams
-    solver: SolverParams
-
-    @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> SceneParams:
-        """The parameters of a scene mapping: its beam, disc, contact and solver sections. Its other keys
-        (output windows, description) are the studies'; which keys a scene may have is the config's typed
-        model's to check (stickslip.pipeline.schema.fe.FeScene), not listed again here."""
-        return cls(
-            BeamParams.from_mapping(data.get("beam", {})),
-            DiscParams.from_mapping(data.get("disc", {"speed_rev_per_min": 15.2})),
-            ContactParams.from_mapping(data.get("contact", {})),
-            SolverParams.from_mapping(data.get("solver", {})),
-        )
+from .params import FrictionTable, SceneParams
 
 
 @dataclass(frozen=True)

@@ -13,9 +13,12 @@ members only.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
+
+if TYPE_CHECKING:  # the workflow reads HALF_STEP at parse time, where xarray would cost every no-op 0.5 s
+    import xarray as xr
 
 #: the step-halving factor of the time step (on the explicit safety factor)
 HALF_STEP = 0.5

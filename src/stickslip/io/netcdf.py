@@ -58,19 +58,6 @@ def flat_attrs(prefix: str, mapping: dict) -> dict:
     return {f"{prefix}{key}": _attr_value(val) for key, val in sorted(mapping.items())}
 
 
-#: Time series and solver scalars of every run dataset (``trajectory_dataset``), beside its metrics.
-RUN_SERIES = ("displacement", "velocity", "belt_velocity", "relative_velocity", "phase")
-RUN_SOLVER = ("solver_status", "solver_rhs_evaluations", "solver_steps", "solver_events", "solver_cpu_time")
-RUN_SEGMENTS = ("segment_start", "segment_end", "segment_phase")
-
-
-def run_dataset_variables() -> frozenset[str]:
-    """Every variable a 1-DOF run dataset may hold: what a claim on such a dataset may name."""
-    from ..analysis.metrics import METRICS
-
-    return frozenset(RUN_SERIES + RUN_SOLVER + RUN_SEGMENTS) | frozenset(METRICS)
-
-
 def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = None) -> xr.Dataset:
     """Time series of one run plus its metrics as scalar variables."""
     time = xr.Variable(

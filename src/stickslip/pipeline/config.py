@@ -221,9 +221,7 @@ def check_fe_lengths(
     checks += [(f"output.windows[{i}]", w[1], "<=") for i, w in enumerate(output.get("windows") or [])]
     for name, value, _ in checks:
         if value is not None and value > t_end:
-            raise ConfigError(
-                f"{key_of(name)}: {value!r} does not fit in solver.t_end = {t_end!r} ({where})"
-            )
+            raise ConfigError(f"{key_of(name)}: {value!r} does not fit in solver.t_end = {t_end!r} ({where})")
     output_dt = solver.get("output_dt")
     if output_dt is not None and t_end / output_dt + 1 > MAX_SAMPLES_PER_RUN:
         raise ConfigError(
@@ -247,7 +245,7 @@ def check_fe_lengths(
 def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool = False) -> None:
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
     before any job starts with the config key named (references between entries: config_models)."""
-    from ..fe.scene import SceneParams
+    from ..fe.params import SceneParams
     from ..studies.fe_config import scene_mapping
 
     for name in fe_cfg["scenes"]:

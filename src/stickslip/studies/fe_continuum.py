@@ -17,9 +17,8 @@ from ..catalogue import fe_continuum_window
 from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from ..fe.metrics import trajectory_metrics
 from ..fe.modes import mode_growth
-from ..fe.params import FrictionTable
+from ..fe.params import FrictionTable, SceneParams
 from ..fe.quantities import INTERPRETATION
-from ..fe.scene import SceneParams
 from ..fe.step_halving import HALF_STEP, apply_step_halving
 from .fe_packing import result_dataset
 

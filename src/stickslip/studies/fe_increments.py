@@ -8,8 +8,7 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.params import FrictionTable
-from ..fe.scene import SceneParams
+from ..fe.params import FrictionTable, SceneParams
 
 
 def increments_dataset(

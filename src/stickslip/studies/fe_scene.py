@@ -8,10 +8,10 @@ from collections.abc import Mapping
 
 import xarray as xr
 
-from ..fe.params import FrictionTable
+from ..fe.params import FrictionTable, SceneParams
 from ..fe.quantities import INTERPRETATION
 from ..fe.run import integrate_scene, run_metrics
-from ..fe.scene import BuiltScene, SceneParams, build_scene
+from ..fe.scene import BuiltScene, build_scene
 from .fe_packing import result_dataset, shape_variables
 
 

@@ -5,14 +5,17 @@ from __future__ import annotations
 
 import itertools
 import json
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 
 from ..analysis.errors import measure_run, segment_cycle_metrics
 from ..analysis.failure import FAILURE_KINDS, classify
 from ..model import BeltModel, BeltParams
 from ..solvers import make_solver
+
+if TYPE_CHECKING:  # the config check expands the methods at parse time: xarray only where data is made
+    import xarray as xr
 
 
 def expand_methods(entries) -> list[tuple[str, dict, str]]:
@@ -108,6 +111,8 @@ STRINGS = {
 
 
 def records_dataset(records, dim="run") -> xr.Dataset:
+    import xarray as xr
+
     ds = xr.Dataset()
     for key, (units, long_name) in NUMERIC.items():
         ds[key] = (dim, np.array([float(r[key]) for r in records]), {"units": units, "long_name": long_name})
@@ -151,6 +156,8 @@ FAILURE_MAP_TIMING = {"min_repeats": 1, "max_repeats": 1, "min_total_cpu": 0.0, 
 
 def failure_map_dataset(cfg: dict) -> xr.Dataset:
     """``methods_study.failure_map``: every method's run and failure flags over one swept parameter."""
+    import xarray as xr
+
     fm = cfg["failure_map"]
     methods = expand_methods(fm["methods"])
     rows = []
