@@ -128,7 +128,9 @@ def test_paper_spec_lists_every_figure_once_in_the_papers_order():
     assert set(PAPER_FIGURES) <= set(numbers)
 
 
-def test_page_sources_map_images_to_paper_figures_from_config_titles_fe_map_and_docstrings(tmp_path):
+def test_page_sources_take_paper_figures_from_catalogue_entries_and_docstrings_only_where_no_map_names_them(
+    tmp_path,
+):
     from types import SimpleNamespace
 
     from stickslip.presentation.sources import page_sources
@@ -145,33 +147,31 @@ def test_page_sources_map_images_to_paper_figures_from_config_titles_fe_map_and_
         )
 
     rules = [
-        rule("onedof_figure_fig12", ["results/figures/fig12/plateau_caption.png"]),
+        rule("onedof_figure_fig12", ["results/figures/fig12/plateau_caption.png"], "Fig. 99: not read"),
         rule("fe_figures", ["results/figures/fe/section11_a.png", "results/figures/fe/readings.png"]),
         rule("eq6_curve", ["results/onedof/fig04/eq6.nc", "results/figures/fig04/eq6.png"], "Fig. 4: Eq. 6"),
         rule("other", ["results/figures/methods/map.png"], "Where methods fail"),
     ]
-    titled = {"fig12": {"title": "Fig. 12-13: damping"}}
-    fe = {"section11_a": {"figures": "Fig. 29-33"}}
     from stickslip.catalogue import Entry
 
-    def image(group, name, rule):
+    def image(group, name, rule, figures=()):
         path = f"results/figures/{group}/{name}.png"
-        return path, Entry("figure", (("group", group), ("name", name)), path, rule)
+        return path, Entry("figure", (("group", group), ("name", name)), path, rule, figures)
 
     catalogue = dict(
         [
-            image("fig12", "plateau_caption", "onedof_figure_fig12"),
-            image("fe", "section11_a", "fe_figures"),
+            image("fig12", "plateau_caption", "onedof_figure_fig12", (12, 13)),
+            image("fe", "section11_a", "fe_figures", (29, 30, 31, 32, 33)),
             image("fe", "readings", "fe_figures"),
             image("fig04", "eq6", "eq6_curve"),
             image("methods", "map", "other"),
         ]
     )
-    found = {s["path"]: s for s in page_sources(rules, titled, fe, tmp_path, catalogue)}
+    found = {s["path"]: s for s in page_sources(rules, tmp_path, catalogue)}
     assert {p: s["figures"] for p, s in found.items()} == {
-        "results/figures/fig12/plateau_caption.png": [12, 13],
+        "results/figures/fig12/plateau_caption.png": [12, 13],  # the entry's, not the docstring's
         "results/figures/fe/section11_a.png": [29, 30, 31, 32, 33],
-        "results/figures/fig04/eq6.png": [4],
+        "results/figures/fig04/eq6.png": [4],  # no map names it: its rule's docstring
     }
     eq6 = found["results/figures/fig04/eq6.png"]
     assert (eq6["label"], eq6["rule"]) == ("eq6", "eq6_curve")

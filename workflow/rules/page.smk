@@ -1,6 +1,5 @@
 # The replication page (stickslip.catalogue.page()), one card per figure of the paper with its verdict and evidence.
 # Written after every other result (its input is every final target but the timing table).
-import yaml
 
 from stickslip.presentation.sources import page_sources
 
@@ -11,13 +10,7 @@ PAGE_FILES = sorted(
     if p.suffix in (".py", ".j2", ".css", ".yaml")
 )
 #: Every image that shows a paper figure, with the rule that draws it (stickslip.presentation.sources).
-PAGE_SOURCES = page_sources(
-    workflow.rules,
-    titled={**ONEDOF["figures"], **ONEDOF.get("sweep_figures", {})},
-    fe_figures=yaml.safe_load(open(Path(workflow.basedir, "workflow", "report", "figures.yaml")))["fe"],
-    basedir=workflow.basedir,
-    catalogue=CATALOGUE,
-)
+PAGE_SOURCES = page_sources(workflow.rules, basedir=workflow.basedir, catalogue=CATALOGUE)
 
 
 rule figure_verdicts:

@@ -19,6 +19,12 @@ rule report_captions:
         config={
             "onedof": {"figures": ONEDOF["figures"]},
             "fe": {"scenes": config.get("fe", {}).get("scenes", {})},
+            # each beam-on-disc image's paper figures, from the catalogue (config fe.paper_figures)
+            "fe_images": {
+                path: {"name": entry.name("name"), "figures": list(entry.figures)}
+                for path, entry in CATALOGUE.items()
+                if entry.kind == "figure" and entry.name("group") == "fe" and entry.figures
+            },
             "methods_study": {"scenes": config.get("methods_study", {}).get("scenes", {})},
             "notebooks": config["notebooks"],
         },

@@ -4,7 +4,7 @@ import yaml
 
 from stickslip import catalogue as paths
 from stickslip.claims.table import read_table
-from stickslip.presentation.report import caption_text, claims_for, paper_figures, write_captions
+from stickslip.presentation.report import caption_text, claims_for, write_captions
 
 rows = read_table(snakemake.input.table)  # noqa: F821
 spec = yaml.safe_load(open(snakemake.input.figures))  # noqa: F821
@@ -20,12 +20,12 @@ for fig, fspec in config["onedof"]["figures"].items():
             note=f"Methods overlaid: {', '.join(fspec['methods'])}. A failed solver run is labelled as such, "
             "never drawn as a result.",
         )
-for scene in config.get("fe", {}).get("scenes", {}):
-    entry = spec["fe"].get(scene, {})
-    figs = paper_figures(entry.get("figures", ""))
-    captions[paths.figure("fe", scene)] = caption_text(
-        f"Beam on rotating disc, scene {scene}", figs, claims_for(rows, figs), note=entry.get("note", "")
-    )
+# each beam-on-disc image: its figures from config fe.paper_figures (catalogue), its note from figures.yaml
+for path, image in config["fe_images"].items():
+    note = spec["fe"].get(image["name"], {}).get("note", "")
+    title = f"Beam on rotating disc, {image['name']}"
+    figs = set(image["figures"])
+    captions[path] = caption_text(title, figs, claims_for(rows, figs), note=note)
 if config["methods_study"]["scenes"]:
     scenes = list(config["methods_study"]["scenes"])
     wp, fm = spec["methods"]["work_precision"], spec["methods"]["failure_map"]

@@ -1,9 +1,8 @@
 """Which of the pipeline's images show which figure of the paper, found from the workflow's own rules.
 
-Called by ``workflow/rules/page.smk`` at parse time with Snakemake's rules: every rule output
-``results/figures/<folder>/<name>.png`` shows the paper figures named by the config title of its 1-DOF or
-sweep figure (``<folder>``), by ``workflow/report/figures.yaml`` for the beam-on-disc scenes
-(``results/figures/fe/<scene>.png``), or else by its rule's docstring ("Fig. 4: ...").
+Called by ``workflow/rules/page.smk`` at parse time with Snakemake's rules: an image shows the paper figures
+its catalogue entry carries (``Entry.figures``, from the config's ``paper_figures`` maps of both halves), or,
+for an image no map names (an equation's curve), those its rule's docstring names ("Fig. 4: ...").
 
 Also the line a source link points to: a rule's definition in its rules file, a function's ``def`` in a module
 (the page renders those files with an anchor per line, ``#L<n>``).
@@ -19,18 +18,12 @@ from pathlib import Path
 from .report import paper_figures
 
 
-def figure_numbers(
-    folder: str, name: str, titled: dict, fe_figures: dict, docstring: str | None
-) -> list[int]:
-    """The paper figures an image ``results/figures/<folder>/<name>.png`` shows (sorted; [] for none)."""
-    if folder in titled:
-        return sorted(paper_figures(titled[folder].get("title", folder)))
-    if folder == "fe":
-        return sorted(paper_figures((fe_figures.get(name) or {}).get("figures", "")))
-    return sorted(paper_figures(docstring or ""))
+def figure_numbers(entry, docstring: str | None) -> list[int]:
+    """The paper figures an image shows (sorted; [] for none): its entry's, else its rule docstring's."""
+    return list(entry.figures) or sorted(paper_figures(docstring or ""))
 
 
-def page_sources(rules, titled: dict, fe_figures: dict, basedir, catalogue: dict) -> list[dict]:
+def page_sources(rules, basedir, catalogue: dict) -> list[dict]:
     """One entry per image a rule writes that shows a paper figure: its path, figures, label (reading or
     scene), rule name, rules file and script (relative to ``basedir``). ``rules``: objects with ``name``,
     ``output``, ``docstring``, ``snakefile`` and ``script`` (Snakemake's rules); ``catalogue``: path -> Entry
@@ -46,7 +39,7 @@ def page_sources(rules, titled: dict, fe_figures: dict, basedir, catalogue: dict
             if entry is None or entry.kind != "figure":
                 continue
             label = entry.name("name")
-            figures = figure_numbers(entry.name("group"), label, titled, fe_figures, rule.docstring)
+            figures = figure_numbers(entry, rule.docstring)
             if not figures:
                 continue
             script = Path(rule.snakefile).parent / rule.script if rule.script else None
