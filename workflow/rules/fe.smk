@@ -45,6 +45,8 @@ rule fe_reading:
         config=lambda wildcards: fe_job_config(
             FE_EFFECTIVE, scenes=FE_SCENES, reading=wildcards.fe_reading, sections=["cross_scene"]
         ),
+        # the scene of each output, in the same order (names are looked up, never parsed from a path)
+        scenes=FE_SCENES,
         ensemble=ENSEMBLE,
     script:
         "../scripts/fe_reading.py"
@@ -69,6 +71,7 @@ rule fe_studies:
         CONDA_ENV
     params:
         config=fe_job_config(FE_EFFECTIVE, scenes=FE_STUDY_BASES, sections=FE_STUDY_SECTIONS),
+        sweeps=FE_SWEEPS,  # the sweep of each output, in the same order
         ensemble=ENSEMBLE,
     script:
         "../scripts/fe_studies.py"
@@ -152,6 +155,9 @@ rule fe_model_comparison:
         CONDA_ENV
     params:
         config=fe_job_config(FE_EFFECTIVE, scenes=FE_SCENES, sections=["comparison"]),
+        # the scene of each continuum output and of each window input, in the same order
+        scenes=FE_SCENES,
+        window_scenes=FE_WINDOW_SCENES,
     script:
         "../scripts/fe_comparison.py"
 

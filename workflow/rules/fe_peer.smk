@@ -21,6 +21,7 @@ rule fe_peer_calculix:
         CONDA_ENV
     params:
         config=FE_PEER_CONFIG,
+        decks=FE_PEER_DECKS,  # the name of each deck output, in the same order
     script:
         "../scripts/fe_peer_calculix.py"
 
@@ -40,6 +41,7 @@ rule fe_decks:
         CONDA_ENV
     params:
         config=fe_job_config(FE_EFFECTIVE, scenes=FE_SCENES, sections=["comparison"]),
+        scenes=FE_SCENES,  # the scene of each deck, in the same order
     script:
         "../scripts/fe_decks.py"
 

@@ -41,6 +41,8 @@ rule onedof_sweeps:
         CONDA_ENV
     params:
         config=lambda wc: onedof_subconfig(wc.reading, SWEEP_SCENES, SWEEP_METHODS, study="sweeps"),
+        # (sweep, dense) of each output, in the same order
+        runs=[[s, d] for s in SWEEPS for d in (False, True)],
         ensemble=ENSEMBLE,
         ensemble_outputs=lambda wc: sorted(
             CLAIMED_DATASETS & {sweep_dataset(s, wc.reading, d) for s in SWEEPS for d in (False, True)}

@@ -1,7 +1,6 @@
 """Continuum strip vs beam on every paper scene -> results/fe/continuum/*.nc, model_comparison.csv/.nc."""
 
 import csv
-from pathlib import Path
 
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.quantities import INTERPRETATION
@@ -22,8 +21,7 @@ cfg = snakemake.params.config  # noqa: F821  (every scene resolved, and the comp
 cmp = cfg["comparison"]
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 cont, beam, floors, half = {}, {}, {}, {}
-for path in snakemake.output.continuum:  # noqa: F821
-    name = Path(path).stem
+for name, path in zip(snakemake.params.scenes, snakemake.output.continuum, strict=True):  # noqa: F821
     mapping = comparison_mapping(cfg, name)
     nx, ny = cmp["mesh"]
     cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
@@ -34,8 +32,9 @@ for path in snakemake.output.continuum:  # noqa: F821
     print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
 rows = comparison_rows(cont, beam, cmp.get("notes", {}), floors, half)
 # over a claim's window: the continuum runs of rule fe_continuum_window against the default reading's beam
-window = {Path(p).stem: read_dataset(p) for p in snakemake.input.window}  # noqa: F821
-beam_window = {Path(p).stem: read_dataset(p) for p in snakemake.input.beam}  # noqa: F821
+scenes = snakemake.params.window_scenes  # noqa: F821
+window = {s: read_dataset(p) for s, p in zip(scenes, snakemake.input.window, strict=True)}  # noqa: F821
+beam_window = {s: read_dataset(p) for s, p in zip(scenes, snakemake.input.beam, strict=True)}  # noqa: F821
 rows += window_rows(window, beam_window, cmp.get("notes", {}))
 with open(snakemake.output.table, "w", newline="") as f:  # noqa: F821
     w = csv.DictWriter(f, fieldnames=list(rows[0]))

@@ -1,7 +1,5 @@
 """CalculiX peer of the continuum strip -> results/fe/peer_calculix.{nc,csv} and its two linear decks."""
 
-from pathlib import Path
-
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.io.text_files import write_csv_atomic, write_text_atomic
@@ -9,8 +7,8 @@ from stickslip.studies.fe_peer import peer_study
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 rows, ds, decks = peer_study(snakemake.params.config["fe"])  # noqa: F821
-for path in snakemake.output.decks:  # noqa: F821
-    write_text_atomic(path, decks[Path(path).stem])
+for name, path in zip(snakemake.params.decks, snakemake.output.decks, strict=True):  # noqa: F821
+    write_text_atomic(path, decks[name])
 write_csv_atomic(snakemake.output.table, rows)  # noqa: F821
 write_dataset(
     ds,

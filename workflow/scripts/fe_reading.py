@@ -2,7 +2,6 @@
 ensemble), plus the cross-scene ratios."""
 
 from dataclasses import replace
-from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from stickslip.fe.params import FrictionTable
@@ -23,8 +22,8 @@ friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # member would only repeat the base run
 spec = replace(EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas(), step_factor=HALF_STEP)  # noqa: F821
 built, mappings = {}, {}
-for path in snakemake.output.scenes:  # noqa: F821
-    name = Path(path).stem
+scene_paths = dict(zip(snakemake.params.scenes, snakemake.output.scenes, strict=True))  # noqa: F821
+for name, path in scene_paths.items():
     mappings[name] = scene_mapping(cfg, name)
     ds = ensemble_dataset(
         lambda mp, n=name: scene_dataset(mp, friction, n),
@@ -43,8 +42,7 @@ for path in snakemake.output.scenes:  # noqa: F821
     built[name] = ds
 cross = cross_scene_dataset(built, cfg["cross_scene"])
 # Written only once every scene is computed: a job killed while integrating leaves no dataset behind.
-for path in snakemake.output.scenes:  # noqa: F821
-    name = Path(path).stem
+for name, path in scene_paths.items():
     method = {"fe_reading": reading}
     write_dataset(built[name], path, scene=mappings[name], interpretation=INTERPRETATION, method=method)
 write_dataset(

@@ -1,6 +1,5 @@
 """Sweeps, convergence and stability studies, continuum increments -> results/fe/*.nc (one job)."""
 
-from pathlib import Path
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
@@ -19,8 +18,7 @@ cfg = snakemake.params.config  # noqa: F821  (the studies' sections and base sce
 out = snakemake.output  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble)  # noqa: F821  (claimed: sweeps, stability, increments)
-for path in out.sweeps:
-    name = Path(path).stem
+for name, path in zip(snakemake.params.sweeps, out.sweeps, strict=True):  # noqa: F821
     ds = ensemble_dataset(
         lambda c, name=name: sweep_dataset(c, name, friction),
         cfg,

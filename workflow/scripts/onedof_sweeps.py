@@ -15,10 +15,8 @@ from stickslip.studies.specs import PERTURBED_FIELDS, sweep_spec
 log_to_file(snakemake.log[0])  # noqa: F821
 reading, config = snakemake.wildcards.reading, snakemake.params.config
 ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
-for path in snakemake.output:
-    name = path.split("/")[-2]
-    dense = name.endswith("_dense")
-    sweep = name.removesuffix("_dense")
+for (sweep, dense), path in zip(snakemake.params.runs, snakemake.output, strict=True):
+    name = f"{sweep}_dense" if dense else sweep
     spec = sweep_spec(config, sweep, reading)
     progress = partial(step_callback, f"sweep {name}", sink=logging.info)
     ds = ensemble_dataset(
