@@ -35,3 +35,27 @@ def test_a_last_bit_change_a_missing_file_and_a_changed_claims_table_are_reporte
         "claims/deviations.csv: differs",
     ]
     assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 1
+
+
+def with_members(root, name, labels, values):
+    """A dataset with an ensemble over ``labels``: one value per member of metric ``m``."""
+    path = root / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    xr.Dataset(
+        {"m": ((), values[0]), "m_ensemble": ("ensemble_member", np.asarray(values, float))},
+        coords={
+            "ensemble_member": np.arange(len(labels), dtype=np.int32),
+            "ensemble_member_label": ("ensemble_member", np.array(labels, dtype=object)),
+        },
+    ).to_netcdf(path)
+
+
+def test_a_member_added_by_a_change_is_left_out_on_request_and_any_other_change_still_found(tmp_path, capsys):
+    with_members(tmp_path / "a", "onedof/s.nc", ["base", "seed0"], [1.0, 1.1])
+    with_members(tmp_path / "b", "onedof/s.nc", ["base", "seed0", "window"], [1.0, 1.1, 7.0])
+    assert compare_results(tmp_path / "a", tmp_path / "b")[0] != []  # the new member is a difference
+    assert compare_results(tmp_path / "a", tmp_path / "b", ("window",)) == ([], 1)
+    assert main([str(tmp_path / "a"), str(tmp_path / "b"), "--without-member", "window"]) == 0
+    with_members(tmp_path / "b", "onedof/s.nc", ["base", "seed0", "window"], [1.0, 1.2, 7.0])
+    lines, _ = compare_results(tmp_path / "a", tmp_path / "b", ("window",))
+    assert lines == ["onedof/s.nc: m_ensemble: 1 values differ"]
