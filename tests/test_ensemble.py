@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from stickslip.claims.evaluate import evaluate
+from stickslip.claims.rows import Claim
 from stickslip.ensemble import (
     MEMBER_DIM,
     EnsembleSpec,
@@ -152,8 +153,26 @@ def test_a_member_that_fails_to_measure_makes_the_spread_infinite():
 
     ds = ensemble_dataset(build, MAPPING, EnsembleSpec(blas_threads=None), **RUN)
     row = _value_row(reported=1.5, tol=0.1)
-    res = evaluate(row, "", lambda path: ds)
+    res = _evaluate(row, "", lambda path: ds)
     assert res.spread == np.inf and res.status == "indistinguishable"
+
+
+def _evaluate(row: dict, reading, open_dataset):
+    """The claims table's evaluation of a row written here as a mapping, typed as the loader types it."""
+    return evaluate(_typed(row), reading, open_dataset)
+
+
+def _typed(row: dict) -> Claim:
+    """``row`` as a claims file would hold it: figures and evidence class added, a value row's unit and
+    tolerance reason filled in, and a compare or trend row without the value keys it may not hold."""
+    row = {"figures": [2], "evidence": "evidence", **row}
+    if row["kind"] in ("value", "ratio"):
+        row = {"unit": "1", **row, "tolerance": {"reason": "test", **row["tolerance"]}}
+    else:
+        row = {k: v for k, v in row.items() if k not in ("value", "tolerance", "unit")}
+        if row["kind"] == "compare":
+            row = {k: v for k, v in row.items() if k not in ("dataset", "variable")}
+    return Claim.model_validate(row)
 
 
 def _value_row(reported, tol):
@@ -180,10 +199,10 @@ def _with_members(values):
 
 def test_margin_and_spread_of_a_value_claim():
     # reported 1.0 +- 10 %: the accepted band ends at 1.1; measured 1.2 is 0.1 outside, spread 0.01
-    res = evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.2, 1.205, 1.195]))
+    res = _evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.2, 1.205, 1.195]))
     assert res.status == "deviates"
     assert res.margin == pytest.approx(0.1) and res.spread == pytest.approx(0.01)
-    near = evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.11, 1.12, 1.10]))
+    near = _evaluate(_value_row(1.0, 0.1), "", lambda p: _with_members([1.11, 1.12, 1.10]))
     assert near.status == "indistinguishable" and "below the numerical noise" in near.reason
 
 
@@ -200,7 +219,7 @@ def test_compare_claim_on_two_equal_numbers_is_indistinguishable_not_deviating()
         "relation": ">",
         "rhs": {"dataset": "r.nc", "variable": "a"},
     }
-    res = evaluate(row, "", lambda p: {"l.nc": lhs, "r.nc": rhs}[p])
+    res = _evaluate(row, "", lambda p: {"l.nc": lhs, "r.nc": rhs}[p])
     assert res.status == "indistinguishable" and res.margin == 0.0 and res.spread > 0
 
 
@@ -218,13 +237,13 @@ def test_a_decided_status_survives_any_move_of_the_measurement_within_its_spread
     value anywhere inside the ensemble's range decides it the same way."""
     values = [measured] + [measured + noise * s for s in shifts]
     row = _value_row(1.0, 0.1)
-    res = evaluate(row, "", lambda p: _with_members(values))
+    res = _evaluate(row, "", lambda p: _with_members(values))
     if res.status not in ("reproduced", "deviates"):
         return
     lo, hi = min(values), max(values)
     moved = [lo + move * (hi - lo)] + values[1:]
-    assert evaluate(row, "", lambda p: _with_members(moved)).status in (res.status, "indistinguishable")
-    moved_res = evaluate({**row, "tolerance": {"rel": 0.1}}, "", lambda p: xr.Dataset({"a": ((), moved[0])}))
+    assert _evaluate(row, "", lambda p: _with_members(moved)).status in (res.status, "indistinguishable")
+    moved_res = _evaluate({**row, "tolerance": {"rel": 0.1}}, "", lambda p: xr.Dataset({"a": ((), moved[0])}))
     assert moved_res.status == res.status  # the plain decision on the moved value is unchanged
 
 
@@ -237,7 +256,7 @@ def test_trend_claim_spread_from_the_members_curves():
         coords={"p": x, MEMBER_DIM: ["base", "a", "b"]},
     )
     row = {**_value_row(0, 0), "kind": "trend", "dataset": "s.nc", "variable": "f", "coord": "p", "sign": 0}
-    res = evaluate(row, "", lambda p: ds)
+    res = _evaluate(row, "", lambda p: ds)
     assert res.status == "indistinguishable" and res.spread > 0
 
 
@@ -251,7 +270,7 @@ def test_identical_members_decide_even_at_zero_margin():
         "relation": ">",
         "rhs": {"value": 0.0},
     }
-    res = evaluate(row, "", lambda p: zero)
+    res = _evaluate(row, "", lambda p: zero)
     assert res.status == "deviates" and res.margin == 0.0 and res.spread == 0.0
 
 
