@@ -112,6 +112,8 @@ class BeltParams:
 
     def belt_acceleration_at(self, t):
         """dV_b/dt [mm/s^2] (zero once the belt has stopped)."""
+        if isinstance(t, float):  # one time (the exact solver's every segment): the same choice, no array
+            return -self.belt_deceleration if t < self.belt_stop_time else 0.0
         import numpy as np
 
         t = np.asarray(t, dtype=float)

@@ -34,7 +34,8 @@ class StickMotion:
     slope: float
 
     def state(self, tau):
-        tau = np.asarray(tau, dtype=float)
+        if not isinstance(tau, float):  # one time stays a Python float: the same operations, no array
+            tau = np.asarray(tau, dtype=float)
         return self.x0 + self.vb0 * tau + 0.5 * self.slope * tau * tau, self.vb0 + self.slope * tau + 0 * tau
 
 
@@ -46,6 +47,8 @@ class Segment:
     motion: object  # LinearSegment | StickMotion
 
     def state(self, t):
+        if isinstance(t, float):  # the phase loop's end states: the same subtraction without an array
+            return self.motion.state(t - self.t0)
         return self.motion.state(np.asarray(t, dtype=float) - self.t0)
 
 
