@@ -148,7 +148,11 @@ def test_page_sources_take_paper_figures_from_catalogue_entries_and_docstrings_o
 
     rules = [
         rule("onedof_figure_fig12", ["results/figures/fig12/plateau_caption.png"], "Fig. 99: not read"),
-        rule("fe_figures", ["results/figures/fe/section11_a.png", "results/figures/fe/readings.png"]),
+        rule(
+            "fe_figures",
+            ["results/figures/fe/section11_a.png", "results/figures/fe/readings.png"],
+            "one per paper figure 21-36, and the readings side by side",  # not read: the rule is mapped
+        ),
         rule("eq6_curve", ["results/onedof/fig04/eq6.nc", "results/figures/fig04/eq6.png"], "Fig. 4: Eq. 6"),
         rule("other", ["results/figures/methods/map.png"], "Where methods fail"),
     ]
@@ -171,8 +175,8 @@ def test_page_sources_take_paper_figures_from_catalogue_entries_and_docstrings_o
     assert {p: s["figures"] for p, s in found.items()} == {
         "results/figures/fig12/plateau_caption.png": [12, 13],  # the entry's, not the docstring's
         "results/figures/fe/section11_a.png": [29, 30, 31, 32, 33],
-        "results/figures/fig04/eq6.png": [4],  # no map names it: its rule's docstring
-    }
+        "results/figures/fig04/eq6.png": [4],  # no map names its rule's images: the rule's docstring
+    }  # readings.png: drawn by a mapped rule, named by no map: no paper figure
     eq6 = found["results/figures/fig04/eq6.png"]
     assert (eq6["label"], eq6["rule"]) == ("eq6", "eq6_curve")
     assert (eq6["rule_file"], eq6["script"]) == ("workflow/rules/x.smk", "workflow/scripts/s.py")

@@ -2,7 +2,7 @@
 
 Called by ``workflow/rules/page.smk`` at parse time with Snakemake's rules: an image shows the paper figures
 its catalogue entry carries (``Entry.figures``, from the config's ``paper_figures`` maps of both halves), or,
-for an image no map names (an equation's curve), those its rule's docstring names ("Fig. 4: ...").
+drawn by a rule no map names (an equation's curve), those its rule's docstring names ("Fig. 4: ...").
 
 Also the line a source link points to: a rule's definition in its rules file, a function's ``def`` in a module
 (the page renders those files with an anchor per line, ``#L<n>``).
@@ -18,9 +18,13 @@ from pathlib import Path
 from .report import paper_figures
 
 
-def figure_numbers(entry, docstring: str | None) -> list[int]:
-    """The paper figures an image shows (sorted; [] for none): its entry's, else its rule docstring's."""
-    return list(entry.figures) or sorted(paper_figures(docstring or ""))
+def figure_numbers(entry, docstring: str | None, rule_mapped: bool) -> list[int]:
+    """The paper figures an image shows (sorted; [] for none): its entry's; for a rule the config's maps name
+    nothing of (``rule_mapped`` False: an equation's curve), its rule docstring's. An image a mapped rule
+    draws beside its mapped ones (a convergence study) shows none."""
+    if entry.figures or rule_mapped:
+        return list(entry.figures)
+    return sorted(paper_figures(docstring or ""))
 
 
 def page_sources(rules, basedir, catalogue: dict) -> list[dict]:
@@ -34,12 +38,13 @@ def page_sources(rules, basedir, catalogue: dict) -> list[dict]:
 
     sources = []
     for rule in rules:
+        mapped = any(getattr(catalogue.get(str(o)), "figures", ()) for o in rule.output)
         for output in rule.output:
             entry = catalogue.get(str(output))
             if entry is None or entry.kind != "figure":
                 continue
             label = entry.name("name")
-            figures = figure_numbers(entry, rule.docstring)
+            figures = figure_numbers(entry, rule.docstring, mapped)
             if not figures:
                 continue
             script = Path(rule.snakefile).parent / rule.script if rule.script else None
