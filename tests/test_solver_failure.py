@@ -2,10 +2,10 @@
 
 import numpy as np
 import pytest
+from claim_rows import claim as claim_row
 
 from stickslip.analysis.metrics import limit_cycle_metrics
 from stickslip.claims.evaluate import evaluate
-from stickslip.claims.rows import Claim
 from stickslip.io import netcdf
 from stickslip.model import PAPER_BASELINE, BeltModel
 from stickslip.solvers import ExactSwitchSolver
@@ -47,23 +47,7 @@ def test_claim_on_failed_run_is_not_comparable(good):
     bad = _failed_copy(good, "blow-up: |x| > 1e6")
     bad_ds = netcdf.trajectory_dataset(bad, limit_cycle_metrics(bad, 5.0))
     bad_ds["frequency_peaks"] = ((), 0.25, {"units": "Hz"})  # even a plausible stray number is not compared
-    claim = Claim.model_validate(
-        {
-            "id": "f",
-            "section": "3",
-            "figure": "Fig. 2",
-            "figures": [2],
-            "quote": "q",
-            "kind": "value",
-            "value": 0.25,
-            "unit": "Hz",
-            "tolerance": {"rel": 0.1, "reason": "test"},
-            "variable": "frequency_peaks",
-            "dataset": "{reading}.nc",
-            "expected": "reproduced",
-            "evidence": "evidence",
-        }
-    )
+    claim = claim_row(variable="frequency_peaks", dataset="{reading}.nc", value=0.25, unit="Hz")
     result = evaluate(claim, "bad", lambda p: {"bad.nc": bad_ds, "ok.nc": ok_ds}[p])
     assert result.status == "not-comparable"
     assert result.reason.startswith("Not comparable: the solver run failed.")  # the conclusion first
