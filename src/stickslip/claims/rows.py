@@ -32,8 +32,10 @@ EVIDENCE_CLASSES = {
     "it): the row cannot fail, so it proves nothing",
     "relabel": "reads the paper's words in a way its own text contradicts",
     "fit": "checks a setup fitted to the paper's numbers, not the stated one",
+    "model_check": "checks this project's model against an established code or a closed form, not a number "
+    "the paper reports: it can fail, but its outcome says nothing of the paper",
 }
-Evidence = Literal["evidence", "by_construction", "relabel", "fit"]
+Evidence = Literal["evidence", "by_construction", "relabel", "fit", "model_check"]
 Status = Literal["reproduced", "deviates", "indistinguishable", "not-comparable"]
 
 #: The models a beam-on-disc row (one reading a dataset under ``results/fe/``) can be decided by, declared on

@@ -4,7 +4,8 @@ equations as printed, and (labelled as a search) in the best of every reading.
 The claims table (``results/claims/deviations.csv``) decides every claim once per reading. A figure's verdict
 says how much: ``k of n`` decided claims reproduced, and a label from that fraction by a fixed rule
 (:data:`VERDICT_RULE`). Only rows of the ``evidence`` class count (``stickslip.claims.rows``): a row that
-cannot fail, reads the paper against its own words, or checks a fitted setup is listed apart, never counted.
+cannot fail, reads the paper against its own words, checks a fitted setup or checks the project's own model
+(not a number of the paper) is listed apart, never counted.
 
 Which reading a verdict is given in is fixed by a rule, not by its score (``docs/READINGS.md``,
 ``config.yaml`` ``claims.primary_reading`` and ``claims.as_printed_reading``; for the beam-on-disc half the
@@ -66,7 +67,7 @@ class Tally:
     reproduced: int
     decided: int
     undecided: int
-    apart: int  #: rows that are not evidence (by construction, relabel, fit)
+    apart: int  #: rows that are not evidence (by construction, relabel, fit, model check)
 
     @property
     def label(self) -> str:
