@@ -36,10 +36,10 @@
 # %%
 import pandas as pd
 import xarray as xr
-import yaml
 from IPython.display import Image, Markdown, display
 
 from stickslip import catalogue as paths
+from stickslip.claims.load import load_claims
 from stickslip.presentation.notebook import (
     claims_frame,
     number_or_words,
@@ -94,8 +94,7 @@ display(verdicts(list(range(19, 37))))
 # (`results/fe/setup_fit_0p5mm_s.nc`): FITS beside the forward replication.
 
 # %%
-with open("config/claims/sections_09_12.yaml") as fh:
-    rows = yaml.safe_load(fh)
+rows = load_claims(["config/claims/sections_09_12.yaml"])  # the checked, typed rows
 
 
 def default_note(note) -> str:
@@ -104,7 +103,7 @@ def default_note(note) -> str:
     return " ".join(str(note or "").split())
 
 
-notes_by_claim = {row["id"]: default_note(row.get("note")) for row in rows}
+notes_by_claim = {row.id: default_note(row.note) for row in rows}
 default = per_reading[per_reading["reading"] == per_reading["reading"].iloc[0]]
 table = pd.DataFrame(
     {
