@@ -32,7 +32,6 @@ ENSEMBLE = config.get("ensemble")
 
 #: The pinned set of claim ids: a deleted row or claims file is an error naming the ids it lost.
 CLAIM_IDS_FILE = "config/claims/ids.txt"
-#: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 #: Every product the config makes, path -> Entry (stickslip.catalogue): a claimed path must be one of them.
 CATALOGUE = paths.catalogue(config)
 check_claims(
@@ -46,6 +45,7 @@ check_claims(
         if line.strip() and not line.startswith("#")
     ],
 )
+#: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
 
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).

@@ -31,7 +31,8 @@ def without_members(ds, labels):
     label = ds.coords.get(f"{MEMBER_DIM}_label")
     if not labels or label is None:
         return ds
-    kept = [i for i, name in enumerate(label.values) if str(name) not in set(labels)]
+    left_out = set(labels)
+    kept = [i for i, name in enumerate(label.values) if str(name) not in left_out]
     ds = ds.isel({MEMBER_DIM: kept})
     return ds.assign_coords({MEMBER_DIM: ds[MEMBER_DIM].copy(data=range(len(kept)))})
 
