@@ -207,7 +207,7 @@ def test_failed_sweep_members_are_named_in_the_reason():
     )
     falling = trend(dataset="s.nc", coord="mu_s", sign=-1, variable="frequency_peaks", unit=None)
     res = evaluate(falling, "", lambda p: ds)
-    assert "mu_s = 0.9 failed (diverged at |x| = 3.3e16 mm)" in res.reason
+    assert "mu_s = 0.9 diverged (diverged at |x| = 3.3e16 mm)" in res.reason
 
 
 def test_a_comparison_needs_its_margin_beyond_three_spreads_not_only_unanimous_members():
@@ -233,3 +233,48 @@ def test_two_numbers_equal_to_a_tenth_of_a_percent_are_not_ordered():
     assert evaluate(row, "", lambda p: sets[p]).status == "indistinguishable"
     sets["a.nc"] = xr.Dataset({"amp": 0.86})
     assert evaluate(row, "", lambda p: sets[p]).status == "reproduced"
+
+
+def test_a_trend_margin_is_taken_to_the_edge_that_decides_the_claim():
+    """'decreases' holds below -5 %: a +6 % rise misses it by 11 %, not by the 1 % to the nearer +5 % edge."""
+    from stickslip.claims.measure import decide_trend
+
+    falling = trend(dataset="s.nc", coord="x", sign=-1, variable="f", unit=None)
+    holds, margin, direction = decide_trend(falling, 0.06)
+    assert not holds and direction == 1.0 and margin == pytest.approx(0.11)
+    assert decide_trend(falling, -0.08)[:2] == (True, pytest.approx(0.03))
+    flat = trend(dataset="s.nc", coord="x", sign=0, variable="f", unit=None)
+    assert decide_trend(flat, 0.01)[:2] == (True, pytest.approx(0.04))
+
+
+def test_equal_sides_decide_a_strict_comparison_only_under_a_declared_invariance():
+    """Equal numbers leave 'a < b' undecided unless the row cites the model's exact invariance for that
+    reading; then the strict relation fails and the reason says why."""
+    ds = xr.Dataset({"t": ((), 1.3776427816711951), "t_ensemble": (("member",), [1.3776427816711951] * 2)})
+    subject = {"dataset": None, "variable": None, "unit": None}
+    row = compare({"dataset": "a.nc", "variable": "t"}, {"dataset": "b.nc", "variable": "t"}, "<", **subject)
+    assert evaluate(row, "r", lambda p: ds).status == "indistinguishable"
+    cited = compare(
+        {"dataset": "a.nc", "variable": "t"}, {"dataset": "b.nc", "variable": "t"}, "<",
+        invariance={"r": "stick time is invariant to V_b (tests/x.py)"}, **subject,
+    )  # fmt: skip
+    result = evaluate(cited, "r", lambda p: ds)
+    assert result.status == "deviates" and "invariant to V_b" in result.reason
+    assert evaluate(cited, "other", lambda p: ds).status == "indistinguishable"  # not declared there
+
+
+def test_pin_rewrites_only_changed_expectations(tmp_path):
+    from stickslip.claims.table import pin_statuses
+
+    path = tmp_path / "c.yaml"
+    rows = [dict(ROW, id=i, expected="reproduced") for i in ("a", "b")]
+    path.write_text(yaml.safe_dump(rows, sort_keys=False))
+    measured = [
+        {"claim": "a", "reading": "r1", "status": "deviates", "matches_expected": "False"},
+        {"claim": "a", "reading": "r2", "status": "reproduced", "matches_expected": "True"},
+        {"claim": "a", "reading": "r3", "status": "deviates", "matches_expected": "False"},
+        {"claim": "b", "reading": "r1", "status": "reproduced", "matches_expected": "True"},
+    ]
+    assert pin_statuses(measured, [path]) == ["a"]
+    loaded = {r["id"]: r["expected"] for r in yaml.safe_load(path.read_text())}
+    assert loaded == {"a": {"default": "deviates", "r2": "reproduced"}, "b": "reproduced"}

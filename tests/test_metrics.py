@@ -81,12 +81,17 @@ def test_limit_cycle_metrics_of_a_sawtooth_with_known_intervals():
     assert m["periodic"].value == 1.0
 
 
-def test_failed_run_has_no_metrics_but_the_failure_flag():
+def test_failed_run_has_every_metric_nan_but_the_failure_flag_and_outcome():
+    from stickslip.analysis.metrics import CYCLE_METRICS
+    from stickslip.analysis.outcome import outcome_code
+
     t = np.linspace(0, 1, 11)
     traj = _trajectory(t, np.full_like(t, np.nan), np.full_like(t, np.nan), np.zeros(11, np.int8))
     traj.stats.status = "failed"
     m = limit_cycle_metrics(traj, 0.0)
-    assert list(m) == ["solver_ok"] and m["solver_ok"].value == 0.0
+    assert list(m) == list(CYCLE_METRICS) and m["solver_ok"].value == 0.0
+    assert m["outcome"].value == outcome_code("failed")
+    assert all(np.isnan(v.value) for k, v in m.items() if k not in ("solver_ok", "outcome"))
 
 
 def test_a_run_that_comes_to_rest_has_no_frequency():

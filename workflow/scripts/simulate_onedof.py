@@ -1,7 +1,8 @@
 """Thin wiring: solve every reading x method of one scene and write one dataset each (Snakemake script).
 
 Datasets a claim reads carry a perturbation ensemble (stickslip.ensemble). A run whose oscillation grows
-without bound is recorded as a failure (solver_status = 1, with the reason), never as a result."""
+without bound is the model's answer (solver_status = 2, outcome = diverged, with its mechanism); a numerical
+failure is solver_status = 1, never a result."""
 
 import logging
 

@@ -1,9 +1,11 @@
-"""Unbounded growth: a run whose oscillation keeps growing is a failure, never a result.
+"""Unbounded growth: a run whose oscillation keeps growing is the model's answer, not a limit cycle.
 
 The consistent reading's friction mu_s (1 - sigma |v_r|) falls without bound (and reverses sign beyond
 |v_r| = 1/sigma), so with negative slip damping some scenes (Fig. 7's C = 0.1, mu_s = 0.8) spiral outwards
-for ever. ``growth_message`` says why a run is rejected; ``BoundedSolver`` wraps any solver so that such a run
-comes back with ``stats.status = "failed"`` (recorded as ``solver_status`` = 1 in its dataset).
+for ever. That is a prediction of the equations (two independent integrators retrace it), so it is recorded
+apart from a numerical failure: ``BoundedSolver`` wraps any solver so that such a run comes back with
+``stats.status = "diverged"`` (``solver_status`` = 2 in its dataset, ``outcome`` = diverged with its
+mechanism: stickslip.analysis.outcome); an exception inside the solver stays a numerical failure.
 """
 
 from __future__ import annotations
@@ -41,6 +43,13 @@ def growth_message(t, x, transient: float, static_deflection: float) -> str:
     return ""
 
 
+def overflowed(exc: Exception) -> bool:
+    """An exception raised because the state left the float range (overflow, or NaN/inf met by a root
+    search), as opposed to a method that could not proceed."""
+    text = str(exc).lower()
+    return isinstance(exc, OverflowError | FloatingPointError) or " nan" in text or " inf" in text
+
+
 @dataclass
 class BoundedSolver:
     """Any solver, with unbounded growth turned into a recorded failure."""
@@ -64,13 +73,16 @@ class BoundedSolver:
             from ..solvers.base import SolverStats, Trajectory
 
             t = np.asarray(t_eval if t_eval is not None else np.linspace(0, t_end, 2001), dtype=float)
-            stats = SolverStats(status="failed", message=f"diverged: {exc}", failures=1)
+            stats = SolverStats(
+                status="failed", message=f"numerical failure while integrating: {exc}", failures=1
+            )
+            if overflowed(exc):  # the state grew past the float range: the model's growth, not the method's
+                stats = SolverStats(status="diverged", message=f"diverged: the state overflowed ({exc})")
             return Trajectory.failed(t, model.belt_velocity(t), stats, self.name, self.settings)
         if traj.ok:
             p = model.params
             with np.errstate(all="ignore"):
                 msg = growth_message(traj.t, traj.x, self.transient, p.mu_s * p.normal_force / p.stiffness)
             if msg:
-                traj.stats.status, traj.stats.message = "failed", msg
-                traj.stats.failures += 1
+                traj.stats.status, traj.stats.message = "diverged", msg
         return traj

@@ -12,9 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solvers.base import STICK, Trajectory
-
-#: A steady window whose peak-to-peak displacement is below this fraction of the whole run's is at rest.
-REST_FRACTION = 1e-4
+from .outcome import OUTCOMES, REST_FRACTION, outcome_code, run_outcome
 
 
 @dataclass(frozen=True)
@@ -37,6 +35,9 @@ class MetricInfo:
 #: them from here.
 METRICS: dict[str, MetricInfo] = {
     "solver_ok": MetricInfo("1", "solver finished without failure (1) or failed (0)"),
+    "outcome": MetricInfo(
+        "1", "run outcome (" + ", ".join(f"{i} {name}" for i, name in enumerate(OUTCOMES)) + ")"
+    ),
     "stick_time": MetricInfo("s", "mean duration of complete stick intervals (steady window)"),
     "slip_time": MetricInfo("s", "mean duration of complete slip intervals (steady window)"),
     "first_stick_time": MetricInfo("s", "duration of the first stick interval"),
@@ -77,6 +78,22 @@ def metric_attrs(name: str, **context) -> dict:
     """The CF attributes of a registered metric (``units``, ``long_name``)."""
     info = METRICS[name]
     return {"units": info.units, "long_name": info.long_name.format(**context)}
+
+
+#: The limit-cycle table's names (``limit_cycle_metrics``), in order; the rest of METRICS is extra_metrics'.
+CYCLE_METRICS = tuple(METRICS)[: tuple(METRICS).index("periodic") + 1]
+
+
+def _no_cycle_metrics(traj: Trajectory, outcome: str, count_window: float) -> dict[str, Metric]:
+    """The table of a run with no limit cycle to measure: every metric NaN, except what the run computed
+    before it diverged (its first stick, when that stick ended inside the run)."""
+    values = dict.fromkeys(CYCLE_METRICS, float("nan"))
+    values.update(solver_ok=0.0, outcome=float(outcome_code(outcome)))
+    if outcome == "diverged" and traj.segments is not None and len(traj.segments):
+        stick, _slip = segment_runs(traj.segments)
+        if len(stick) and stick[0, 1] < traj.t[-1]:
+            values["first_stick_time"] = float(stick[0, 1] - stick[0, 0])
+    return {name: metric(name, value, count_window=count_window) for name, value in values.items()}
 
 
 def metric(name: str, value: float, **context) -> Metric:
@@ -185,8 +202,9 @@ def limit_cycle_metrics(
     """The metric table of one run; the steady window is t >= ``transient``."""
     t, x, v = traj.t, traj.x, traj.v
     nan = float("nan")
-    if not traj.ok or not np.all(np.isfinite(x)):
-        return {"solver_ok": metric("solver_ok", 0.0)}
+    outcome = run_outcome(traj, transient)
+    if outcome in ("diverged", "failed"):
+        return _no_cycle_metrics(traj, outcome, count_window)
     window = t >= transient
     tw, xw, vw = t[window], x[window], v[window]
     stick, slip = intervals(traj)
@@ -218,6 +236,7 @@ def limit_cycle_metrics(
 
     values = {
         "solver_ok": 1.0,
+        "outcome": float(outcome_code(outcome)),
         "stick_time": mean(stick_len),
         "slip_time": mean(slip_len),
         "first_stick_time": float(stick[0, 1] - stick[0, 0]) if len(stick) else nan,

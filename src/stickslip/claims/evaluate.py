@@ -7,7 +7,15 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from .load import readings_of
-from .measure import MEASURE, Measurement, member_failures, solver_failures, status_of
+from .measure import (
+    MEASURE,
+    Measurement,
+    ModelAnswer,
+    member_failures,
+    model_answer,
+    solver_failures,
+    status_of,
+)
 from .rows import Claim
 
 
@@ -37,6 +45,9 @@ class ClaimResult:
     #: one conclusion sentence (at most CONCLUSION_LENGTH characters), then the numbers, then the caveats
     reason: str
     quote: str
+    #: why a row is not comparable (NOT_COMPARABLE_CAUSES), or the model outcome that decided a row the
+    #: run left unmeasured (ANSWER_CAUSES); '' for a row decided on its numbers
+    cause: str = ""
 
 
 def _per_reading(value, reading, default=""):
@@ -45,8 +56,30 @@ def _per_reading(value, reading, default=""):
     return default if value is None else value
 
 
-#: Longest conclusion sentence of a reason (what a reader scans before the numbers).
-CONCLUSION_LENGTH = 120
+#: Longest conclusion sentence of a reason (what a reader scans before the numbers): room for the
+#: one-sentence mechanism of a model answer.
+CONCLUSION_LENGTH = 220
+
+#: Why a row is not comparable, as the page counts them.
+NOT_COMPARABLE_CAUSES = {
+    "failure": "the solver run failed",
+    "not_adequate": "the beam is not the paper's model here (model comparison)",
+    "contradiction": "the paper contradicts this sentence elsewhere",
+    "withheld": "the value moves under step halving, so it is withheld",
+    "nothing": "nothing to measure in this run",
+}
+#: The model outcomes that decide a row the run left unmeasured (stickslip.analysis.outcome.ANSWERS).
+ANSWER_CAUSES = {"diverged": "model diverges", "rest": "model at rest", "no_stick": "model never sticks"}
+
+
+def not_comparable_cause(claim: Claim, m: Measurement, failures: list[str]) -> str:
+    if failures:
+        return "failure"
+    if claim.not_adequate:
+        return "not_adequate"
+    if claim.comparable is False:
+        return "contradiction"
+    return "withheld" if m.withheld else "nothing"
 
 
 def _short(text: str, limit: int) -> str:
@@ -54,21 +87,17 @@ def _short(text: str, limit: int) -> str:
     return text if len(text) <= limit else text[: limit - 1].rstrip(" ,;:(") + "…"
 
 
-def conclusion(claim: Claim, m: Measurement, status: str, failures: list[str]) -> str:
-    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters."""
+def conclusion(
+    claim: Claim, m: Measurement, status: str, failures: list[str], answer: ModelAnswer | None = None
+) -> str:
+    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters; a row decided
+    by a model answer starts with the answer's mechanism."""
     kind = claim.kind
     if status == "not-comparable":
-        if failures:
-            why = "the solver run failed"
-        elif claim.not_adequate:
-            why = "the beam is not the paper's model here (model comparison)"
-        elif claim.comparable is False:
-            why = "the paper contradicts this sentence elsewhere"
-        elif m.withheld:
-            why = "the value moves under step halving, so it is withheld"
-        else:
-            why = "nothing to measure in this run"
-        text = f"Not comparable: {why}."
+        text = f"Not comparable: {NOT_COMPARABLE_CAUSES[not_comparable_cause(claim, m, failures)]}."
+    elif answer is not None and m.holds is None:
+        verb = "Deviates" if status == "deviates" else "Undecided (the outcome moves within the noise)"
+        text = f"{verb}, the model's answer: {answer.mechanism.rstrip('.')}."
     elif status == "indistinguishable":
         text = "Undecided: the margin to the threshold is within the run's own numerical noise."
     else:
@@ -78,6 +107,12 @@ def conclusion(claim: Claim, m: Measurement, status: str, failures: list[str]) -
             text = (
                 f"{verb}: {m.measured:.3g}{unit} against the paper's {float(m.reported):.3g}{unit} "
                 f"({100 * m.deviation:+.0f} %)."
+            )
+        elif kind == "compare" and m.invariance:
+            says = "holds" if m.holds else "does not hold"
+            text = (
+                f"{verb}: both sides are equal by an exact invariance of the model ({m.measured:.4g}), so "
+                f"the paper's {m.quantity} {says}."
             )
         elif kind == "compare":
             says = "holds" if m.holds else "does not hold"
@@ -89,10 +124,12 @@ def conclusion(claim: Claim, m: Measurement, status: str, failures: list[str]) -
     return _short(text, CONCLUSION_LENGTH)
 
 
-def reason_text(claim: Claim, reading: str, m: Measurement, status: str, detail: str, failures, caveats):
+def reason_text(
+    claim: Claim, reading: str, m: Measurement, status: str, detail: str, failures, caveats, answer=None
+):
     """The conclusion sentence, then the numbers, then every caveat: why the row is not evidence, values
     computed but withheld, failed sweep members, and the row's note (never dropped)."""
-    parts = [conclusion(claim, m, status, failures), detail]
+    parts = [conclusion(claim, m, status, failures, answer), detail]
     if claim.evidence_note:
         parts.append(f"Not evidence ({claim.evidence.replace('_', ' ')}): {claim.evidence_note}")
     if m.withheld and not detail.startswith("withheld"):
@@ -114,11 +151,16 @@ def evaluate(claim: Claim, reading: str, open_dataset: Callable) -> ClaimResult:
     m = MEASURE[claim.kind](claim, reading, recording_open)
     failures = solver_failures(opened)
     adequate = not claim.not_adequate  # set by stickslip.claims.models.annotate
-    status, detail = status_of(m, claim.comparable is not False and adequate, failures)
+    answer = model_answer(opened)
+    status, detail = status_of(m, claim.comparable is not False and adequate, failures, answer)
+    if status == "not-comparable":
+        cause = not_comparable_cause(claim, m, failures)
+    else:
+        cause = ANSWER_CAUSES[answer.outcome] if answer is not None and m.holds is None else ""
     if not adequate and not failures:
         detail = f"{claim.not_adequate} | {detail}"
     members = member_failures(opened)
-    caveats = [f"{len(members)} sweep runs failed: " + "; ".join(members)] if members else []
+    caveats = [f"{len(members)} sweep runs diverged or failed: " + "; ".join(members)] if members else []
     caveats += [claim.model_values] if claim.model_values else []
     expected = _per_reading(claim.expected, reading, default="(not pinned)")
     return ClaimResult(
@@ -139,8 +181,9 @@ def evaluate(claim: Claim, reading: str, open_dataset: Callable) -> ClaimResult:
         expected=expected,
         matches_expected=(status == expected),
         evidence=claim.evidence,
-        reason=reason_text(claim, reading, m, status, detail, failures, caveats),
+        reason=reason_text(claim, reading, m, status, detail, failures, caveats, answer),
         quote=" ".join(claim.quote.split()),
+        cause=cause,
     )
 
 

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from stickslip.analysis.outcome import ANSWERS, outcome_code, outcome_name
 from stickslip.ensemble import SUFFIX
 
 from .rows import Claim, ClaimRow, Operand
@@ -120,6 +121,8 @@ class Measurement:
     withheld: list = field(default_factory=list)
     #: size of the numbers the decision compares (the resolution floor is RESOLUTION x scale)
     scale: float = 1.0
+    #: the exact invariance that makes the compared numbers equal (set when they are, within the noise)
+    invariance: str = ""
 
 
 def _tolerance_band(claim: ClaimRow, reported: float) -> float:
@@ -181,7 +184,17 @@ def measure_compare(claim: Claim, reading: str, open_dataset: Callable) -> Measu
         out.scale = max(abs(out.measured), abs(out.reference))
         out.spread = spread_of(difference)
         out.detail = f"{out.measured:.4g} {rel} {out.reference:.4g} is {out.holds}"
+        invariance = (claim.invariance or {}).get(reading, "")
+        if invariance and _equal_within_noise(out):
+            out.holds, out.invariance = rel in (">=", "<="), invariance  # equal: a strict relation fails
+            out.detail = f"{out.measured:.7g} and {out.reference:.7g} are equal by an exact invariance"
     return out
+
+
+def _equal_within_noise(m: Measurement) -> bool:
+    """The two sides agree within the ensemble's spread and the sampled resolution."""
+    noise = MARGIN_FACTOR * m.spread if math.isfinite(m.spread) else 0.0
+    return m.margin <= max(noise, RESOLUTION * m.scale)
 
 
 def _trend_change(claim: ClaimRow, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
@@ -197,10 +210,14 @@ def _trend_change(claim: ClaimRow, x: np.ndarray, y: np.ndarray) -> tuple[float,
 
 def decide_trend(claim: ClaimRow, change: float) -> tuple[bool, float, float]:
     """(holds, margin, direction) of a trend claim for one relative change: |change| below the floor is no
-    trend, so the thresholds sit at +-floor."""
+    trend, so the thresholds sit at +-floor. The margin is the distance to the edge that decides the claim:
+    +floor for "increases", -floor for "decreases", the nearer edge for "no trend" (sign 0), so a clear fall
+    is not called undecided for lying near +-floor on the wrong side."""
     floor = TREND_FLOOR if claim.min_relative_change is None else claim.min_relative_change
     direction = 0.0 if abs(change) < floor else float(np.sign(change))
-    return bool(direction == np.sign(float(claim.sign))), abs(abs(change) - floor), direction
+    sign = float(np.sign(float(claim.sign)))
+    margin = abs(abs(change) - floor) if sign == 0 else abs(sign * change - floor)
+    return bool(direction == sign), margin, direction
 
 
 def measure_trend(claim: Claim, reading: str, open_dataset: Callable) -> Measurement:
@@ -233,13 +250,63 @@ MEASURE = {"value": measure_value, "ratio": measure_value, "compare": measure_co
 
 
 def solver_failures(opened: list) -> list[str]:
-    """Messages of the failed solver runs among the (path, dataset) pairs a claim read."""
+    """Messages of the numerically failed solver runs (``solver_status`` = 1) among the (path, dataset)
+    pairs a claim read. A run that diverged (status 2) is the model's answer, not a failure."""
     out = []
     for path, ds in opened:
         status = ds.variables.get("solver_status") if hasattr(ds, "variables") else None
-        if status is not None and np.any(np.asarray(status.values) != 0):
+        if status is not None and np.any(np.asarray(status.values) == 1):
             out.append(f"{path}: {status.attrs.get('message', 'no message')}")
     return out
+
+
+@dataclass
+class ModelAnswer:
+    """A run the claim read that ended without the stick-slip cycle the paper describes (it diverged,
+    came to rest or never sticks): the model has answered, so a claim it leaves unmeasured is decided."""
+
+    outcome: str
+    mechanism: str
+    #: the outcome is the same in every perturbation-ensemble member (else the noise decides it)
+    robust: bool
+
+
+def model_answer(opened: list) -> ModelAnswer | None:
+    """The first model answer (ANSWERS of stickslip.analysis.outcome) among the datasets a claim read: a
+    scene run's ``outcome`` or a sweep's per-point outcomes (where no point has a cycle to measure)."""
+    for _path, ds in opened:
+        found = _answer_of(ds) if hasattr(ds, "variables") and "outcome" in ds.variables else None
+        if found is not None:
+            return found
+    return None
+
+
+def _answer_of(ds) -> ModelAnswer | None:
+    """A scene run's answer, or a sweep's: where the claim found fewer cycles to measure than it needs,
+    because runs of the sweep diverged, rest or never stick (a numerical failure among them decides
+    nothing)."""
+    codes = np.asarray(ds["outcome"].values, dtype=float).reshape(-1)
+    names = [outcome_name(c) for c in codes]
+    answered = [i for i, name in enumerate(names) if name in ANSWERS]
+    if not answered or "failed" in names or "" in names:
+        return None
+    if ds["outcome"].ndim == 0:
+        why = ds["outcome"].attrs.get("mechanism", "")
+    else:
+        mechanisms = (
+            np.asarray(ds["outcome_mechanism"].values).reshape(-1) if "outcome_mechanism" in ds else []
+        )
+        first = str(mechanisms[answered[0]]) if len(mechanisms) else ""
+        kinds = ", ".join(sorted({names[i].replace("_", " ") for i in answered}))
+        count = f"{len(answered)} of {len(names)} runs of the sweep"
+        why = f"{count} have no stick-slip cycle ({kinds}); first: {first}"
+    members = ds.get("outcome" + SUFFIX)
+    robust = True
+    if members is not None:  # robust: every member leaves the same runs without a cycle (whichever answer)
+        values = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
+        is_answer = np.isin(values, [outcome_code(name) for name in ANSWERS])
+        robust = bool(np.all(is_answer == is_answer[:1]))
+    return ModelAnswer(names[answered[0]], why, robust)
 
 
 def member_failures(opened: list) -> list[str]:
@@ -254,23 +321,34 @@ def member_failures(opened: list) -> list[str]:
         coord = ds[dim].values if dim in ds.coords else np.arange(ok.size)
         for value, good, message in zip(coord, np.asarray(ok.values), ds["failure_message"].values):
             if good != 1:
-                out.append(f"{dim} = {value:g} failed ({message})")
+                what = "diverged" if str(message).startswith("diverg") else "failed"
+                out.append(f"{dim} = {value:g} {what} ({message})")
     return out
 
 
-def status_of(m: Measurement, comparable: bool, failures: list[str]) -> tuple[str, str]:
+def status_of(
+    m: Measurement, comparable: bool, failures: list[str], answer: ModelAnswer | None = None
+) -> tuple[str, str]:
     """(status, detail). A margin below MARGIN_FACTOR spreads (or an outcome that moves between ensemble
     members) is ``indistinguishable``: the numbers cannot tell. A spread of exactly 0 decides even at a
     margin of 0 (every member computes the same numbers, e.g. no separation at all: 0 > 0 is robustly
-    false)."""
+    false). A claim left unmeasured by a model ``answer`` (the run diverged, rests or never sticks, so the
+    cycle the paper describes does not exist) deviates: that is the model's answer to the paper."""
     if failures:  # a failed run measures nothing: never compare its numbers
         return "not-comparable", "solver failed (" + "; ".join(failures) + ")"
     if not comparable:
         return "not-comparable", m.detail
     if m.holds is None:
+        if answer is not None and not m.withheld:
+            detail = f"the model's run: {answer.outcome.replace('_', ' ')} ({answer.mechanism})"
+            if not answer.robust:
+                return "indistinguishable", f"{detail} - the outcome moves within the perturbation ensemble"
+            return "deviates", detail
         if m.withheld:
             return "not-comparable", "withheld: " + "; ".join(m.withheld)
         return "not-comparable", m.detail or "nothing computed in this reading (variable missing or NaN)"
+    if m.invariance:
+        return ("reproduced" if m.holds else "deviates"), f"{m.detail}: {m.invariance}"
     if math.isinf(m.spread) or (math.isfinite(m.spread) and m.margin < MARGIN_FACTOR * m.spread):
         why = (
             "an ensemble member has nothing to measure"

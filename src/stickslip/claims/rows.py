@@ -143,6 +143,12 @@ class ClaimRow(_Strict):
     coord_scale: Literal["log"] | None = None
     min_relative_change: NonNegative | None = None
     model: Model | None = Field(None, description="the model that decides a beam-on-disc row (MODELS)")
+    invariance: dict[str, Text] | None = Field(
+        None,
+        description="per reading: an exact invariance of that reading's model that makes a comparison's two "
+        "sides equal, and the test that shows it; sides equal within the noise then decide the row (a strict "
+        "relation fails)",
+    )
 
     def dataset_refs(self) -> list[tuple[str, ClaimRow | Operand]]:
         """(key, row or operand) of every dataset the row reads, its subject (``dataset`` or ``lhs``) first;
@@ -164,6 +170,8 @@ class ClaimRow(_Strict):
             raise ValueError(f"{extra[0]}: not used by a {self.kind} claim (misplaced or misspelt key?)")
         if self.kind == "compare" and self.lhs.value is not None:
             raise ValueError("lhs: a comparison measures its left side (a dataset variable)")
+        if self.invariance is not None and self.kind != "compare":
+            raise ValueError("invariance: only a comparison's two sides can be equal by an invariance")
         if self.min_relative_change is not None and self.kind != "trend":
             raise ValueError("min_relative_change: only a trend claim has a floor")
         if self.twin is not None and self.one_speed is not None:

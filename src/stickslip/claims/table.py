@@ -58,11 +58,57 @@ def unexpected(rows: list[dict]) -> list[dict]:
     return [r for r in rows if str(r["matches_expected"]) != "True"]
 
 
+def pin_line(statuses: dict[str, str]) -> str:
+    """The ``expected:`` value of one claim from its measured status per reading ('' for a row without
+    readings): one status, or the most frequent as ``default`` with the readings that differ."""
+    values = list(statuses.values())
+    default = max(sorted(set(values)), key=values.count)  # ties: alphabetical, so the file is stable
+    others = {r: s for r, s in statuses.items() if s != default}
+    if not others:
+        return default
+    return "{" + ", ".join([f"default: {default}"] + [f"{r}: {s}" for r, s in others.items()]) + "}"
+
+
+def pin_statuses(rows: list[dict], claims_files: list[Path]) -> list[str]:
+    """Rewrite each changed claim's ``expected:`` in its claims file to the measured statuses (the reviewed
+    edit a deliberate change in what is reproduced needs); the ids whose pins changed."""
+    measured: dict[str, dict[str, str]] = {}
+    for r in unexpected(rows):
+        measured.setdefault(r["claim"], {})
+    for r in rows:
+        if r["claim"] in measured:
+            measured[r["claim"]][r["reading"]] = r["status"]
+    for path in claims_files:
+        lines, out, current, skip = path.read_text().splitlines(keepends=True), [], None, False
+        for line in lines:
+            if line.startswith("- id: "):
+                current = line.split(":", 1)[1].strip()
+            if skip and line.startswith("    "):  # the old pin's block mapping
+                continue
+            skip = False
+            if current in measured and line.startswith("  expected:"):
+                out.append(f"  expected: {pin_line(measured[current])}\n")
+                skip = line.rstrip() == "  expected:"
+                continue
+            out.append(line)
+        path.write_text("".join(out))
+    return sorted(measured)
+
+
 def main(argv=None) -> int:
-    """``python -m stickslip.claims.table check TABLE.csv``: exit 1 if any status differs from its pin."""
+    """``python -m stickslip.claims.table check TABLE.csv``: exit 1 if any status differs from its pin.
+    ``... pin TABLE.csv config/claims/*.yaml``: pin the measured statuses (then review the diff)."""
     argv = sys.argv[1:] if argv is None else argv
+    if len(argv) >= 3 and argv[0] == "pin":
+        changed = pin_statuses(read_table(argv[1]), [Path(p) for p in argv[2:]])
+        print(f"{len(changed)} claims pinned anew: " + ", ".join(changed))
+        return 0
     if len(argv) != 2 or argv[0] != "check":
-        print("usage: python -m stickslip.claims.table check results/claims/deviations.csv", file=sys.stderr)
+        print(
+            "usage: python -m stickslip.claims.table check results/claims/deviations.csv\n"
+            "       python -m stickslip.claims.table pin results/claims/deviations.csv config/claims/*.yaml",
+            file=sys.stderr,
+        )
         return 2
     rows = read_table(argv[1])
     bad = unexpected(rows)

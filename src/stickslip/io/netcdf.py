@@ -105,17 +105,17 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
             },
         )
     stats = traj.stats
-    failed, message = stats.status != "ok", stats.message or "none"
-    if not failed and not (np.all(np.isfinite(traj.x)) and np.all(np.isfinite(traj.v))):
-        failed, message = True, "non-finite state (NaN or overflow) in the trajectory"
+    code, message = SOLVER_STATUS.index(stats.status), stats.message or "none"
+    if code == 0 and not (np.all(np.isfinite(traj.x)) and np.all(np.isfinite(traj.v))):
+        code, message = 1, "non-finite state (NaN or overflow) in the trajectory"
     ds["solver_status"] = (
         (),
-        np.int8(1 if failed else 0),
+        np.int8(code),
         {
             "long_name": "solver status",
             "units": "1",
-            "flag_values": np.array([0, 1], dtype=np.int8),
-            "flag_meanings": "ok failed",
+            "flag_values": np.arange(len(SOLVER_STATUS), dtype=np.int8),
+            "flag_meanings": " ".join(SOLVER_STATUS),
             "message": message,
         },
     )
@@ -131,6 +131,10 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     for name, metric in (metrics or {}).items():
         scalars[name] = ((), float(metric.value), {"units": metric.units, "long_name": metric.long_name})
     return ds.assign(scalars)
+
+
+#: ``solver_status`` codes: a numerical failure computed nothing; a divergence is the model's answer.
+SOLVER_STATUS = ("ok", "failed", "diverged")
 
 
 def software_versions() -> dict:

@@ -88,6 +88,14 @@ def paper_spec(path: Path | None = None) -> dict:
     return yaml.safe_load((path or HERE / "paper.yaml").read_text())
 
 
+def not_comparable_causes(rows: list[dict]) -> dict[str, int]:
+    """How many not-comparable rows each cause has (the claims table's ``cause``), most frequent first."""
+    from ..claims.evaluate import NOT_COMPARABLE_CAUSES
+
+    causes = Counter(r.get("cause", "") for r in rows if r["status"] == "not-comparable")
+    return {NOT_COMPARABLE_CAUSES.get(k, k or "no cause recorded"): v for k, v in causes.most_common()}
+
+
 def read_csv(path) -> list[dict]:
     path = Path(path)
     if not path.is_file():
@@ -447,11 +455,12 @@ class PageBuilder:
                 "k": row.get(f"{prefix}_reproduced", ""),
                 "n": row.get(f"{prefix}_decided", ""),
                 "undecided": row.get(f"{prefix}_undecided", ""),
+                "not_comparable": row.get(f"{prefix}_not_comparable", ""),
             }
 
         return {
             "primary": cell("primary") or {"label": "not comparable", "css": "not-comparable", "reading": "",
-                                           "k": 0, "n": 0, "undecided": 0},
+                                           "k": 0, "n": 0, "undecided": 0, "not_comparable": 0},
             "printed": cell("printed"),
             "best": cell("best"),
             "searched": row.get("readings_searched", ""),
@@ -662,6 +671,7 @@ class PageBuilder:
             "verdict_rule": VERDICT_RULE,
             "glossary": self.glossary(),
             "claim_totals": status_counts(r["status"] for r in evidence),
+            "not_comparable_causes": not_comparable_causes(evidence),
             "n_claim_rows": len(evidence),
             "n_claims": len({r["claim"] for r in evidence}),
             "apart": {k.replace("_", " "): v for k, v in sorted(apart.items())},

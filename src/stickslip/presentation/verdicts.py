@@ -62,12 +62,15 @@ def is_evidence(row: dict) -> bool:
 
 @dataclass(frozen=True)
 class Tally:
-    """k reproduced of n decided evidence claims, the claims left undecided, and the rows set apart."""
+    """k reproduced of n decided evidence claims, the claims left undecided (within the run's noise), those
+    not comparable (nothing computed, the paper contradicting itself, a model not adequate), and the rows
+    set apart."""
 
     reproduced: int
     decided: int
     undecided: int
     apart: int  #: rows that are not evidence (by construction, relabel, fit, model check)
+    not_comparable: int = 0
 
     @property
     def label(self) -> str:
@@ -83,7 +86,9 @@ def tally(rows: list[dict]) -> Tally:
     evidence = [r for r in rows if is_evidence(r)]
     statuses = [r["status"] for r in evidence]
     decided = sum(s in DECIDED for s in statuses)
-    return Tally(statuses.count("reproduced"), decided, len(statuses) - decided, len(rows) - len(evidence))
+    undecided = statuses.count("indistinguishable")
+    apart = len(rows) - len(evidence)
+    return Tally(statuses.count("reproduced"), decided, undecided, apart, statuses.count("not-comparable"))
 
 
 def figure_verdict(statuses) -> str:
@@ -136,14 +141,15 @@ def speed_of(claim: Claim | None) -> str:
 
 def _columns(prefix: str, t: Tally | None, reading: str) -> dict:
     if t is None:
-        return {f"{prefix}_reading": "", f"{prefix}_verdict": "", f"{prefix}_reproduced": "",
-                f"{prefix}_decided": "", f"{prefix}_undecided": ""}  # fmt: skip
+        names = ("reading", "verdict", "reproduced", "decided", "undecided", "not_comparable")
+        return {f"{prefix}_{name}": "" for name in names}
     return {
         f"{prefix}_reading": reading,
         f"{prefix}_verdict": t.label,
         f"{prefix}_reproduced": t.reproduced,
         f"{prefix}_decided": t.decided,
         f"{prefix}_undecided": t.undecided,
+        f"{prefix}_not_comparable": t.not_comparable,
     }
 
 

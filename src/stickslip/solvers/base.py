@@ -26,7 +26,8 @@ class SolverError(RuntimeError):
 
 @dataclass
 class SolverStats:
-    """Work counters of one solve; ``status`` is 'ok' or 'failed' with ``message`` saying why."""
+    """Work counters of one solve; ``status`` is 'ok', 'failed' (numerical: nothing computed) or 'diverged'
+    (the model's motion grows without bound: stickslip.analysis.divergence), with ``message`` saying why."""
 
     rhs_evaluations: int = 0
     steps: int = 0

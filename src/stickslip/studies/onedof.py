@@ -10,31 +10,48 @@ from ..analysis.critical import continuation, critical_speed
 from ..analysis.divergence import BoundedSolver
 from ..analysis.extra_metrics import extra_metrics
 from ..analysis.friction_curve import friction_along_solution, friction_table
-from ..analysis.metrics import limit_cycle_metrics, metric_attrs
+from ..analysis.metrics import METRICS, limit_cycle_metrics, metric_attrs
+from ..analysis.outcome import FLAG_ATTRS, mechanism, outcome_name, run_outcome
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
 from ..io.netcdf import trajectory_dataset
 from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
+from ..model.equations import BeltModel
+from ..model.laws import LawModel
 from ..model.params import effective_mass
 from .specs import RunSpec, SweepSpec, baseline_spec, run_spec, sweep_spec
 
 
 def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     """Solve one scene x reading x method; time series, metrics, and the solver's status and settings
-    (``attrs['solver_run_settings']``). A run that grows without bound is a recorded failure, no metrics."""
+    (``attrs['solver_run_settings']``) and its ``outcome`` with the mechanism behind it. Every metric is
+    stored; one a run does not define (no stick to time, a run that diverged or failed) is NaN."""
     traj = BoundedSolver(spec.solver(), spec.transient).solve(spec.model, spec.t_end, spec.t_eval)
     metrics = limit_cycle_metrics(traj, spec.transient, spec.count_window)
     ds = trajectory_dataset(traj, metrics)
-    if "stick_fraction" in ds:
-        ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
+    ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
+    outcome = outcome_name(metrics["outcome"].value)
+    ds["outcome"] = ((), np.int8(metrics["outcome"].value), outcome_attrs(spec.model, outcome, ds, traj))
+    extra = dict.fromkeys(EXTRA_METRICS, float("nan"))
     if traj.ok:
         friction, normal = spec.friction, spec.params.normal_force
         extra = extra_metrics(traj.t, traj.x, traj.v, traj.belt_velocity, traj.phase, friction, normal)
-        for name, value in extra.items():
-            ds[name] = ((), value, metric_attrs(name))
+    for name, value in extra.items():
+        ds[name] = ((), value, metric_attrs(name))
     ds.attrs["solver_run_settings"] = dict(traj.settings)
     stats = traj.stats
     ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
     return ds
+
+
+#: Metrics beyond the limit-cycle table (stickslip.analysis.extra_metrics), NaN where a run defines none.
+EXTRA_METRICS = tuple(METRICS)[tuple(METRICS).index("early_amplitude") :]
+
+
+def outcome_attrs(model, outcome: str, ds, traj) -> dict:
+    """CF flag attributes of a run's ``outcome`` and the one-sentence ``mechanism`` behind it."""
+    velocity = float(ds.max_velocity) if "max_velocity" in ds else float("nan")
+    why = mechanism(model, outcome, velocity, traj.stats.message)
+    return {**metric_attrs("outcome"), **FLAG_ATTRS, "mechanism": why}
 
 
 SWEEP_METRICS = (
@@ -55,6 +72,16 @@ POINT_METRICS = (
 )
 
 
+def point_mechanism(spec: SweepSpec, point: dict, traj) -> str:
+    """The mechanism sentence of one sweep run (stickslip.analysis.outcome), from its own parameters."""
+    params = spec.base.params.with_(**point)
+    model = BeltModel.build(params, spec.base.variant) if spec.law is None else LawModel(params, spec.law)
+    outcome = run_outcome(traj, spec.base.transient)
+    window = np.asarray(traj.t) >= spec.base.transient
+    velocity = float(np.max(traj.v[window])) if traj.ok and window.any() else float("nan")
+    return mechanism(model, outcome, velocity, traj.stats.message)
+
+
 def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
     """One parameter sweep (Figs. 10-14, belt speed) for one reading: metrics per point, and for the paper's
     values (``dense=False``) each run's time series. Every point is solved once. Failed or diverging runs
@@ -63,11 +90,12 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
     base = spec.base
     n = grid_size([axis])
     points = chunk_points([axis], n, 0)
-    messages = [""] * n
+    messages, mechanisms = [""] * n, [""] * n
     series = np.full((n, 2, base.t_eval.size), np.nan)
 
     def keep(i, traj):
         messages[i] = traj.stats.message or "none"
+        mechanisms[i] = point_mechanism(spec, points[i], traj)
         if not dense and traj.ok:
             series[i] = traj.x, traj.v
 
@@ -110,6 +138,11 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
         spec.parameter,
         np.array(messages, dtype=object),
         {"long_name": "solver or divergence message of each run"},
+    )
+    ds["outcome_mechanism"] = (
+        spec.parameter,
+        np.array(mechanisms, dtype=object),
+        {"long_name": "why each run ends in its outcome (closed form of its slip phase)"},
     )
     ds.attrs.update(
         {
