@@ -32,6 +32,7 @@ rule figure_verdicts:
     params:
         primary=config["claims"]["primary_reading"],
         printed=config["claims"]["as_printed_reading"],
+        alternative=config["claims"].get("alternative_reading") or "",
         fe_primary=FE_DEFAULT_READING,
     script:
         "../scripts/figure_verdicts.py"

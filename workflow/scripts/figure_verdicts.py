@@ -20,6 +20,7 @@ rows = figure_table(
     params.printed,
     params.fe_primary,
     read_table(snakemake.input.fe_readings),  # noqa: F821
+    params.alternative,
 )
 out = snakemake.output[0]  # noqa: F821
 with open(out + ".tmp", "w", newline="") as fh:

@@ -46,12 +46,16 @@ from .verdicts import (
 #: What a claim check's status means (the page's glossary).
 STATUS_MEANING = {
     "reproduced": "the measured number or statement agrees with the paper's within the row's tolerance",
-    "deviates": "it does not, beyond the run's own numerical noise",
+    "deviates": "it does not, beyond the run's own numerical noise; also where the model diverges, comes to "
+    "rest or never sticks, so the behaviour the claim describes does not exist (the reason gives the "
+    "mechanism)",
     "indistinguishable": "the margin to the threshold is below three times its spread over a perturbation "
-    "ensemble (inputs x (1 +- 1e-12), a second step size, a later measurement window): the run's own noise "
-    'could decide it, so it is called neither way ("undecided")',
-    "not-comparable": "nothing to compare: nothing computed in this reading, a failed solver run, a value "
-    "withheld for moving under step halving, or a sentence the paper contradicts elsewhere",
+    "ensemble (inputs x (1 +- 1e-12), a second step size, a later measurement window), or the run's outcome "
+    "moves within that ensemble: the run's own noise could decide it, so it is called neither way "
+    '("undecided")',
+    "not-comparable": "nothing to compare: a numerical failure computed nothing, a value withheld for moving "
+    "under step halving, a sentence the paper contradicts elsewhere, or a model not adequate there; a model "
+    "that answered (diverged, at rest, no stick) is never not comparable",
 }
 
 #: The quantities a card's headline table shows first (the paper's amplitude, frequency, stick and slip).
@@ -462,6 +466,7 @@ class PageBuilder:
             "primary": cell("primary") or {"label": "not comparable", "css": "not-comparable", "reading": "",
                                            "k": 0, "n": 0, "undecided": 0, "not_comparable": 0},
             "printed": cell("printed"),
+            "alternative": cell("alternative"),
             "best": cell("best"),
             "searched": row.get("readings_searched", ""),
             "stated_speed": row.get("stated_speed", ""),
@@ -627,6 +632,8 @@ class PageBuilder:
         np_ = sum(int(c["v"]["printed"]["n"] or 0) for c in mine if c["v"]["printed"])
         readings = {c["v"]["primary"]["reading"] for c in mine} - {""}
         printed_readings = {c["v"]["printed"]["reading"] for c in mine if c["v"]["printed"]} - {""}
+        alt = [c["v"]["alternative"] for c in mine if c["v"].get("alternative")]
+        alt_readings = {a["reading"] for a in alt} - {""}
         searched = max((int(c["v"]["searched"] or 0) for c in mine), default=0)
         return {
             "half": half,
@@ -641,6 +648,10 @@ class PageBuilder:
             "n": n,
             "printed_k": kp,
             "printed_n": np_,
+            "alternative_reading": ", ".join(sorted(alt_readings)),
+            "alternative_k": sum(int(a["k"] or 0) for a in alt),
+            "alternative_n": sum(int(a["n"] or 0) for a in alt),
+            "alternative_counts": dict(Counter(a["label"] for a in alt)),
             "searched": searched,
             "cards": mine,
         }

@@ -162,10 +162,12 @@ def figure_row(
     printed: str,
     order: list[str],
     fe_rows: list[dict] | None = None,
+    alternative: str = "",
 ) -> dict:
-    """One figure's verdicts. 1-DOF: under ``primary``, under ``printed`` and in the best of its readings
-    (a search). Beam-on-disc (``fe_rows``: the claims under every FE reading, ``primary`` the FE reading the
-    claims table checks): under the primary reading at each disc speed, ``printed`` = the stated speed alone,
+    """One figure's verdicts. 1-DOF: under ``primary``, under ``printed``, under the primary rule's
+    ``alternative`` application (if any) and in the best of its readings (a search). Beam-on-disc
+    (``fe_rows``: the claims under every FE reading, ``primary`` the FE reading the claims table checks):
+    under the primary reading at each disc speed, ``printed`` = the stated speed alone,
     the search over the FE readings."""
     apart: dict[str, int] = {}  # rows set apart, counted once (in the primary reading, if they have one)
     for r in rows if fe_rows is not None else rows_in_reading(rows, primary):
@@ -179,6 +181,8 @@ def figure_row(
         readings = sorted({r["reading"] for r in rows} - {""})
         out |= _columns("primary", tally(rows_in_reading(rows, primary)), primary)
         out |= _columns("printed", tally(rows_in_reading(rows, printed)), printed)
+        alt = tally(rows_in_reading(rows, alternative)) if alternative else None
+        out |= _columns("alternative", alt, alternative)
         out |= _columns("best", tally(rows_in_reading(rows, best)) if best else None, best)
         out["readings_searched"] = len(readings)
         out |= {"stated_speed": "", "implied_speed": ""}
@@ -187,6 +191,7 @@ def figure_row(
         out |= _columns("primary", tally(rows), primary)
         stated = tally(by_speed["15p2rpm"])
         out |= _columns("printed", stated, f"{primary} at 15.2 rev/min")
+        out |= _columns("alternative", None, "")
         ids = {r["claim"] for r in rows}
         mine = [r for r in fe_rows if r["claim"] in ids]
         readings = list(dict.fromkeys(r["reading"] for r in mine))
@@ -211,6 +216,7 @@ def figure_table(
     printed: str,
     fe_primary: str,
     fe_rows: list[dict],
+    alternative: str = "",
 ) -> list[dict]:
     """Every entry of the paper's figure list (``paper.yaml``: figures, then text-only sections) with its
     verdicts (:func:`figure_row`). ``rows``: the claims table; ``fe_rows``: the FE readings table."""
@@ -245,6 +251,7 @@ def figure_table(
                 printed,
                 order,
                 fe_rows if fe else None,
+                "" if fe else alternative,
             )
         )
     return out

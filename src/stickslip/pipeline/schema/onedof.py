@@ -277,11 +277,13 @@ class Claims(Section):
     primary_reading: str
     #: the equations and values exactly as printed, shown beside the primary verdict
     as_printed_reading: str
+    #: the primary rule's other defensible application (docs/READINGS.md), its headline shown beside
+    alternative_reading: str | None = None
 
     @model_validator(mode="after")
     def _verdict_readings_are_checked(self):
-        for key in ("primary_reading", "as_printed_reading"):
-            if getattr(self, key) not in self.readings:
+        for key in ("primary_reading", "as_printed_reading", "alternative_reading"):
+            if getattr(self, key) is not None and getattr(self, key) not in self.readings:
                 raise ValueError(
                     f"{key}: {getattr(self, key)!r} is not one of claims.readings {self.readings}"
                 )
