@@ -169,11 +169,12 @@ def test_a_withheld_value_still_decides_which_side_of_a_threshold_it_is_on():
     assert undecided.status == "indistinguishable"  # the two steps disagree on the side
 
 
-def test_a_withheld_value_claim_names_both_steps_and_is_not_called_unmeasurable():
+def test_a_withheld_value_within_its_step_difference_is_undecided_and_names_both_steps():
+    """Both steps inside the band (0.32-0.48) but the margin (0.076) within three step differences (0.066):
+    the step size could decide it, so it is undecided, and the reason says what both steps computed."""
     row = claim(dataset="s.nc", variable="stick_fraction", value=0.4, unit="1")
     res = evaluate(row, "", lambda p: _withheld_dataset(0.404, 0.338))
-    assert res.status == "not-comparable"
-    assert res.reason.startswith("Not comparable: the value moves under step halving, so it is withheld.")
+    assert res.status == "indistinguishable"
     assert "0.404 at dt, 0.338 at dt/2" in res.reason
     assert "nothing computed" not in res.reason
 
@@ -275,6 +276,40 @@ def test_pin_rewrites_only_changed_expectations(tmp_path):
         {"claim": "a", "reading": "r3", "status": "deviates", "matches_expected": "False"},
         {"claim": "b", "reading": "r1", "status": "reproduced", "matches_expected": "True"},
     ]
-    assert pin_statuses(measured, [path]) == ["a"]
+    assert pin_statuses([measured], [path]) == ["a"]
     loaded = {r["id"]: r["expected"] for r in yaml.safe_load(path.read_text())}
     assert loaded == {"a": {"default": "deviates", "r2": "reproduced"}, "b": "reproduced"}
+    # a row without readings (''): its main-table status is the default, the FE readings' the other keys
+    main = [{"claim": "b", "reading": "", "status": "deviates", "matches_expected": "False"}]
+    per_reading = [{"claim": "b", "reading": "drop", "status": "deviates"},
+                   {"claim": "b", "reading": "static", "status": "reproduced"}]  # fmt: skip
+    assert pin_statuses([main, per_reading], [path]) == ["b"]
+    loaded = {r["id"]: r["expected"] for r in yaml.safe_load(path.read_text())}
+    assert loaded["b"] == {"default": "deviates", "static": "reproduced"}
+
+
+def test_a_beam_on_disc_evidence_row_names_its_disc_speed_or_says_why():
+    from stickslip.claims.load import check_claims
+
+    unnamed = claim(model="beam", dataset="results/fe/stability.nc", variable="growth")
+    with pytest.raises(ClaimsError, match="names no disc speed"):
+        check_claims([unnamed], readings=[])
+    check_claims(
+        [claim(model="beam", dataset="results/fe/stability.nc", variable="growth", one_speed="why")], []
+    )
+    by_variable = claim(model="beam", dataset="results/fe/stability.nc", variable="growth_0p5mm_s")
+    with pytest.raises(ClaimsError, match="add its twin"):  # a speed named by the variable counts as named
+        check_claims([by_variable], readings=[])
+
+
+def test_a_withheld_value_is_decided_where_both_steps_lie_on_one_side_of_the_band():
+    """The step-halving check withholds a value that moves (NaN, both steps kept): both steps far outside
+    the band decide the row; steps straddling it leave it undecided."""
+
+    def withheld(full, half):
+        return xr.Dataset({"f": ((), np.nan), "f_full_step": ((), full), "f_half_step": ((), half)})
+
+    row = claim(dataset="s.nc", value=0.0, tolerance={"abs": 0.25, "reason": "test"}, unit="1")
+    far = evaluate(row, "", lambda p: withheld(0.79, 0.68))
+    assert far.status == "deviates" and "moves under step halving" in far.reason
+    assert evaluate(row, "", lambda p: withheld(0.3, 0.1)).status == "indistinguishable"

@@ -20,7 +20,9 @@ FE_SCENE_DATASETS = [paths.fe_scene(r, s) for r in FE_READINGS for s in FE_SCENE
 #: One figure per paper figure of Sections 9-12.
 FE_PAPER_FIGURE_PNGS = [paths.figure("fe", f"fig{n}") for n in paths.fe_paper_figure_numbers()]
 FE_STUDY_BASES = sorted(
-    {sw["base"] for sw in FE["sweeps"].values()} | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
+    {sw["base"] for sw in FE["sweeps"].values()}
+    | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
+    | set((FE["stability"].get("speeds") or {}).values())
 )
 
 

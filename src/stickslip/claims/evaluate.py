@@ -48,6 +48,8 @@ class ClaimResult:
     #: why a row is not comparable (NOT_COMPARABLE_CAUSES), or the model outcome that decided a row the
     #: run left unmeasured (ANSWER_CAUSES); '' for a row decided on its numbers
     cause: str = ""
+    #: the model that decided a beam-on-disc row (stickslip.claims.rows.MODELS); '' for the 1-DOF rows
+    model: str = ""
 
 
 def _per_reading(value, reading, default=""):
@@ -184,6 +186,7 @@ def evaluate(claim: Claim, reading: str, open_dataset: Callable) -> ClaimResult:
         reason=reason_text(claim, reading, m, status, detail, failures, caveats, answer),
         quote=" ".join(claim.quote.split()),
         cause=cause,
+        model=claim.model or "",
     )
 
 

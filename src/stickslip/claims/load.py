@@ -69,7 +69,7 @@ def check_claims(
     known = set(known_readings or ())
     for c in claims if known_readings is not None else []:
         where = f"{c.file}: claim {c.id}"
-        for key in ("expected", "note"):
+        for key in ("expected", "note", "invariance"):
             if isinstance(getattr(c, key), dict):
                 for name in getattr(c, key):
                     if name != "default" and name not in known:
@@ -112,18 +112,27 @@ DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
 
 
 def disc_speed(claim: Claim) -> str:
-    """The disc speed a claim reads (one of DISC_SPEEDS), ``""`` for none or several."""
-    found = {s for p in claim.dataset_paths() for s in DISC_SPEEDS if f"_{s}" in p}
+    """The disc speed a claim reads (one of DISC_SPEEDS), named by its datasets or, in a study over several
+    speeds, by the variables it reads; ``""`` for none or several."""
+    names = [ref.dataset for _, ref in claim.dataset_refs()]
+    names += [ref.variable or "" for _, ref in claim.dataset_refs()]
+    found = {s for name in names for s in DISC_SPEEDS if f"_{s}" in name}
     return found.pop() if len(found) == 1 else ""
 
 
 def _check_speed_twins(claims: list[Claim]) -> None:
-    """Every claim read at one disc speed is decided at the other too (``twin``: the row that does, reading
-    the other speed, and naming this row back) or says why not (``one_speed``)."""
+    """Every beam-on-disc evidence row names the disc speed it reads, and a claim read at one disc speed is
+    decided at the other too (``twin``: the row that does, reading the other speed, and naming this row
+    back); either exception says why (``one_speed``)."""
     by_id = {c.id: c for c in claims}
     for c in claims:
         where = f"{c.file}: claim {c.id}"
         speed = disc_speed(c)
+        if c.model is not None and c.evidence == "evidence" and not speed and not c.one_speed:
+            raise ClaimsError(
+                f"{where}: a beam-on-disc row names no disc speed: read a dataset or variable named by its "
+                "speed (_15p2rpm, _0p5mm_s) or say why the speed does not matter (one_speed: <reason>)"
+            )
         if c.twin is None:
             if speed and not c.one_speed:
                 raise ClaimsError(

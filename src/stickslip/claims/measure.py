@@ -146,11 +146,13 @@ def decide_value(claim: ClaimRow, measured: float) -> tuple[bool, float]:
 def measure_value(claim: Claim, reading: str, open_dataset: Callable) -> Measurement:
     # a ratio row holds no variable of its own: its quantity is named from its operands below
     out = Measurement(reported=float(claim.value), quantity=claim.variable or "")
+    # a value withheld for moving under step halving: its two steps' values are the members, so the row is
+    # decided where both lie on one side of the band beyond their difference (as a comparison's sides)
     if claim.kind == "value":
-        members = _member_values(open_dataset, claim, reading, notes=out.withheld)
+        members = _member_values(open_dataset, claim, reading, side_only=True, notes=out.withheld)
     else:
-        lhs = _member_values(open_dataset, claim.lhs, reading, notes=out.withheld)
-        rhs = _member_values(open_dataset, claim.rhs, reading, notes=out.withheld)
+        lhs = _member_values(open_dataset, claim.lhs, reading, side_only=True, notes=out.withheld)
+        rhs = _member_values(open_dataset, claim.rhs, reading, side_only=True, notes=out.withheld)
         members = _pairwise(lambda a, b: np.where(b != 0, a / np.where(b != 0, b, 1.0), np.nan), lhs, rhs)
         out.quantity = f"{_name(claim.lhs)} / {_name(claim.rhs)}"
     out.measured = float(members[0])
@@ -197,6 +199,14 @@ def _equal_within_noise(m: Measurement) -> bool:
     return m.margin <= max(noise, RESOLUTION * m.scale)
 
 
+def _withheld_series(ds, variable: str, y: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """(series at dt, series at dt/2) of a series the step-halving check withheld (all NaN, both kept)."""
+    full, half = f"{variable}_full_step", f"{variable}_half_step"
+    if np.any(np.isfinite(y)) or full not in ds or half not in ds:
+        return None
+    return tuple(np.asarray(ds[name].values, dtype=float).reshape(-1) for name in (full, half))
+
+
 def _trend_change(claim: ClaimRow, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
     """(least-squares slope, fitted change relative to the mean) of y along x; NaN when not measurable."""
     if claim.coord_scale == "log":  # decade sweeps: the trend per decade
@@ -231,12 +241,22 @@ def measure_trend(claim: Claim, reading: str, open_dataset: Callable) -> Measure
         return out
     x = np.asarray(ds[claim.coord].values, dtype=float).reshape(-1)
     y = np.asarray(ds[claim.variable].values, dtype=float).reshape(-1)
+    steps = _withheld_series(ds, claim.variable, y)
+    if steps is not None:  # withheld for moving under step halving: decided on both steps' trends
+        y = steps[0]
     out.measured, change = _trend_change(claim, x, y)
     if not math.isfinite(change):
         return out
     out.holds, out.margin, direction = decide_trend(claim, change)
     members = ds.get(claim.variable + SUFFIX)
-    if members is not None:
+    if steps is not None:
+        changes = [_trend_change(claim, x, s)[1] for s in steps]
+        out.spread = spread_of(np.array(changes))
+        out.withheld.append(
+            f"{claim.variable} moves under step halving: change {100 * changes[0]:+.0f} % at dt, "
+            f"{100 * changes[1]:+.0f} % at dt/2"
+        )
+    elif members is not None:
         rows = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
         changes = [change] + [_trend_change(claim, x, row)[1] for row in rows[1:]]
         out.spread = spread_of(np.array(changes))

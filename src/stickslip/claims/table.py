@@ -59,25 +59,30 @@ def unexpected(rows: list[dict]) -> list[dict]:
 
 
 def pin_line(statuses: dict[str, str]) -> str:
-    """The ``expected:`` value of one claim from its measured status per reading ('' for a row without
-    readings): one status, or the most frequent as ``default`` with the readings that differ."""
+    """The ``expected:`` value of one claim from its measured status per reading: one status, or a default
+    with the readings that differ. The default is the main table's status of a row without readings (key
+    ''; its other keys are the FE readings), else the most frequent status."""
+    statuses = dict(statuses)
     values = list(statuses.values())
-    default = max(sorted(set(values)), key=values.count)  # ties: alphabetical, so the file is stable
+    if "" in statuses:
+        default = statuses.pop("")
+    else:
+        default = max(sorted(set(values)), key=values.count)  # ties: alphabetical, so the file is stable
     others = {r: s for r, s in statuses.items() if s != default}
     if not others:
         return default
     return "{" + ", ".join([f"default: {default}"] + [f"{r}: {s}" for r, s in others.items()]) + "}"
 
 
-def pin_statuses(rows: list[dict], claims_files: list[Path]) -> list[str]:
-    """Rewrite each changed claim's ``expected:`` in its claims file to the measured statuses (the reviewed
-    edit a deliberate change in what is reproduced needs); the ids whose pins changed."""
-    measured: dict[str, dict[str, str]] = {}
-    for r in unexpected(rows):
-        measured.setdefault(r["claim"], {})
-    for r in rows:
-        if r["claim"] in measured:
-            measured[r["claim"]][r["reading"]] = r["status"]
+def pin_statuses(tables: list[list[dict]], claims_files: list[Path]) -> list[str]:
+    """Rewrite the ``expected:`` of each claim whose status in the first (checked) table differs from its
+    pin, to its measured statuses in every table (the main claims table, then e.g. the FE readings table):
+    the reviewed edit a deliberate change in what is reproduced needs. Returns the ids pinned anew."""
+    measured: dict[str, dict[str, str]] = {r["claim"]: {} for r in unexpected(tables[0])}
+    for rows in tables:
+        for r in rows:
+            if r["claim"] in measured:
+                measured[r["claim"]][r["reading"]] = r["status"]
     for path in claims_files:
         lines, out, current, skip = path.read_text().splitlines(keepends=True), [], None, False
         for line in lines:
@@ -97,16 +102,19 @@ def pin_statuses(rows: list[dict], claims_files: list[Path]) -> list[str]:
 
 def main(argv=None) -> int:
     """``python -m stickslip.claims.table check TABLE.csv``: exit 1 if any status differs from its pin.
-    ``... pin TABLE.csv config/claims/*.yaml``: pin the measured statuses (then review the diff)."""
+    ``... pin TABLE.csv [FE_READINGS.csv] config/claims/*.yaml``: pin the measured statuses of the claims
+    whose status in TABLE changed, in every table given (then review the diff)."""
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) >= 3 and argv[0] == "pin":
-        changed = pin_statuses(read_table(argv[1]), [Path(p) for p in argv[2:]])
+        tables = [read_table(p) for p in argv[1:] if p.endswith(".csv")]
+        changed = pin_statuses(tables, [Path(p) for p in argv[1:] if not p.endswith(".csv")])
         print(f"{len(changed)} claims pinned anew: " + ", ".join(changed))
         return 0
     if len(argv) != 2 or argv[0] != "check":
         print(
             "usage: python -m stickslip.claims.table check results/claims/deviations.csv\n"
-            "       python -m stickslip.claims.table pin results/claims/deviations.csv config/claims/*.yaml",
+            "       python -m stickslip.claims.table pin results/claims/deviations.csv "
+            "results/fe/readings_claims.csv config/claims/*.yaml",
             file=sys.stderr,
         )
         return 2

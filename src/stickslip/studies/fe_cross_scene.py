@@ -12,6 +12,13 @@ import xarray as xr
 from ..fe.quantities import INTERPRETATION
 
 
+def _step_value(ds: xr.Dataset, var: str, step: str) -> float:
+    """A metric's value at one step of the step-halving check: the kept step value where it was withheld,
+    else the value itself (it did not move)."""
+    name = f"{var}_{step}"
+    return float(ds[name]) if name in ds else float(ds[var])
+
+
 def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, list]) -> xr.Dataset:
     """Ratios lhs/rhs of a metric between two scenes: pairs = {name: [lhs_scene, rhs_scene, variable]}."""
     ds = xr.Dataset()
@@ -27,6 +34,12 @@ def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, 
                 ratio,
                 {"units": "1", "long_name": f"{var} of {a} over {b}, per perturbation-ensemble member"},
             )
+        if not np.isfinite(ds[name].values):  # an operand withheld by step halving: keep both steps' ratios
+            for step in ("full_step", "half_step"):
+                sa = _step_value(datasets[a], var, step)
+                sb = _step_value(datasets[b], var, step)
+                ds[f"{name}_{step}"] = ((), sa / sb if sb != 0 else np.nan, {"units": "1", "long_name": (
+                    f"{var} of {a} over {b} at {'dt' if step == 'full_step' else 'dt/2'}")})  # fmt: skip
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",

@@ -133,6 +133,18 @@ def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
     }
 
 
+def at_speed(g, angles, slopes, table_slope: float, label: str, speed: float) -> dict:
+    """Growth rate at angle 0 and the mapped slope nearest the table's slope at one disc speed, named by that
+    speed's label, so a claim reading it names the speed it is decided at."""
+    k0 = int(np.argmin(np.abs(np.array(slopes) - table_slope)))
+    a0 = int(np.argmin(np.abs(np.array(angles))))
+    where = f"at {speed:.3g} mm/s (table slope {table_slope:.3g} s/mm, mapped {slopes[k0]:.3g})"
+    return {
+        f"growth_rate_angle0_{label}": _var((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
+        f"table_slope_{label}": _var((), table_slope, "s mm-1", f"d mu / d v_r of the table {where}"),
+    }
+
+
 def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
     """Eigenvalue map over contact angle x friction slope, and explicit-transient cross-checks.
 
@@ -158,6 +170,9 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
         coords=map_coords(angles, slopes),
     )
     ds = ds.assign(at_table_slope(g, fr, angles, slopes, friction.slope(V)))
+    for label, scene in sorted((st.get("speeds") or {}).items()):
+        speed = scene_of(scene_mapping(fe_cfg, scene), friction).params.disc.surface_speed
+        ds = ds.assign(at_speed(g, angles, slopes, friction.slope(speed), label, speed))
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",

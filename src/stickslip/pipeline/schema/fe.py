@@ -114,6 +114,8 @@ class Stability(Section):
     crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
     crosscheck_e_folds: Positive | None = None
     crosscheck_max_t_end: Positive | None = None
+    #: disc speed label (as the scene names spell it) -> the scene whose disc speed sets the table slope
+    speeds: dict[Annotated[str, Field(pattern=r"^[a-z0-9_]+$")], str] | None = None
 
     @model_validator(mode="after")
     def crosscheck_slopes_bounded(self):
