@@ -313,3 +313,24 @@ def test_a_withheld_value_is_decided_where_both_steps_lie_on_one_side_of_the_ban
     far = evaluate(row, "", lambda p: withheld(0.79, 0.68))
     assert far.status == "deviates" and "moves under step halving" in far.reason
     assert evaluate(row, "", lambda p: withheld(0.3, 0.1)).status == "indistinguishable"
+
+
+def test_the_check_fails_a_by_construction_row_its_own_data_do_not_show(tmp_path, capsys):
+    """A row that says the stated setup fixes its outcome must be decided by its run at both step sizes: one
+    left undecided (the steps disagree) or unmeasured fails the check, like a changed status."""
+    row = {"claim": "c", "reading": "", "status": "indistinguishable", "expected": "indistinguishable",
+           "matches_expected": "True", "evidence": "by_construction", "cause": "", "reason": "steps disagree"}  # fmt: skip
+    path = tmp_path / "t.csv"
+    import csv
+
+    with path.open("w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=list(row))
+        writer.writeheader()
+        writer.writerow(row)
+    assert main(["check", str(path)]) == 1
+    assert "NOT SHOWN c" in capsys.readouterr().out
+    with path.open("w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=list(row))
+        writer.writeheader()
+        writer.writerow(dict(row, status="reproduced", expected="reproduced"))
+    assert main(["check", str(path)]) == 0
