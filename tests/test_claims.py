@@ -318,8 +318,16 @@ def test_a_withheld_value_is_decided_where_both_steps_lie_on_one_side_of_the_ban
 def test_the_check_fails_a_by_construction_row_its_own_data_do_not_show(tmp_path, capsys):
     """A row that says the stated setup fixes its outcome must be decided by its run at both step sizes: one
     left undecided (the steps disagree) or unmeasured fails the check, like a changed status."""
-    row = {"claim": "c", "reading": "", "status": "indistinguishable", "expected": "indistinguishable",
-           "matches_expected": "True", "evidence": "by_construction", "cause": "", "reason": "steps disagree"}  # fmt: skip
+    row = {
+        "claim": "c",
+        "reading": "",
+        "status": "indistinguishable",
+        "expected": "indistinguishable",
+        "matches_expected": "True",
+        "evidence": "by_construction",
+        "cause": "",
+        "reason": "steps disagree",
+    }
     path = tmp_path / "t.csv"
     import csv
 
