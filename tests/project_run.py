@@ -100,33 +100,12 @@ def shared_small_run(tmp_path_factory) -> Path:
     return _SMALL_RUNS["run"]
 
 
-def build_claims_table(root: Path, tmp_path_factory) -> Path:
-    """The repository's own results/ up to the claims table (a no-op when up to date). One Snakemake at a
-    time in a folder: the tests that need it may run in different xdist workers."""
-    with session_lock(tmp_path_factory, "repository_results"):
-        run_snakemake(root, "results/claims/deviations.csv", timeout=3000)
-    return root / "results" / "claims" / "deviations.csv"
-
-
-def datasets(workdir: Path) -> list[Path]:
-    """Every netCDF dataset a run wrote, relative to its results folder."""
-    from stickslip.io.compare import datasets as under
-
-    return under(workdir / "results")
-
-
 def decisions_flipped_within_spread(workdir: Path) -> list[str]:
-    """Claims whose decision flips when every claimed metric moves to its ensemble minimum or maximum.
-
-    Each dataset variable with a perturbation ensemble (``<name>_ensemble``) is replaced by the members'
-    minimum, then maximum, and every claim is re-evaluated: a claim decided on the base values
-    (reproduced / deviates) must keep that decision or become indistinguishable, never the opposite."""
-    import warnings
+    """The build's own spread check (stickslip.claims.flips, rule claims_check) on a run's results: claims
+    whose decision flips when every claimed metric moves to its ensemble minimum or maximum."""
     from glob import glob
 
-    import numpy as np
-
-    from stickslip.claims.evaluate import evaluate_all
+    from stickslip.claims.flips import flipped_decisions
     from stickslip.claims.load import load_claims
     from stickslip.claims.models import annotate, read_comparison
     from stickslip.claims.table import read_table
@@ -135,43 +114,10 @@ def decisions_flipped_within_spread(workdir: Path) -> list[str]:
     # as the claims table: rows the beam may not decide (the model comparison) stay undecided
     comparison = read_comparison(workdir / "results" / "fe" / "model_comparison.csv")
     claims = annotate(load_claims(glob(str(workdir / "config" / "claims" / "*.yaml"))), comparison)
-    table = read_table(workdir / "results" / "claims" / "deviations.csv")
-    readings = sorted({r["reading"] for r in table} - {""})
-
-    read = {}  # each file read once for all three passes
-
-    def moved(reduce):
-        opened = {}  # every claim of a dataset reads the same moved copy
-
-        def open_dataset(path):
-            if path not in opened:
-                if path not in read:
-                    read[path] = read_dataset(workdir / path)
-                ds = read[path]
-                names = [v for v in ds.data_vars if f"{v}_ensemble" in ds]
-                with warnings.catch_warnings():  # a metric NaN in every member stays NaN
-                    warnings.simplefilter("ignore", RuntimeWarning)
-                    moved_values = {
-                        n: (ds[n].dims, reduce(ds[f"{n}_ensemble"].values, axis=0), ds[n].attrs)
-                        for n in names
-                    }
-                opened[path] = ds.assign(moved_values)  # one assignment: each one re-aligns the dataset
-            return opened[path]
-
-        return open_dataset
-
-    base = {
-        (r.claim, r.reading): r.status for r in evaluate_all(claims, readings, moved(lambda a, axis: a[0]))
-    }
-    flipped = []
-    for reduce in (np.nanmin, np.nanmax):
-        for r in evaluate_all(claims, readings, moved(reduce)):
-            before = base[(r.claim, r.reading)]
-            if before in ("reproduced", "deviates") and r.status not in (before, "indistinguishable"):
-                flipped.append(
-                    f"{r.claim} [{r.reading}] {before} -> {r.status} at the ensemble {reduce.__name__}"
-                )
-    return flipped
+    readings = sorted(
+        {r["reading"] for r in read_table(workdir / "results" / "claims" / "deviations.csv")} - {""}
+    )
+    return flipped_decisions(claims, readings, lambda path: read_dataset(os.path.join(workdir, path)))
 
 
 def data_differences_in_subprocess(root_a: Path, root_b: Path, paths) -> dict[str, list[str]]:

@@ -29,9 +29,13 @@ rule claims_table:
 
 
 rule claims_check:
-    """Fails when a measured status differs from the one pinned in the claims files."""
+    """Fails when a measured status differs from the one pinned in the claims files, or a decision flips when
+    the claimed metrics move within their perturbation-ensemble range (stickslip.claims.flips)."""
     input:
-        paths.claims_table(),
+        table=paths.claims_table(),
+        claims=CLAIM_FILES,
+        datasets=sorted(CLAIMED_DATASETS),
+        comparison=paths.fe_model_comparison("csv"),
     output:
         touch(paths.claims_check()),
     log:
@@ -40,6 +44,8 @@ rule claims_check:
         paths.benchmark("claims_check", "all")
     conda:
         CONDA_ENV
+    params:
+        readings=CLAIM_READINGS,
     script:
         "../scripts/claims_check.py"
 
