@@ -178,7 +178,7 @@ def evaluate(claim: Claim, reading: str, open_dataset: Callable) -> ClaimResult:
         reference=m.reference,
         deviation=m.deviation,
         margin=m.margin,
-        spread=m.spread,
+        spread=answer.spread if cause in ANSWER_CAUSES.values() else m.spread,
         status=status,
         expected=expected,
         matches_expected=(status == expected),

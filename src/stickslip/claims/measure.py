@@ -289,6 +289,9 @@ class ModelAnswer:
     mechanism: str
     #: the outcome is the same in every perturbation-ensemble member (else the noise decides it)
     robust: bool
+    #: the decision's spread over the ensemble: 0 when every member leaves the same runs without a cycle,
+    #: inf when they differ, NaN when the dataset has no ensemble
+    spread: float = float("nan")
 
 
 def model_answer(opened: list) -> ModelAnswer | None:
@@ -321,12 +324,13 @@ def _answer_of(ds) -> ModelAnswer | None:
         count = f"{len(answered)} of {len(names)} runs of the sweep"
         why = f"{count} have no stick-slip cycle ({kinds}); first: {first}"
     members = ds.get("outcome" + SUFFIX)
-    robust = True
+    robust, spread = True, float("nan")
     if members is not None:  # robust: every member leaves the same runs without a cycle (whichever answer)
         values = np.asarray(members.values, dtype=float).reshape(members.shape[0], -1)
         is_answer = np.isin(values, [outcome_code(name) for name in ANSWERS])
         robust = bool(np.all(is_answer == is_answer[:1]))
-    return ModelAnswer(names[answered[0]], why, robust)
+        spread = 0.0 if robust else float("inf")
+    return ModelAnswer(names[answered[0]], why, robust, spread)
 
 
 def member_failures(opened: list) -> list[str]:
