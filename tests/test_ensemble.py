@@ -112,6 +112,16 @@ def test_step_member_only_where_a_step_setting_exists():
     assert "step" in [label for label, _, _ in members(MAPPING, EnsembleSpec().without_blas(), **RUN)]
 
 
+def test_a_blas_member_that_would_repeat_the_base_run_is_not_run():
+    """A job already limited to one BLAS thread (as Snakemake runs it) computes the blas-threads-1 member's
+    exact numbers in its base run: that member is left out, any other limit kept."""
+    mapping = {"params": {"mass": 1.0}}
+    labels = [label for label, _, _ in members(mapping, EnsembleSpec(), **RUN, blas_threads_now=1)]
+    assert labels == ["base", "perturbed-1", "perturbed-2"]
+    labels = [label for label, _, _ in members(mapping, EnsembleSpec(), **RUN, blas_threads_now=2)]
+    assert labels[-1] == "blas-threads-1"
+
+
 @pytest.mark.parametrize(
     "bad,key",
     [

@@ -71,10 +71,10 @@ def test_without_plateau_unchanged_baseline():
     assert m["slip_time"].value == pytest.approx(2.210, abs=2e-3)
 
 
-def test_diverging_run_is_a_failure():
+def test_a_diverging_run_is_marked_diverged_not_ok():
     solver = BoundedSolver(make_solver("exact"), 10.0)
     bad = solver.solve(BeltModel.build(BASE.with_(damping=0.1), "consistent"), 40.0, np.linspace(0, 40, 4001))
-    assert not bad.ok and "diverg" in bad.stats.message
+    assert not bad.ok and bad.stats.status == "diverged" and "diverg" in bad.stats.message
     good = solver.solve(BeltModel.build(BASE, "consistent"), 40.0, np.linspace(0, 40, 4001))
     assert good.ok
     t = np.linspace(0, 40, 4001)
@@ -109,3 +109,36 @@ def test_ranking_counts_and_unreproduced():
     assert [t["reading"] for t in table] == ["r1", "r2"]
     assert table[0]["reproduced"] == 1 and table[0]["deviates"] == 1
     assert [u["claim"] for u in unreproduced_claims(rows, ["r1", "r2"])] == ["b"]
+
+
+def test_the_window_member_reuses_the_base_solve_and_equals_a_fresh_one(repo_root, monkeypatch):
+    """A later measurement window changes no solve: the ensemble's window member is measured on the base
+    run's trajectory instead of integrating it again, and its dataset equals one solved afresh."""
+    import dataclasses
+
+    from stickslip.pipeline.config import load_config
+    from stickslip.studies import onedof
+    from stickslip.studies.specs import run_spec
+
+    spec = run_spec(
+        load_config([repo_root / "config" / "config.yaml"]), "fig02", "consistent_caption", "exact"
+    )
+    later = dataclasses.replace(spec, transient=1.5 * spec.transient)
+    onedof._SOLVES.clear()
+    fresh = onedof.scene_run_dataset(later)
+    onedof._SOLVES.clear()
+    onedof.scene_run_dataset(spec)
+    calls = []
+    monkeypatch.setattr(onedof._ReusedSolve, "__init__", _counting_init(onedof._ReusedSolve.__init__, calls))
+    reused = onedof.scene_run_dataset(later)
+    assert len(onedof._SOLVES) == 1 and calls  # one solve kept, answered again
+    for name in ("displacement", "stick_time", "amplitude_peak_to_peak", "frequency_peaks", "outcome"):
+        np.testing.assert_array_equal(reused[name].values, fresh[name].values)
+
+
+def _counting_init(init, calls):
+    def counted(self, spec):
+        calls.append(spec)
+        init(self, spec)
+
+    return counted

@@ -146,9 +146,15 @@ def scaled_mapping(mapping: Mapping, factor: float, keys: tuple[str, ...]) -> di
 
 
 def members(
-    mapping: Mapping, spec: EnsembleSpec, *, run_id: str, fields: Collection[str]
+    mapping: Mapping,
+    spec: EnsembleSpec,
+    *,
+    run_id: str,
+    fields: Collection[str],
+    blas_threads_now: int | None = None,
 ) -> list[tuple[str, dict, int | None]]:
-    """(label, mapping, BLAS thread limit) of every member, the base run first."""
+    """(label, mapping, BLAS thread limit) of every member, the base run first. ``blas_threads_now``: the
+    BLAS threads the base run already uses; a BLAS member limited to as many or more would repeat it."""
     out = [("base", dict(mapping), None)]
     out += [
         (f"perturbed-{s}", perturbed_mapping(mapping, spec.relative, s, run_id=run_id, fields=fields), None)
@@ -160,9 +166,18 @@ def members(
     windowed = scaled_mapping(mapping, spec.window_factor, spec.window_keys) if spec.window_factor else None
     if windowed is not None:
         out.append(("window", windowed, None))
-    if spec.blas_threads is not None:
+    already = blas_threads_now is not None and blas_threads_now <= int(spec.blas_threads or 0)
+    if spec.blas_threads is not None and not already:
         out.append((f"blas-threads-{spec.blas_threads}", dict(mapping), int(spec.blas_threads)))
     return out
+
+
+def blas_threads_now() -> int | None:
+    """The most threads any loaded BLAS uses now (None: no BLAS loaded)."""
+    from threadpoolctl import threadpool_info
+
+    counts = [info["num_threads"] for info in threadpool_info() if info.get("user_api") == "blas"]
+    return max(counts) if counts else None
 
 
 def _run(build: Callable[[dict], xr.Dataset], mapping: dict, threads: int | None) -> xr.Dataset:
@@ -246,7 +261,7 @@ def ensemble_dataset(
     physical or numerical (patterns, see ``declared``): together with the seed they decide every sign."""
     if spec is None:
         return build(dict(mapping))
-    runs = members(mapping, spec, run_id=run_id, fields=fields)
+    runs = members(mapping, spec, run_id=run_id, fields=fields, blas_threads_now=blas_threads_now())
     datasets = [_run(build, m, threads) for _, m, threads in runs]
     ds = stack_members(datasets, [label for label, _, _ in runs])
     ds.attrs["ensemble"] = (

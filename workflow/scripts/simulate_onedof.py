@@ -10,7 +10,7 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.studies.onedof import scene_run_dataset
-from stickslip.studies.specs import PERTURBED_FIELDS, run_spec
+from stickslip.studies.specs import PERTURBED_FIELDS, run_config, run_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
 config, scene = snakemake.params.config, snakemake.params.scene
@@ -20,7 +20,7 @@ for (reading, method), path in zip(snakemake.params.runs, snakemake.output):
     claimed = path in snakemake.params.ensemble_outputs
     ds = ensemble_dataset(
         lambda cfg, r=reading, m=method: scene_run_dataset(run_spec(cfg, scene, r, m)),
-        config,
+        run_config(config, reading, method),
         ensemble if claimed else None,
         run_id=path,
         fields=PERTURBED_FIELDS,

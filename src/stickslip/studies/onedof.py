@@ -25,7 +25,7 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     """Solve one scene x reading x method; time series, metrics, and the solver's status and settings
     (``attrs['solver_run_settings']``) and its ``outcome`` with the mechanism behind it. Every metric is
     stored; one a run does not define (no stick to time, a run that diverged or failed) is NaN."""
-    traj = BoundedSolver(spec.solver(), spec.transient).solve(spec.model, spec.t_end, spec.t_eval)
+    traj = BoundedSolver(_ReusedSolve(spec), spec.transient).solve(spec.model, spec.t_end, spec.t_eval)
     metrics = limit_cycle_metrics(traj, spec.transient, spec.count_window)
     ds = trajectory_dataset(traj, metrics)
     ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
@@ -41,6 +41,39 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     stats = traj.stats
     ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
     return ds
+
+
+#: The last few solves, by everything a solve reads (the measurement window is not among it): the ensemble's
+#: ``window`` member measures the base run over a later window, so it reuses the base run's trajectory
+#: instead of integrating it again (tests/test_onedof_studies.py shows the two are identical).
+_SOLVES: dict[tuple, object] = {}
+_SOLVES_KEPT = 8
+
+
+class _ReusedSolve:
+    """The spec's solver, answering a solve it has already done with a copy of that trajectory."""
+
+    def __init__(self, spec: RunSpec):
+        self.spec, self.inner = spec, spec.solver()
+        self.name, self.settings = self.inner.name, self.inner.settings
+
+    def solve(self, model, t_end, t_eval=None):
+        import copy
+
+        s = self.spec
+        key = (
+            repr(s.params),
+            s.variant,
+            repr(sorted(s.solver_settings.items())),
+            repr(s.law),
+            s.t_end,
+            s.output_dt,
+        )
+        if key not in _SOLVES:
+            if len(_SOLVES) >= _SOLVES_KEPT:
+                _SOLVES.pop(next(iter(_SOLVES)))
+            _SOLVES[key] = self.inner.solve(model, t_end, t_eval)
+        return copy.deepcopy(_SOLVES[key])  # the caller may mark it diverged: the kept one stays as solved
 
 
 #: Metrics beyond the limit-cycle table (stickslip.analysis.extra_metrics), NaN where a run defines none.

@@ -135,6 +135,16 @@ class RunSpec:
         return out
 
 
+def run_config(config: dict, reading: str, method: str) -> dict:
+    """The config with only ``reading`` and ``method`` of the 1-DOF readings and methods: what one run reads.
+    An ensemble of the run perturbs this, so another method's step settings (an ode45 rtol beside an exact
+    run) never make a ``step`` member that repeats the run unchanged."""
+    onedof = dict(config["onedof"])
+    onedof["readings"] = {reading: onedof["readings"][reading]}
+    onedof["methods"] = {method: onedof["methods"][method]}
+    return {**config, "onedof": onedof}
+
+
 def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
     """Scene parameters over the defaults, the reading's interpretation over them, and the method."""
     onedof = config["onedof"]
