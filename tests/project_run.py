@@ -100,6 +100,13 @@ def shared_small_run(tmp_path_factory) -> Path:
     return _SMALL_RUNS["run"]
 
 
+def datasets(workdir: Path) -> list[Path]:
+    """Every netCDF dataset a run wrote, relative to its results folder."""
+    from stickslip.io.compare import datasets as under
+
+    return under(workdir / "results")
+
+
 def decisions_flipped_within_spread(workdir: Path) -> list[str]:
     """The build's own spread check (stickslip.claims.flips, rule claims_check) on a run's results: claims
     whose decision flips when every claimed metric moves to its ensemble minimum or maximum."""
