@@ -138,6 +138,20 @@ def test_run_prints_the_metrics_beside_the_baseline_and_the_papers_values(capsys
     assert "scene fig02 with damping=1.0, mu_s=0.6" in out
 
 
+def test_a_diverging_run_prints_its_mechanism_first_and_is_an_answer_not_an_error(capsys):
+    """mu_s = 0.8 under the baseline's reading: slip damping C - mu_s N sigma = 1.5 - 4 < 0, the motion
+    grows. As solve_ivp reports, the dataset says so (status, message) and the command exits 0."""
+    from stickslip import api
+
+    assert main(["run", "--mu-s", "0.8"]) == 0
+    first = capsys.readouterr().out.splitlines()[0]
+    assert first.startswith("outcome: diverged - ") and "1.5 - 4 = -2.5" in first
+    ds = api.simulate(mu_s=0.8)
+    assert ds.attrs["status"] == "diverged" and ds.attrs["success"] == 1
+    assert "grows without bound" in ds.attrs["message"]
+    assert "stick_time" in ds and float(ds.first_stick_time) > 0  # every metric there, NaN where undefined
+
+
 def test_claims_without_a_build_says_how_to_build_it(tmp_path, capsys):
     with pytest.raises(SystemExit):
         main(["claims", "--figure", "2", "--root", str(tmp_path)])

@@ -174,6 +174,11 @@ def simulate(
     """One 1-DOF run: time series, the paper's metrics (amplitude, frequency, stick and slip time, ...),
     the solver's status, and the provenance attributes the pipeline writes.
 
+    As scipy's ``solve_ivp`` reports its outcome, the dataset's attributes ``status`` ("success",
+    "diverged" or "failed"), ``success`` (0 only for a numerical failure) and ``message`` (the outcome and
+    the mechanism behind it, e.g. why the motion grows without bound) say what the run did; a divergence is
+    the model's answer, not an error. Every metric is there, NaN where the run defines none.
+
     ``scene``, ``reading`` and ``method`` are entries of ``onedof.scenes/readings/methods`` (default: the
     baseline's, ``onedof.baseline``; with a ``law`` the default method is ``switch``). ``params`` are the
     scene's parameters (``mass``, ``stiffness``, ``damping``, ``mu_s``, ``sigma``, ``normal_force``, ``x0``,

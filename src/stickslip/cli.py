@@ -241,6 +241,7 @@ def cmd_run(args) -> int:
     from .analysis.metrics import metric_attrs
 
     paper = paper_values(config, root)
+    print(f"outcome: {ds.attrs.get('status', '?')} - {ds.attrs.get('message', '')}")
     print(f"{ds.attrs.get('title', '').strip()}")
     print(f"  {ds.attrs.get('scene_description', '')}; solver: {ds.attrs.get('solver_message', '')}")
     rows = [("metric", "this run", f"baseline ({where})", "paper (claim)")]
@@ -259,7 +260,7 @@ def cmd_run(args) -> int:
     if args.plot:
         _plot_onedof(ds, config, args, reading)
     print(f"({time.perf_counter() - started:.1f} s)")
-    return 0
+    return 0 if ds.attrs.get("status") != "failed" else 1  # a divergence is an answer; a failure is not
 
 
 def _plot_onedof(ds, config: dict, args, reading: str) -> None:

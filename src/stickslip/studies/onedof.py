@@ -40,7 +40,24 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     ds.attrs["solver_run_settings"] = dict(traj.settings)
     stats = traj.stats
     ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
+    ds.attrs.update(run_status(outcome, ds["outcome"].attrs["mechanism"]))
     return ds
+
+
+#: A run's status as scipy's solve_ivp states one: success (a cycle, rest or no stick: the model answered),
+#: diverged (also the model's answer, the motion grows without bound) or failed (numerical: nothing computed).
+STATUS_OF_OUTCOME = {"diverged": "diverged", "failed": "failed"}
+
+
+def run_status(outcome: str, mechanism_text: str) -> dict:
+    """``status``, ``success`` (1 unless numerically failed) and ``message`` (the outcome and its mechanism)
+    attributes of a run's dataset."""
+    status = STATUS_OF_OUTCOME.get(outcome, "success")
+    return {
+        "status": status,
+        "success": int(status != "failed"),
+        "message": f"{outcome.replace('_', ' ')}: {mechanism_text}",
+    }
 
 
 #: The last few solves, by everything a solve reads (the measurement window is not among it): the ensemble's
