@@ -20,6 +20,7 @@ from .fit import laplace_sd
 from .identify import PROFILE_THRESHOLD, combination_rows, flat_extent, on_ridge, parameter_ranges
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS
 from .profile import PL_THRESHOLD, quantity_ranges
+from .structure import identifiable_in_structure
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
@@ -125,6 +126,10 @@ def _analyse(r: dict) -> _Analysis:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
         dims = float(min(ident.dimensions, pid.dimensions))
+        ridge |= _wider_than_a_decade(lower, upper)
+        c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
+        ridge, c_ridge = _structural_ridges(r, ridge, c_ridge)
+        dims = min(dims, float(r.get("structural_dimensions", np.inf)))  # the equations' bound, exact
         if pid.floor < fit.chi2 - pid.threshold:  # a profile went deeper than the fit: not a minimum
             note = (
                 f"not counted: a profile reached chi2 {pid.floor:.4g}, below the fit's {fit.chi2:.4g} by "
@@ -132,7 +137,38 @@ def _analyse(r: dict) -> _Analysis:
                 "directions are counted from"
             )
             return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, np.nan, opens, c_ridge, note)
+    dims = min(dims, float(r.get("structural_dimensions", np.inf)))
     return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge)
+
+
+def _structural_ridges(r: dict, ridge, c_ridge: dict):
+    """Parameters and combinations the equations leave free (``identifiable_in_structure``) are ranges,
+    whatever the profiles found: exact, so the same on every CPU."""
+    runs, p = r.get("structure") or (), r["problem"]
+    if not runs:
+        return ridge, c_ridge
+    free = tuple(p.free)
+    ridge = np.array(
+        [
+            bool(flag) or not identifiable_in_structure(runs, free, tuple(np.eye(len(free))[i]))
+            for i, flag in enumerate(ridge)
+        ]
+    )
+    rows = combination_rows(p)
+    c_ridge = {
+        n: flag or (n in rows and not identifiable_in_structure(runs, free, tuple(rows[n])))
+        for n, flag in c_ridge.items()
+    }
+    return ridge, c_ridge
+
+
+#: A quantity whose interval spans more than this ratio is never called identifiable.
+IDENTIFIABLE_MAX_RATIO = 10.0
+
+
+def _wider_than_a_decade(lower, upper):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.asarray(upper, dtype=float) / np.asarray(lower, dtype=float) > IDENTIFIABLE_MAX_RATIO
 
 
 def _unidentified(q) -> bool:

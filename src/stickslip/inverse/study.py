@@ -20,6 +20,7 @@ from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
 from .identify import identify
 from .problem import COMBINATIONS, Problem, build_problem
 from .profile import profile_identify
+from .structure import problem_structure
 
 
 def settings_of(config: dict) -> dict:
@@ -63,6 +64,19 @@ def fit_problem(
     wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
     profiled = np.isfinite(fit.chi2) and wanted
     profile = profile_identify(forward, fit.free_values) if profiled else None
+    # every fit ends at its minimum: a profile that went deeper than the fit restarts it from that point
+    # and profiles again (bounded rounds), so every flat direction is counted from a minimum
+    for _ in range(MINIMUM_ROUNDS):
+        if profile is None or not profile.floor < fit.chi2 - profile.threshold:
+            break
+        restarted = best_fit(forward, 1, settings["max_nfev"], seed, x0=deepest_point(profile))
+        if not restarted.chi2 < fit.chi2:
+            break
+        fit, source = restarted, f"{source}, restarted at a deeper profile point"
+        ident = identify(forward, fit.free_values, jacobian=fit.jacobian)
+        profile = profile_identify(forward, fit.free_values)
+    # the structure the data can at most bound: derived from the equations of the phases the fit visits
+    structure = problem_structure(problem, fit.free_values) if np.isfinite(fit.chi2) else (np.nan, (), ())
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     refit = loo and settings["loo"] == "refit"
     if refit:
@@ -81,10 +95,26 @@ def fit_problem(
         "conflicts": search,
         "identification": ident,
         "profile": profile,
+        "structural_dimensions": structure[0],
+        "phases": structure[1],
+        "structure": structure[2],
         "fit_source": source,
         "forward": forward,
         "cpu": time.process_time() - t0,
     }
+
+
+#: Restarts of a fit from a profile point deeper than it (each then profiled again).
+MINIMUM_ROUNDS = 3
+
+
+def deepest_point(pid) -> np.ndarray:
+    """The free parameter set of the lowest chi-square any profile reached."""
+    best = min(
+        ((float(np.min(pr.chi2)), pr.points[int(np.argmin(pr.chi2))]) for pr in pid.profiles.values()),
+        key=lambda item: item[0],
+    )
+    return np.asarray(best[1], dtype=float)
 
 
 def residual_noise(problem: Problem, free_values) -> float:
@@ -166,6 +196,10 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
+            "structural_dimensions": int(r["structural_dimensions"])
+            if np.isfinite(r["structural_dimensions"])
+            else "",
+            "phases_visited": " ".join(sorted({ph for run in r["phases"] for ph in run})),
             "dimensions_note": a.note,
             "free_parameters": len(p.free),
         }
