@@ -70,7 +70,12 @@ def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path
     for path in overlays:  # what Snakemake's own --configfile loading gives the Snakefile
         config = merge(config, load_yaml(path) or {})
     config = merge(config, load_config(sorted((base / "config").glob("*.yaml")) + overlays))
-    return drop_removed(config)
+    config = drop_removed(config)
+    inverse = config.get("inverse") or {}
+    if "claims_glob" in inverse and not Path(inverse["claims_glob"]).is_absolute():
+        # a path of the project, wherever the command runs: the pipeline runs in the project folder
+        config["inverse"] = {**inverse, "claims_glob": str(base.resolve() / inverse["claims_glob"])}
+    return config
 
 
 def _validated(config: dict) -> dict:
