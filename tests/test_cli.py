@@ -145,6 +145,8 @@ def test_a_diverging_run_prints_its_mechanism_first_and_is_an_answer_not_an_erro
 
     assert main(["run", "--mu-s", "0.8"]) == 0
     first = capsys.readouterr().out.splitlines()[0]
+    assert main(["run", "--scene", "fig06"]) == 0  # the figure's own numbers, not the baseline's
+    assert "4.6 s (s5_fig6_stick_time)" in capsys.readouterr().out
     assert first.startswith("outcome: diverged - ") and "1.5 - 4 = -2.5" in first
     ds = api.simulate(mu_s=0.8)
     assert ds.attrs["status"] == "diverged" and ds.attrs["success"] == 1
