@@ -279,10 +279,12 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
     assert "results/onedof/fig05/" not in out
 
 
-def test_fe_runs_from_a_folder_outside_the_project(tmp_path, monkeypatch, capsys):
+def test_fe_runs_from_a_folder_outside_the_project(tmp_path_factory, tmp_path, monkeypatch):
     """The documented command from another folder: the project's paths (the inverse study's claims glob among
-    them) resolve against the project, not the working directory."""
+    them) resolve against the project (here the small run's copy, which holds the friction table), not the
+    working directory."""
+    work = shared_small_run(tmp_path_factory)
     monkeypatch.chdir(tmp_path)
     args = ["fe", "--scene", "section9_kinematic", "--speed", "0.5", "--t-end", "0.01", "-o", "s9.nc"]
-    assert main(args) == 0
+    assert main([*args, "--root", str(work)]) == 0
     assert (tmp_path / "s9.nc").is_file()
