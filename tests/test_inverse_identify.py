@@ -120,11 +120,14 @@ def test_fig02_exact_curved_ridge_makes_sigma_damping_and_mu_s_n_ranges(fig02):
 
     pid, a = fig02["profile"], analyse(fig02)
     # the dimension is derived from the equations (stickslip.inverse.structure), so it is 3 on every CPU; the
-    # profile likelihood reports what the data bound and can only see as many or more
-    assert fig02["structural_dimensions"] == 3 and a.dims == 3 and pid.dimensions >= 3
+    # profile likelihood runs over the quantities the structure leaves identifiable (K/M) and reports what
+    # the data bound there
+    assert fig02["structural_dimensions"] == 3 and a.dims == 3 and pid.dimensions == 3
     assert fig02["phases"] == (("stick", "slip_backward"),)
+    assert set(pid.profiles) == {"K/M"}
     summary = summary_rows("fig02", {"consistent": fig02})[0]
     assert summary["identifiable_dimensions"] == 3 and summary["structural_dimensions"] == 3
+    assert summary["dimensions_note"] == ""
     m = best[p.free.index("mass")]
     on_curve = {
         "sigma": sig,
@@ -249,3 +252,15 @@ def test_a_satisfiable_figure_has_no_conflict_and_a_witness(config, claims):
     search = minimal_conflicts(forward, [start], max_size=3)
     assert search.conflicts == () and search.witness is not None
     assert np.all(np.abs(forward.residuals(search.witness)) <= 1.0)
+
+
+def test_fig02_fit_ends_at_its_minimum_and_no_wide_interval_is_identifiable(fig02):
+    """No profile point lies deeper than the fit by more than the restart tolerance (every fit ends at its
+    minimum), and every quantity called identifiable spans at most a decade."""
+    from stickslip.inverse.study import MINIMUM_TOL
+
+    assert fig02["profile"].floor >= fig02["fit"].chi2 - MINIMUM_TOL
+    summary = summary_rows("fig02", {"consistent": fig02})[0]
+    for key in [k[len("identifiable_") :] for k in summary if k.startswith("identifiable_")]:
+        if key != "dimensions" and summary[f"identifiable_{key}"] == 1:
+            assert summary[f"upper_{key}"] <= 10 * summary[f"lower_{key}"], key
