@@ -264,3 +264,18 @@ def test_fig02_fit_ends_at_its_minimum_and_no_wide_interval_is_identifiable(fig0
     for key in [k[len("identifiable_") :] for k in summary if k.startswith("identifiable_")]:
         if key != "dimensions" and summary[f"identifiable_{key}"] == 1:
             assert summary[f"upper_{key}"] <= 10 * summary[f"lower_{key}"], key
+
+
+def test_an_unprofiled_fig02_still_gives_the_fibre_as_ranges(config, claims):
+    """Without the profile likelihood (a figure the settings leave out, as the CI-size build does) sigma,
+    C/M and mu_s N/M are still ranges: the fibre of the fit, from the equations (at least half a decade
+    each: the Fig. 2 curve alone spans sigma 0.22-0.58 at the stated set's K/M), and K/M is still a point."""
+    problem = build_problem(config, claims, "fig02", "consistent")
+    settings = {**settings_of(config), "profile": ["no_figure"]}
+    r = fit_problem(problem, settings, steps=0, conflicts=False)
+    assert r["profile"] is None and r["structural_dimensions"] == 3
+    row = summary_rows("fig02", {"consistent": r})[0]
+    for key in ("sigma", "C_over_M", "mu_s_N_over_M"):
+        assert row[f"identifiable_{key}"] == 0 and row[f"best_{key}"] == "", key
+        assert row[f"upper_{key}"] > 10**0.5 * row[f"lower_{key}"], key
+    assert row["identifiable_K_over_M"] == 1

@@ -20,7 +20,7 @@ from .fit import laplace_sd
 from .identify import PROFILE_THRESHOLD, combination_rows, flat_extent, on_ridge, parameter_ranges
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS
 from .profile import PL_THRESHOLD, quantity_ranges
-from .structure import identifiable_in_structure
+from .structure import fibre_extent, identifiable_in_structure
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
@@ -131,6 +131,8 @@ def _analyse(r: dict) -> _Analysis:
             if q in p.free:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
+    # no quantity the equations leave free is a point: its range covers at least the fibre of the fit
+    _fibre_ranges(r, v, lower, upper, c_lo, c_hi)
     # no quantity spanning more than a decade is called identifiable, and none the equations leave free
     ridge |= _wider_than_a_decade(lower, upper)
     c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
@@ -148,6 +150,32 @@ def structural_count(r: dict) -> tuple[float, str]:
     if m < s:
         return float(m), f"at most {m} of the {int(s)} structural dimensions: {m} reported numbers"
     return s, ""
+
+
+def _fibre_ranges(r: dict, v, lower, upper, c_lo: dict, c_hi: dict) -> None:
+    """Widen (in place) the range of every free parameter and combination the equations leave free to its
+    extent over the fit's fibre (``structure.fibre_extent``): where no profile traced it (the joint problem,
+    a figure the settings do not profile), the straight-line ridges see only the fibre's straight part."""
+    runs, p = r.get("structure") or (), r["problem"]
+    if not runs:
+        return
+    free = tuple(p.free)
+    rows = {**{q: row for q, row in zip(free, np.eye(len(free)))}, **combination_rows(p)}
+    loose = {n: row for n, row in rows.items() if not identifiable_in_structure(runs, free, tuple(row))}
+    if not loose:
+        return
+    u0 = np.log10(v)
+    lo, hi = p.log_bounds
+    pair = None
+    if p.nonnegative_plateau and "plateau_speed" in free:
+        pair = (free.index("sigma"), free.index("plateau_speed"))
+    ext = 10.0 ** fibre_extent(runs, free, u0, np.array(list(loose.values())), lo, hi, pair)
+    for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
+        if n in free:
+            i = free.index(n)
+            lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
+        if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
+            c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
 
 
 def _structural_ridges(r: dict, ridge, c_ridge: dict):
