@@ -229,6 +229,7 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             else "",
             "phases_visited": " ".join(sorted({ph for run in r["phases"] for ph in run})),
             "dimensions_note": a.note,
+            "profiles_bounded": profiles_bounded(r, a),
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
@@ -260,6 +261,19 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
         )
         rows.append(row)
     return rows
+
+
+def profiles_bounded(r: dict, a) -> str:
+    """'k of n': of the n quantities profiled (those the structure fixes), how many the data bound, i.e. are
+    reported as identifiable (profile above the threshold on both sides, at most a decade wide); '' where
+    nothing was profiled. The structural count says what the equations allow, this what the numbers give."""
+    pid, free = r.get("profile"), tuple(r["problem"].free)
+    if pid is None or not pid.profiles:
+        return ""
+    bounded = sum(
+        not (a.ridge[free.index(n)] if n in free else a.combo_ridge.get(n, True)) for n in pid.profiles
+    )
+    return f"{bounded} of {len(pid.profiles)}"
 
 
 def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
