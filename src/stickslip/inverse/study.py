@@ -66,15 +66,15 @@ def fit_problem(
     # profiles run over what it leaves identifiable only
     structure = problem_structure(problem, fit.free_values) if np.isfinite(fit.chi2) else (np.nan, (), ())
     profile = profile_identify(forward, fit.free_values, structure[2]) if profiled else None
-    # every fit ends at its minimum: least squares to convergence (MINIMUM_NFEV) from the deepest point any
-    # profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled again,
-    # for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken from the
-    # deepest point they saw, and they judge a point to that resolution themselves)
-    restarts = 0
+    # every fit ends at its minimum: least squares to convergence (MINIMUM_NFEV_FACTOR) from the deepest point
+    # any profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled
+    # again, for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken
+    # from the deepest point they saw, and they judge a point to that resolution themselves)
+    restarts, nfev = 0, MINIMUM_NFEV_FACTOR * int(settings["max_nfev"])
     for round_ in range(MINIMUM_ROUNDS + 1 if profile is not None else 0):
         deeper = profile.floor < fit.chi2 - MINIMUM_TOL
         start = deepest_point(profile) if deeper else fit.free_values
-        restarted = lower_of(fit, best_fit(forward, 1, MINIMUM_NFEV, seed, x0=start))
+        restarted = lower_of(fit, best_fit(forward, 1, nfev, seed, x0=start))
         drop = fit.chi2 - restarted.chi2
         if restarted is not fit:
             fit, restarts = restarted, restarts + int(deeper)
@@ -83,7 +83,7 @@ def fit_problem(
             break
         profile = profile_identify(forward, fit.free_values, structure[2])
     if profile is None and np.isfinite(fit.chi2):  # no profile to restart from: converge from the fit itself
-        fit = lower_of(fit, best_fit(forward, 1, MINIMUM_NFEV, seed, x0=fit.free_values))
+        fit = lower_of(fit, best_fit(forward, 1, nfev, seed, x0=fit.free_values))
     if restarts:
         source += ", restarted at a deeper profile point" + (f" ({restarts} rounds)" if restarts > 1 else "")
     # the straight-line analysis, once, at the fit the profiles end at
@@ -123,9 +123,10 @@ MINIMUM_TOL = 0.05
 #: A restart that lowers chi-square by more than this profiles again: the resolution at which a profile judges
 #: its own points (``profile.PL_CLOSE`` of the threshold); below it the profiles already describe the valley.
 REPROFILE_DROP = PL_CLOSE * PL_THRESHOLD
-#: Least-squares iterations of a restart: enough to converge from a nearby point (Figs. 7 and 12 stop
-#: improving after 12), where the first fit's budget (``max_nfev``) only has to find the basin.
-MINIMUM_NFEV = 25
+#: Least-squares iterations of a restart, in units of the first fit's (``max_nfev``): the default 6 x 4 = 24
+#: converges from a nearby point (Figs. 7 and 12 stop improving after 12), where the first fit only has to
+#: find the basin; a CI-size build's token fits get token restarts.
+MINIMUM_NFEV_FACTOR = 4
 
 
 def lower_of(fit, other):
