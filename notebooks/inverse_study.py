@@ -28,17 +28,19 @@
 # model**: the exact event-driven solver, measured exactly like the claims; a run that fails or cannot produce
 # a reported number (e.g. never sticks) is infeasible — likelihood zero, not a zero residual.
 #
-# **What can be identified at all.** Divided by M the equation of motion is
-# x'' + (C/M) x' + (K/M) x = −(μ_s N/M)(sgn v_r − σ v_r), so one figure can only ever fix K/M, C/M, μ_s N/M, σ
-# (and v_p). A sweep (Figs. 10–14) or the joint fit, where some runs fix a parameter, identifies more. What
-# the numbers *do* fix is measured, not assumed, twice: (1) χ² is profiled at the best fit along straight
-# lines (the structural directions and the Jacobian's singular directions; a line within Δχ² = 1 up to the
-# bounds is a **ridge**, and so is every direction beyond the number of reported numbers); (2) the **profile
-# likelihood** (Raue et al. 2009): σ, K/M, C/M, μ_s N/M (and any parameter the motion fixes alone) are each
-# fixed on a grid and χ² is re-minimised over everything else, which follows a valley that *curves* in log10
-# coordinates — Fig. 2's C ↔ (μ_s N, σ) ridge is one, invisible to the straight lines. Threshold Δχ² = 3.84
-# (95 % pointwise). Identifiable dimensions: the smaller count of the two. A parameter that is not identified
-# is given as the **range** it spans over the sets within the threshold, never as a point.
+# **What can be identified at all** is derived from the equations, exactly (`stickslip.inverse.structure`,
+# sympy). Divided by M, each phase of the motion a run visits depends on a few combinations: in slip K/M, the
+# slip damping (C − μ_s N σ)/M and the slip equilibrium; in stick the release position (μ_s N − C V_b)/K;
+# beyond the plateau C/M, its equilibrium and the switching speed v_p. The **structural dimension** is the
+# rank of their Jacobian with respect to the log parameters over the phases the best fit visits, in exact
+# rational arithmetic, so the same on every CPU (Fig. 2, consistent: K/M, (C − μ_s N σ)/M and x_r, three). The
+# identifiable dimensions are that rank, at most the number of reported numbers. A quantity the structure
+# leaves free is a **range** over every parameter set with the same motion (the fibre), never a point. What
+# the data bound of the rest is measured by the **profile likelihood** (Raue et al. 2009): each quantity the
+# structure fixes is fixed on a grid and χ² re-minimised over everything else (threshold Δχ² = 3.84, 95 %
+# pointwise); open profiles are ranges too, and no quantity whose interval spans more than a decade is called
+# identifiable. Every fit ends at its minimum: a profile point below the fit restarts it. The straight-line χ²
+# profiles of earlier builds are kept as a diagnostic.
 #
 # **Verdict**: *consistent* when the best fit puts every number within its reading precision (|residual| ≤ 1).
 
@@ -129,11 +131,12 @@ display(
 # %% [markdown]
 # ### What the numbers identify: straight-line profiles and the profile likelihood
 #
-# For each fit: the free parameters, the straight-line ridges by kind (*structural*: the same motion exactly;
+# For each fit: the free parameters, the structural dimension derived from the equations, the identifiable
+# dimensions (the structural ones, at most the number of reported numbers), the quantities profiled, the
+# straight-line ridges by kind as a diagnostic (*structural*: the same motion along a straight line;
 # *unconstrained*: beyond the number of reported numbers; *profiled*: a singular direction of the Jacobian
-# along which χ² stays within the threshold up to the bounds), the quantities the profile likelihood found
-# flat (one fixed per flat dimension) and the identifiable dimensions that remain. The method, as stored in
-# every dataset:
+# along which χ² stays within the threshold up to the bounds) and the ranges. The method, as stored in every
+# dataset:
 
 # %%
 display(Markdown(f"> {data['joint'].identifiable_dimensions.attrs['comment']}"))
@@ -156,14 +159,17 @@ for name in FIGURES:
                 "family": str(fam),
                 "free": int(sub.free_parameters),
                 **{f"{k} ridges": int(np.sum(ridge & (kind == i))) for i, k in KINDS.items()},
+                "structural": sub.structural_dimensions.item(),
                 "identifiable": sub.identifiable_dimensions.item(),
                 "largest rise on a profiled ridge": float(
                     np.nanmax(np.where(ridge & (kind == 2), sub.profile_rise.values, np.nan), initial=np.nan)
                 )
                 if np.any(ridge & (kind == 2))
                 else np.nan,
-                "flat by profile likelihood (fixed)": ", ".join(
-                    str(q) for q, f in zip(ds.quantity.values, sub.likelihood_profile_fixed.values) if f
+                "profiled": ", ".join(
+                    str(q)
+                    for q, c in zip(ds.quantity.values, sub.likelihood_profile_chi_square.values)
+                    if np.any(np.isfinite(c))
                 ),
                 "ranges (never points)": ", ".join(flat_ranges),
             }

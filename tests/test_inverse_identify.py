@@ -120,11 +120,15 @@ def test_fig02_exact_curved_ridge_makes_sigma_damping_and_mu_s_n_ranges(fig02):
 
     pid, a = fig02["profile"], analyse(fig02)
     # the dimension is derived from the equations (stickslip.inverse.structure), so it is 3 on every CPU; the
-    # profile likelihood reports what the data bound and can only see as many or more
-    assert fig02["structural_dimensions"] == 3 and a.dims == 3 and pid.dimensions >= 3
+    # profile likelihood runs over the quantities the structure leaves identifiable (K/M) and reports what
+    # the data bound there
+    assert fig02["structural_dimensions"] == 3 and a.dims == 3 and pid.dimensions == 3
     assert fig02["phases"] == (("stick", "slip_backward"),)
+    assert set(pid.profiles) == {"K/M"}
     summary = summary_rows("fig02", {"consistent": fig02})[0]
     assert summary["identifiable_dimensions"] == 3 and summary["structural_dimensions"] == 3
+    assert summary["dimensions_note"] == ""
+    assert summary["profiles_bounded"] in ("0 of 1", "1 of 1")  # K/M: what the data bound is theirs to say
     m = best[p.free.index("mass")]
     on_curve = {
         "sigma": sig,
@@ -249,3 +253,30 @@ def test_a_satisfiable_figure_has_no_conflict_and_a_witness(config, claims):
     search = minimal_conflicts(forward, [start], max_size=3)
     assert search.conflicts == () and search.witness is not None
     assert np.all(np.abs(forward.residuals(search.witness)) <= 1.0)
+
+
+def test_fig02_fit_ends_at_its_minimum_and_no_wide_interval_is_identifiable(fig02):
+    """No profile point lies deeper than the fit by more than the restart tolerance (every fit ends at its
+    minimum), and every quantity called identifiable spans at most a decade."""
+    from stickslip.inverse.study import MINIMUM_TOL
+
+    assert fig02["profile"].floor >= fig02["fit"].chi2 - MINIMUM_TOL
+    summary = summary_rows("fig02", {"consistent": fig02})[0]
+    for key in [k[len("identifiable_") :] for k in summary if k.startswith("identifiable_")]:
+        if key != "dimensions" and summary[f"identifiable_{key}"] == 1:
+            assert summary[f"upper_{key}"] <= 10 * summary[f"lower_{key}"], key
+
+
+def test_an_unprofiled_fig02_still_gives_the_fibre_as_ranges(config, claims):
+    """Without the profile likelihood (a figure the settings leave out, as the CI-size build does) sigma,
+    C/M and mu_s N/M are still ranges: the fibre of the fit, from the equations (at least half a decade
+    each: the Fig. 2 curve alone spans sigma 0.22-0.58 at the stated set's K/M), and K/M is still a point."""
+    problem = build_problem(config, claims, "fig02", "consistent")
+    settings = {**settings_of(config), "profile": ["no_figure"]}
+    r = fit_problem(problem, settings, steps=0, conflicts=False)
+    assert r["profile"] is None and r["structural_dimensions"] == 3
+    row = summary_rows("fig02", {"consistent": r})[0]
+    for key in ("sigma", "C_over_M", "mu_s_N_over_M"):
+        assert row[f"identifiable_{key}"] == 0 and row[f"best_{key}"] == "", key
+        assert row[f"upper_{key}"] > 10**0.5 * row[f"lower_{key}"], key
+    assert row["identifiable_K_over_M"] == 1

@@ -20,7 +20,7 @@ from .fit import laplace_sd
 from .identify import PROFILE_THRESHOLD, combination_rows, flat_extent, on_ridge, parameter_ranges
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS
 from .profile import PL_THRESHOLD, quantity_ranges
-from .structure import identifiable_in_structure
+from .structure import fibre_extent, identifiable_in_structure
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
@@ -37,18 +37,24 @@ COMBINATION_KEYS = {
 }
 
 IDENTIFIABILITY_METHOD = (
-    "two analyses at the best fit, the smaller count wins. (1) straight-line chi-square profiles along every "
-    "direction of the free log10 parameters (the structural null space, sets with the same motion, and the "
-    "right-singular vectors of the residual Jacobian); a direction is a ridge when chi-square stays within "
-    f"delta chi2 = {PROFILE_THRESHOLD:g} (one reading precision) up to the bounds on both sides, or when the "
-    "figure has fewer numbers than identifiable coordinates (stickslip.inverse.identify). (2) profile "
-    "likelihood (Raue et al., Bioinformatics 2009): each free parameter the motion determines and each "
-    "combination K/M, C/M, mu_s N/M is fixed on a grid and chi-square re-minimised over the others; it is "
-    f"identifiable when its profile exceeds delta chi2 = {PL_THRESHOLD:.2f} (95 % pointwise, one parameter) "
-    "on both sides within the bounds, else a range; flat quantities are fixed one at a time and the others "
-    "profiled again until all are identifiable, the number fixed being the flat dimensions "
-    "(stickslip.inverse.profile). A parameter or combination that is not identifiable is a range "
-    "(flat_lower..flat_upper, best_fit NaN), never a point"
+    "structure from the equations, what the data bound from the profile likelihood. (1) Structural "
+    "(stickslip.inverse.structure, sympy): each phase the best fit's runs visit (stick, slip backward or "
+    "forward, the plateau) is fixed by combinations derived from M x'' + C x' + K x = F divided by M: "
+    "K/M, the slip damping (C - mu_s N sigma)/M and the slip equilibrium, the stick release position "
+    "(mu_s N - C V_b)/K, beyond the plateau C/M, its equilibrium and its switching speed v_p. The "
+    "structural dimension is the rank of their Jacobian with respect to the log free parameters, in exact"
+    " rational arithmetic: the same on every CPU. identifiable_dimensions is that rank, capped by the "
+    "number of reported numbers (m numbers fix at most m directions). A parameter or combination whose "
+    "log row is off the Jacobian's row space is a range (best_fit NaN), its extent taken over the fibre "
+    "(every set with the same motion within the bounds). (2) Profile likelihood (Raue et al., "
+    "Bioinformatics 2009) of each quantity the structure leaves identifiable (a free parameter, K/M, C/M "
+    "or mu_s N/M): fixed on a grid and chi-square re-minimised over the others, warm-started along the "
+    f"grid; identifiable when its profile exceeds delta chi2 = {PL_THRESHOLD:.2f} (95 % pointwise, one "
+    "parameter) on both sides within the bounds, else a range, open where it stays within the threshold "
+    "to a bound. No quantity whose interval spans more than a decade is called identifiable. A profile "
+    "point deeper than the fit restarts the fit (least squares to convergence) and, if the fit drops by "
+    "more than a quarter of the threshold, the profiles (at most 3 rounds). The straight-line chi-square "
+    f"profiles (delta chi2 = {PROFILE_THRESHOLD:g}, stickslip.inverse.identify) are kept as a diagnostic"
 )
 CONFLICT_METHOD = (
     "subsets of the figure's reported numbers by increasing size up to conflict_search_max_size; a subset "
@@ -82,7 +88,7 @@ class _Analysis:
     """Name (free parameter or combination) -> (open below, open above): the range reaches the bounds."""
     combo_ridge: dict = field(default_factory=dict)
     note: str = ""
-    """Why the dimension count is not given (the fit was not at the minimum its profiles found)."""
+    """Why the count is below the structural dimension (fewer reported numbers)."""
 
 
 def analyse(r: dict) -> _Analysis:
@@ -107,7 +113,7 @@ def _analyse(r: dict) -> _Analysis:
     c_lo = {n: combos[n] * 10.0 ** e[0] for n, e in zip(rows, ext) if n in combos}
     c_hi = {n: combos[n] * 10.0 ** e[1] for n, e in zip(rows, ext) if n in combos}
     c_ridge = {n: bool(on_ridge(c_lo[n], c_hi[n])) for n in c_lo}
-    dims, opens = float(ident.dimensions), {}
+    opens = {}
     if pid is not None:
         eye = {q: row for q, row in zip(p.free, np.eye(len(p.free)))}
         combo_rows = {n: rows[n] for n in c_lo if len(COMBINATIONS[n]) > 1}
@@ -125,20 +131,51 @@ def _analyse(r: dict) -> _Analysis:
             if q in p.free:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
-        dims = float(min(ident.dimensions, pid.dimensions))
-        ridge |= _wider_than_a_decade(lower, upper)
-        c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
-        ridge, c_ridge = _structural_ridges(r, ridge, c_ridge)
-        dims = min(dims, float(r.get("structural_dimensions", np.inf)))  # the equations' bound, exact
-        if pid.floor < fit.chi2 - pid.threshold:  # a profile went deeper than the fit: not a minimum
-            note = (
-                f"not counted: a profile reached chi2 {pid.floor:.4g}, below the fit's {fit.chi2:.4g} by "
-                f"more than the threshold {pid.threshold:g}, so the fit is not at the minimum its flat "
-                "directions are counted from"
-            )
-            return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, np.nan, opens, c_ridge, note)
-    dims = min(dims, float(r.get("structural_dimensions", np.inf)))
-    return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge)
+    # no quantity the equations leave free is a point: its range covers at least the fibre of the fit
+    _fibre_ranges(r, v, lower, upper, c_lo, c_hi)
+    # no quantity spanning more than a decade is called identifiable, and none the equations leave free
+    ridge |= _wider_than_a_decade(lower, upper)
+    c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
+    ridge, c_ridge = _structural_ridges(r, ridge, c_ridge)
+    dims, note = structural_count(r)
+    return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge, note)
+
+
+def structural_count(r: dict) -> tuple[float, str]:
+    """(identifiable dimensions, note): the structural dimension derived from the equations (exact, the same
+    on every CPU), capped by the number of reported numbers (m numbers fix at most m directions)."""
+    s, m = float(r.get("structural_dimensions", np.nan)), len(r["problem"].observations)
+    if not np.isfinite(s):
+        return np.nan, ""
+    if m < s:
+        return float(m), f"at most {m} of the {int(s)} structural dimensions: {m} reported numbers"
+    return s, ""
+
+
+def _fibre_ranges(r: dict, v, lower, upper, c_lo: dict, c_hi: dict) -> None:
+    """Widen (in place) the range of every free parameter and combination the equations leave free to its
+    extent over the fit's fibre (``structure.fibre_extent``): where no profile traced it (the joint problem,
+    a figure the settings do not profile), the straight-line ridges see only the fibre's straight part."""
+    runs, p = r.get("structure") or (), r["problem"]
+    if not runs:
+        return
+    free = tuple(p.free)
+    rows = {**{q: row for q, row in zip(free, np.eye(len(free)))}, **combination_rows(p)}
+    loose = {n: row for n, row in rows.items() if not identifiable_in_structure(runs, free, tuple(row))}
+    if not loose:
+        return
+    u0 = np.log10(v)
+    lo, hi = p.log_bounds
+    pair = None
+    if p.nonnegative_plateau and "plateau_speed" in free:
+        pair = (free.index("sigma"), free.index("plateau_speed"))
+    ext = 10.0 ** fibre_extent(runs, free, u0, np.array(list(loose.values())), lo, hi, pair)
+    for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
+        if n in free:
+            i = free.index(n)
+            lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
+        if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
+            c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
 
 
 def _structural_ridges(r: dict, ridge, c_ridge: dict):
@@ -720,9 +757,17 @@ PER_FAMILY = [
         "identifiable_dimensions",
         FAM,
         "1",
-        "identifiable parameter directions",
+        "identifiable parameter directions: the structural dimension, at most the number of reported numbers",
         _per_family(lambda r, a: a.dims),
         {"comment": IDENTIFIABILITY_METHOD, "threshold_delta_chi2": PROFILE_THRESHOLD},
+    ),
+    Var(
+        "structural_dimensions",
+        FAM,
+        "1",
+        "rank of the derived combinations' log-Jacobian over the phases the best fit visits (exact)",
+        _per_family(lambda r, a: r.get("structural_dimensions", np.nan)),
+        {"comment": "stickslip.inverse.structure; the same on every CPU"},
     ),
     Var(
         "ridge_directions",

@@ -22,9 +22,12 @@ parameters) is *fixed* on a grid and chi-square is *re-minimised over everything
 * q is *identifiable* when its profile exceeds the threshold on both sides within the bounds; its interval
   is then a confidence interval around the best fit. Otherwise q is a *range* (never a point): the side that
   stays within the threshold up to the bound is *open* (the data do not bound it there).
-* Dimensions: fix one non-identifiable quantity at its best fit and profile the others again, until every
-  one is identifiable (Raue et al.'s resolution of a non-identifiability); the number fixed is the number of
-  flat dimensions of the motion, and k minus it the identifiable dimensions.
+* With the runs' structure (``structure.problem_structure``, derived from the equations) only the quantities
+  the structure leaves identifiable are profiled, and the dimensions are the structure's (exact); a quantity
+  it leaves free is a range over the fibre (``structure.fibre_extent``) of the best fit and of each profile's
+  ends. Without it (a problem profiled on its own), dimensions are counted as Raue et al. resolve a
+  non-identifiability: fix one non-identifiable quantity at its best fit and profile the others again, until
+  every one is identifiable; the number fixed is the number of flat dimensions of the motion.
 
 Limits: a grid point is judged by a local minimisation with a fixed budget, so a flat set reachable only
 through a barrier is not seen (the profile is then an upper bound of PL_q); the grid doubles outward, so a
@@ -43,6 +46,7 @@ from .fit import _fun
 from .forward import Forward
 from .identify import JACOBIAN_STEP
 from .problem import COMBINATIONS, Problem
+from .structure import fibre_extent, identifiable_in_structure, runs_rank
 
 #: Confidence of the profile-likelihood intervals (pointwise, one parameter).
 PL_CONFIDENCE = 0.95
@@ -117,6 +121,9 @@ class ProfileIdentification:
     evaluations: int
     jacobian_w: np.ndarray | None = None
     """d residual / d identifiable coordinate at the best fit (central differences)."""
+    structure: tuple = ()
+    """The runs' structure (``structure.problem_structure``): what the equations leave free, exactly. With
+    it only the structurally identifiable quantities are profiled, and nothing is fixed."""
 
     @property
     def dimensions(self) -> int:
@@ -128,9 +135,15 @@ class _Within(Exception):
         self.z = z
 
 
-def profiled_rows(problem: Problem) -> dict[str, np.ndarray]:
+def profiled_rows(problem: Problem, structure: tuple = ()) -> dict[str, np.ndarray]:
     """Quantities to profile: every free parameter the motion determines on its own, and every combination
-    (K/M, C/M, mu_s N/M, ...) that involves a parameter the motion does not determine on its own."""
+    (K/M, C/M, mu_s N/M, ...) that involves a parameter the motion does not determine on its own.
+
+    With the runs' ``structure`` (derived from the equations), exactly the quantities the equations fix:
+    a quantity they leave free is a range whatever the data, so profiling it would only trace the fibre
+    (``structure.fibre_extent`` gives that exactly, without a forward run)."""
+    if structure:
+        return structural_rows(problem, structure)
     basis = problem.identifiable_basis()
     eye = np.eye(len(problem.free))
 
@@ -143,6 +156,23 @@ def profiled_rows(problem: Problem) -> dict[str, np.ndarray]:
         if name in rows or not np.any(row) or not in_row_space(row):
             continue
         if any(row[i] and p not in rows for i, p in enumerate(problem.free)):
+            rows[name] = row
+    return rows
+
+
+def structural_rows(problem: Problem, structure: tuple) -> dict[str, np.ndarray]:
+    """Free parameters, then combinations of several, whose log10 row lies in the row space of the runs'
+    derived combinations (``structure.identifiable_in_structure``: an exact rank)."""
+    free = tuple(problem.free)
+    eye = np.eye(len(free))
+    rows = {
+        q: eye[i] for i, q in enumerate(free) if identifiable_in_structure(structure, free, tuple(eye[i]))
+    }
+    for name, combo in COMBINATIONS.items():
+        row = np.array([float(combo.get(q, 0)) for q in free])
+        if name in rows or np.count_nonzero(row) < 2:
+            continue
+        if identifiable_in_structure(structure, free, tuple(row)):
             rows[name] = row
     return rows
 
@@ -379,21 +409,34 @@ def _minimise(fun, space: _Space, w_fixed, q, z0, target: float, nfev: int):
     return u, (chi2 if space.p.in_bounds(10.0**u) else np.inf), z
 
 
-def profile_identify(forward: Forward, free_values) -> ProfileIdentification:
-    """Profile every quantity of ``profiled_rows`` at a best fit; fix flat ones one by one (module text)."""
+def profile_identify(forward: Forward, free_values, structure: tuple = ()) -> ProfileIdentification:
+    """Profile every quantity of ``profiled_rows`` at a best fit. With the runs' ``structure`` the dimensions
+    are the equations' (exact) and only the structurally identifiable quantities are profiled; without it,
+    flat ones are fixed one by one (module text)."""
     p = forward.problem
     u0 = np.log10(np.asarray(free_values, dtype=float))
     space = _Space(p, u0)
     r0 = forward.residuals(10.0**u0)
     floor = float(r0 @ r0)
     evals = forward.evaluations
-    rows = profiled_rows(p)
+    rows = profiled_rows(p, structure)
     profiles, pool = {}, []
     for name, row in rows.items():
         pr = profile_row(forward, space, name, row, floor, pool=pool)
         if pr is not None:
             profiles[name] = pr
             floor = min(floor, float(np.min(pr.chi2)))
+    if structure:
+        return ProfileIdentification(
+            profiles,
+            (),
+            runs_rank(structure, tuple(p.free)),
+            PL_THRESHOLD,
+            floor,
+            forward.evaluations - evals + 1,
+            space.jacobian_w,
+            structure,
+        )
     fixed = []
     flat = [n for n, pr in profiles.items() if not pr.identifiable]
     while flat:
@@ -412,14 +455,60 @@ def profile_identify(forward: Forward, free_values) -> ProfileIdentification:
 
 def profile_ranges(problem: Problem, free_values, pid: ProfileIdentification, rows: np.ndarray) -> np.ndarray:
     """(lower, upper) log10 change of each row . u from the best fit over the sets the profiles found within
-    the threshold, each moved along the structural null space within the bounds."""
+    the threshold, each moved along the structural null space within the bounds (with the runs' structure:
+    over the whole fibre, ``structure.fibre_extent``; from the best fit and each profile's two ends, the
+    sets between lie on the same valley)."""
     u0 = np.log10(np.asarray(free_values, dtype=float))
     space = _Space(problem, u0)
     rows = np.atleast_2d(np.asarray(rows, dtype=float))
-    points = [u0] + [np.log10(x) for pr in pid.profiles.values() for x in pr.within(pid.floor, pid.threshold)]
+    if pid.structure:
+        points = [u0] + [u for pr in pid.profiles.values() for u in _ends(pr, pid)]
+    else:
+        points = [u0] + [
+            np.log10(x) for pr in pid.profiles.values() for x in pr.within(pid.floor, pid.threshold)
+        ]
     ext = np.array([space.extent(u, rows) for u in points])  # points x rows x 2
+    if pid.structure:
+        lo, hi = problem.log_bounds
+        pair = (problem.free.index("sigma"), problem.free.index("plateau_speed")) if space.plateau else None
+        fibre = np.array(
+            [
+                fibre_extent(
+                    pid.structure, tuple(problem.free), u, rows, lo, hi, pair, _corners(space, u, rows)
+                )
+                for u in points
+            ]
+        )
+        ext = np.stack([np.fmin(ext[..., 0], fibre[..., 0]), np.fmax(ext[..., 1], fibre[..., 1])], axis=-1)
     base = rows @ u0
     return np.column_stack([np.nanmin(ext[:, :, 0], axis=0) - base, np.nanmax(ext[:, :, 1], axis=0) - base])
+
+
+def _ends(pr: LikelihoodProfile, pid: ProfileIdentification) -> list:
+    """log10 sets at the two ends of a profile's interval within the threshold."""
+    keep = (pr.t >= pr.t_lower) & (pr.t <= pr.t_upper) & (pr.chi2 <= pid.floor + pid.threshold)
+    if not np.any(keep):
+        return []
+    t, u = pr.t[keep], np.log10(pr.points[keep])
+    return [u[int(np.argmin(t))], u[int(np.argmax(t))]]
+
+
+def _corners(space: _Space, u, rows: np.ndarray) -> list:
+    """Sets on the straight part of the fibre through u (the linear null space) where each row is extreme:
+    starts for ``fibre_extent``."""
+    if space.null.shape[1] == 0:
+        return []
+    a, b = space._constraints(u)
+    out = []
+    for row in rows:
+        c = row @ space.null
+        if np.linalg.norm(c) <= ROW_SPACE_TOL:
+            continue
+        for sign in (1.0, -1.0):
+            res = linprog(sign * c, A_ub=a, b_ub=np.maximum(b, 0.0), bounds=(None, None), method="highs")
+            if res.status == 0:
+                out.append(u + space.null @ res.x)
+    return out
 
 
 @dataclass(frozen=True)
@@ -462,7 +551,12 @@ def quantity_ranges(problem: Problem, free_values, pid: ProfileIdentification, r
         open_lo = bool(ext[i, 0] <= lo + 1e-6 or (pr is not None and pr.open_lower))
         open_hi = bool(ext[i, 1] >= hi - 1e-6 or (pr is not None and pr.open_upper))
         along = [matrix[i] @ u for u in flat_sets]
-        moves = bool(along) and np.ptp(along + [matrix[i] @ u0]) > PL_FLAT_FACTOR * 2 * half[i]
+        # with the structure, whether it moves along a flat dimension is the equations' answer (not profiled)
+        moves = (
+            not pid.structure
+            and bool(along)
+            and np.ptp(along + [matrix[i] @ u0]) > PL_FLAT_FACTOR * 2 * half[i]
+        )
         out[name] = QuantityRange(
             lower=float(value[i] * 10.0 ** ext[i, 0]),
             upper=float(value[i] * 10.0 ** ext[i, 1]),

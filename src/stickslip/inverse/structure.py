@@ -8,8 +8,11 @@ kappa = -mu_s N sigma (``stickslip.model.friction``). Divided by M, each phase o
   slip damping (C - b)/M and the slip equilibrium x_e(s) = (a s + kappa V_b)/K;
 * stick: x moves with the belt until the spring and damper need more than mu_s N, at the release position
   x_r = (|a| + (b + kappa) V_b - C V_b)/K = (mu_s N - C V_b)/K;
-* beyond the plateau speed v_p (the ``plateau`` family): C/M and the constant force's equilibrium
-  (a s + b s v_p + (b + kappa) V_b)/K.
+* beyond the plateau speed v_p (the ``plateau`` family): C/M, the constant force's equilibrium
+  (a s + b s v_p + (b + kappa) V_b)/K and the switching speed v_p itself (the switch time depends on it).
+
+Inequalities that decide a discrete outcome (whether the mass sticks at v_r = 0) add nothing: a small change
+of the parameters leaves the outcome, and so the motion, unchanged.
 
 The initial state and V_b are inputs, not parameters. A run's structural dimension is the generic rank of
 the Jacobian, with respect to the logarithms of the free parameters, of the combinations of the phases it
@@ -43,26 +46,46 @@ SYMBOLS = {
 PHASES = ("stick", "slip_backward", "slip_forward", "plateau")
 
 
+def consistent_law() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """(a, b, kappa) of the consistent reading, F = a sgn(v_r) + b v + kappa V_b
+    (``stickslip.model.friction.friction_law``; ``tests/test_inverse_structure.py`` checks they agree)."""
+    mu_n, sigma = SYMBOLS["mu_s"] * SYMBOLS["normal_force"], SYMBOLS["sigma"]
+    return -mu_n, mu_n * sigma, -mu_n * sigma
+
+
 def phase_combinations(phases) -> dict[str, sp.Expr]:
-    """The combinations the visited ``phases`` depend on (consistent reading), by name."""
+    """The combinations the visited ``phases`` depend on (consistent reading), by name, derived from the
+    equation of motion M x'' + C x' + K x = F (``stickslip.model.equations``) divided by M: in each slip
+    phase the coefficients of x' and x and the equilibrium, in stick the release position (where the
+    force the belt must supply reaches the friction limit), beyond the plateau its switching speed too."""
     unknown = set(phases) - set(PHASES)
     if unknown:
         raise ValueError(f"phases: {sorted(unknown)} are not among {PHASES}")
     p = SYMBOLS
     m, k, c, vb, vp = p["mass"], p["stiffness"], p["damping"], p["belt_velocity"], p["plateau_speed"]
-    mu_n = p["mu_s"] * p["normal_force"]
-    a, b, kappa = -mu_n, mu_n * p["sigma"], -mu_n * p["sigma"]
+    a, b, kappa = consistent_law()
+    x, v = sp.symbols("x v", real=True)
+
+    def normalised(force):
+        """(x' coefficient, x coefficient, equilibrium) of x'' = (F - C v - K x) / M, linear in x and v."""
+        acc = sp.expand((force - c * v - k * x) / m)
+        damping, stiffness = -sp.diff(acc, v), -sp.diff(acc, x)
+        return sp.simplify(damping), sp.simplify(stiffness), sp.simplify(acc.subs({x: 0, v: 0}) / stiffness)
+
     out: dict[str, sp.Expr] = {}
     for phase, s in (("slip_backward", -1), ("slip_forward", 1)):
         if phase in phases:
-            out["K/M"] = k / m
-            out["(C - mu_s N sigma)/M"] = (c - b) / m
-            out[f"x_e({s:+d})"] = (a * s + kappa * vb) / k
-            if "plateau" in phases:
-                out["C/M"] = c / m
-                out[f"x_p({s:+d})"] = (a * s + b * s * vp + (b + kappa) * vb) / k
-    if "stick" in phases:
-        out["x_r"] = (-a + (b + kappa) * vb - c * vb) / k
+            damping, stiffness, equilibrium = normalised(a * s + b * v + kappa * vb)
+            out["K/M"], out["(C - mu_s N sigma)/M"], out[f"x_e({s:+d})"] = stiffness, damping, equilibrium
+            if (
+                "plateau" in phases
+            ):  # beyond v_p the law's v_r is held at s v_p: F = a s + b s v_p + (b + kappa) V_b
+                damping, _, equilibrium = normalised(a * s + b * s * vp + (b + kappa) * vb)
+                out["C/M"], out[f"x_p({s:+d})"] = damping, equilibrium
+                out["v_p"] = vp  # the switch into the plateau happens at |v_r| = v_p
+    if "stick" in phases:  # x = x0 + V_b t while K x + C V_b - (b + kappa) V_b <= |a|: released where equal
+        (release,) = sp.solve(sp.Eq(k * x + c * vb - (b + kappa) * vb, -a), x)
+        out["x_r"] = sp.simplify(release)
     return out
 
 
@@ -75,7 +98,31 @@ def structural_rank(phases: tuple, free: tuple, fixed: tuple = ()) -> int:
         return 0
     subs = {SYMBOLS[name]: sp.Rational(str(value)) for name, value in fixed}
     rows = [[SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free] for e in combos]
-    return int(sp.Matrix(rows).subs(subs).rank(simplify=True))
+    return generic_rank(sp.Matrix(rows).subs(subs).tolist())
+
+
+#: Exact rational points (unrelated primes) at which a symbolic Jacobian's rank is taken. At a point the rank
+#: never exceeds the generic (symbolic) rank, and equals it off the zero set of the minors, a proper algebraic
+#: subset; the larger of two unrelated points is the generic rank unless both lie on it.
+#: ``tests/test_inverse_structure.py`` checks it against sympy's symbolic rank for every phase set.
+RANK_POINTS = (
+    dict(mass="7/5", stiffness="13/3", damping="11/7", mu_s="5/11", normal_force="17/2", sigma="3/13",
+         plateau_speed="19/23", belt_velocity="29/31"),
+    dict(mass="41/37", stiffness="53/7", damping="3/43", mu_s="47/59", normal_force="61/5", sigma="2/67",
+         plateau_speed="71/13", belt_velocity="11/73"),
+)  # fmt: skip
+
+
+def generic_rank(rows) -> int:
+    """Rank of a matrix of expressions in the parameters: exact (rational arithmetic, the same on every
+    CPU), the largest of its ranks at ``RANK_POINTS``."""
+    if not rows or not rows[0]:
+        return 0
+    matrix = sp.Matrix(rows)
+    return max(
+        int(matrix.subs({SYMBOLS[k]: sp.Rational(v) for k, v in point.items()}).rank())
+        for point in RANK_POINTS
+    )
 
 
 def visited_phases(traj, plateau_speed: float = float("inf")) -> tuple:
@@ -98,6 +145,7 @@ def visited_phases(traj, plateau_speed: float = float("inf")) -> tuple:
     return tuple(p for p in PHASES if p in found)
 
 
+@functools.cache
 def _jacobian_rows(runs: tuple, free: tuple) -> list:
     """d(combinations)/d log(free) of every run, stacked: ``runs`` holds (phases, fixed pairs, overridden
     names) per run; a parameter a run overrides (a sweep's value) is an input there, its column zero."""
@@ -114,7 +162,7 @@ def _jacobian_rows(runs: tuple, free: tuple) -> list:
 def runs_rank(runs: tuple, free: tuple) -> int:
     """Generic rank over the runs of one problem (``_jacobian_rows``)."""
     rows = _jacobian_rows(runs, free)
-    return int(sp.Matrix(rows).rank(simplify=True)) if rows and free else 0
+    return generic_rank(rows) if rows and free else 0
 
 
 @functools.cache
@@ -125,8 +173,8 @@ def identifiable_in_structure(runs: tuple, free: tuple, exponents: tuple) -> boo
     rows = _jacobian_rows(runs, free)
     if not rows:
         return not any(exponents)
-    with_row = rows + [[sp.Rational(str(x)) for x in exponents]]
-    return sp.Matrix(with_row).rank(simplify=True) == runs_rank(runs, free)
+    with_row = list(rows) + [[sp.Rational(str(x)) for x in exponents]]
+    return generic_rank(with_row) == runs_rank(runs, free)
 
 
 def problem_structure(problem, free_values) -> tuple[int, tuple, tuple]:
@@ -146,3 +194,120 @@ def problem_structure(problem, free_values) -> tuple[int, tuple, tuple]:
         per_run.append((phases, fixed, tuple(sorted(set(run.overrides) & set(problem.free)))))
     runs = tuple(per_run)
     return runs_rank(runs, tuple(problem.free)), tuple(p for p, _, _ in per_run), runs
+
+
+# -- the fibre: every parameter set with the same motion ---------------------------------------------------
+
+
+def _run_expressions(runs: tuple, free: tuple) -> list:
+    """The combinations of every run with its inputs substituted (exact), over the free symbols."""
+    out = []
+    for phases, fixed, _ in runs:
+        subs = {SYMBOLS[name]: sp.Rational(str(value)) for name, value in fixed}
+        for e in phase_combinations(phases).values():
+            e = sp.sympify(e).subs(subs)
+            if e.free_symbols and e not in out:
+                out.append(e)
+    return out
+
+
+@functools.cache
+def independent_combinations(runs: tuple, free: tuple) -> tuple:
+    """A maximal set of the runs' combinations with independent log-Jacobian rows (exact generic rank): the
+    equations that pin the fibre, as many as the structural dimension."""
+    chosen, rows = [], []
+    for e in _run_expressions(runs, free):
+        row = [SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free]
+        if generic_rank(rows + [row]) > len(rows):
+            chosen.append(e)
+            rows.append(row)
+    return tuple(chosen)
+
+
+@functools.cache
+def _fibre_functions(runs: tuple, free: tuple):
+    """(h, dh/du) of the independent combinations as numpy functions of u = log10 of the free values."""
+    import numpy as np
+
+    exprs = independent_combinations(runs, free)
+    syms = [SYMBOLS[q] for q in free]
+    h = sp.lambdify([syms], list(exprs), "numpy")
+    jac = sp.lambdify([syms], [[sp.diff(e, s) for s in syms] for e in exprs], "numpy")
+    ln10 = float(np.log(10.0))
+
+    def values(u):
+        return np.array(h(list(10.0 ** np.asarray(u, dtype=float))), dtype=float).reshape(-1)
+
+    def jacobian(u):
+        x = 10.0 ** np.asarray(u, dtype=float)
+        return np.array(jac(list(x)), dtype=float).reshape(len(exprs), len(free)) * x * ln10
+
+    return values, jacobian
+
+
+#: A set is on the fibre when every independent combination matches to this relative tolerance.
+FIBRE_TOL = 1e-8
+
+
+def fibre_extent(runs: tuple, free: tuple, u0, rows, lower, upper, pair=None, starts=()):
+    """(lowest, highest) of each ``row . u`` over the fibre through ``u0`` within the bounds: the sets u
+    (log10 of the free values, ``lower <= u <= upper``, and ``u[i] + u[j] <= 0`` for ``pair = (i, j)``) whose
+    motion is that of u0, because every combination the runs depend on keeps its value.
+
+    The fibre is curved in log coordinates (Fig. 2: sigma and mu_s N bend against C), so each extreme is a
+    small constrained optimisation (SLSQP, exact Jacobians of the derived combinations) started from u0 and
+    from ``starts`` (sets known to lie on the fibre, e.g. the corners of its straight part); only a result
+    back on the fibre (``FIBRE_TOL``) within the bounds counts, so a range is never wider than the fibre,
+    and at least the extent of the starts."""
+    import numpy as np
+    from scipy.optimize import minimize
+
+    u0 = np.asarray(u0, dtype=float)
+    rows = np.atleast_2d(np.asarray(rows, dtype=float))
+    lower, upper = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
+    base = rows @ u0
+    out = np.column_stack([base, base])
+    if not runs:
+        return out
+    values, jacobian = _fibre_functions(runs, free)
+    h0 = values(u0)
+    if h0.size == 0:
+        return out
+    scale = np.where(np.abs(h0) > 1e-12, np.abs(h0), 1.0)
+
+    def on_fibre(u) -> bool:
+        inside = np.all(u >= lower - 1e-9) and np.all(u <= upper + 1e-9)
+        if pair is not None:
+            inside = inside and u[pair[0]] + u[pair[1]] <= 1e-9
+        return bool(inside and np.max(np.abs(values(u) - h0) / scale) <= FIBRE_TOL)
+
+    constraints = [
+        {
+            "type": "eq",
+            "fun": lambda u: (values(u) - h0) / scale,
+            "jac": lambda u: jacobian(u) / scale[:, None],
+        }
+    ]
+    if pair is not None:
+        e = np.zeros(len(u0))
+        e[list(pair)] = -1.0
+        constraints.append({"type": "ineq", "fun": lambda u: float(e @ u), "jac": lambda u: e})
+    known = [u0] + [np.asarray(s, dtype=float) for s in starts if on_fibre(np.asarray(s, dtype=float))]
+    box = list(zip(lower, upper))
+    for n, row in enumerate(rows):
+        for col, sign in ((0, 1.0), (1, -1.0)):
+            best = min(sign * (row @ u) for u in known)
+            for start in known:
+                res = minimize(
+                    lambda u, c=sign * row: float(c @ u),
+                    np.clip(start, lower, upper),
+                    jac=lambda u, c=sign * row: c,
+                    method="SLSQP",
+                    bounds=box,
+                    constraints=constraints,
+                    options={"maxiter": 100, "ftol": 1e-10},
+                )
+                if on_fibre(res.x):
+                    best = min(best, sign * float(row @ res.x))
+            out[n, col] = sign * best
+    return out

@@ -19,7 +19,7 @@ from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
 from .identify import identify
 from .problem import COMBINATIONS, Problem, build_problem
-from .profile import profile_identify
+from .profile import PL_CLOSE, PL_THRESHOLD, profile_identify
 from .structure import problem_structure
 
 
@@ -56,27 +56,38 @@ def fit_problem(
             closest = problem.closest_equivalent(search.witness)
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
             source = "conflict search"
-    ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
     # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
     # the straight-line analysis only, as does a figure the settings leave out (``profile``: the CI-size
     # configuration profiles one figure, to test the path, not all eight)
     chosen = settings.get("profile")
     wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
     profiled = np.isfinite(fit.chi2) and wanted
-    profile = profile_identify(forward, fit.free_values) if profiled else None
-    # every fit ends at its minimum: a profile that went deeper than the fit restarts it from that point
-    # and profiles again (bounded rounds), so every flat direction is counted from a minimum
-    for _ in range(MINIMUM_ROUNDS):
-        if profile is None or not profile.floor < fit.chi2 - profile.threshold:
-            break
-        restarted = best_fit(forward, 1, settings["max_nfev"], seed, x0=deepest_point(profile))
-        if not restarted.chi2 < fit.chi2:
-            break
-        fit, source = restarted, f"{source}, restarted at a deeper profile point"
-        ident = identify(forward, fit.free_values, jacobian=fit.jacobian)
-        profile = profile_identify(forward, fit.free_values)
-    # the structure the data can at most bound: derived from the equations of the phases the fit visits
+    # the structure the data can at most bound: derived from the equations of the phases the fit visits; the
+    # profiles run over what it leaves identifiable only
     structure = problem_structure(problem, fit.free_values) if np.isfinite(fit.chi2) else (np.nan, (), ())
+    profile = profile_identify(forward, fit.free_values, structure[2]) if profiled else None
+    # every fit ends at its minimum: least squares to convergence (MINIMUM_NFEV_FACTOR) from the deepest point
+    # any profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled
+    # again, for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken
+    # from the deepest point they saw, and they judge a point to that resolution themselves)
+    restarts, nfev = 0, MINIMUM_NFEV_FACTOR * int(settings["max_nfev"])
+    for round_ in range(MINIMUM_ROUNDS + 1 if profile is not None else 0):
+        deeper = profile.floor < fit.chi2 - MINIMUM_TOL
+        start = deepest_point(profile) if deeper else fit.free_values
+        restarted = lower_of(fit, best_fit(forward, 1, nfev, seed, x0=start))
+        drop = fit.chi2 - restarted.chi2
+        if restarted is not fit:
+            fit, restarts = restarted, restarts + int(deeper)
+            structure = problem_structure(problem, fit.free_values)
+        if not drop > REPROFILE_DROP or round_ == MINIMUM_ROUNDS:
+            break
+        profile = profile_identify(forward, fit.free_values, structure[2])
+    if profile is None and np.isfinite(fit.chi2):  # no profile to restart from: converge from the fit itself
+        fit = lower_of(fit, best_fit(forward, 1, nfev, seed, x0=fit.free_values))
+    if restarts:
+        source += ", restarted at a deeper profile point" + (f" ({restarts} rounds)" if restarts > 1 else "")
+    # the straight-line analysis, once, at the fit the profiles end at
+    ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     refit = loo and settings["loo"] == "refit"
     if refit:
@@ -106,6 +117,24 @@ def fit_problem(
 
 #: Restarts of a fit from a profile point deeper than it (each then profiled again).
 MINIMUM_ROUNDS = 3
+#: A profile point this much below the fit's chi-square restarts the fit: far above the residuals' numerical
+#: noise (a few 1e-3 per number, ``residual_noise``), far below the profiles' threshold (3.84).
+MINIMUM_TOL = 0.05
+#: A restart that lowers chi-square by more than this profiles again: the resolution at which a profile judges
+#: its own points (``profile.PL_CLOSE`` of the threshold); below it the profiles already describe the valley.
+REPROFILE_DROP = PL_CLOSE * PL_THRESHOLD
+#: Least-squares iterations of a restart, in units of the first fit's (``max_nfev``): the default 6 x 4 = 24
+#: converges from a nearby point (Figs. 7 and 12 stop improving after 12), where the first fit only has to
+#: find the basin; a CI-size build's token fits get token restarts.
+MINIMUM_NFEV_FACTOR = 4
+
+
+def lower_of(fit, other):
+    """The fit with the lower chi-square; a consistent fit (every number within precision) is kept unless
+    the other is consistent too."""
+    if other.chi2 < fit.chi2 and (other.consistent or not fit.consistent):
+        return other
+    return fit
 
 
 def deepest_point(pid) -> np.ndarray:
@@ -201,6 +230,7 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             else "",
             "phases_visited": " ".join(sorted({ph for run in r["phases"] for ph in run})),
             "dimensions_note": a.note,
+            "profiles_bounded": profiles_bounded(r, a),
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
@@ -232,6 +262,19 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
         )
         rows.append(row)
     return rows
+
+
+def profiles_bounded(r: dict, a) -> str:
+    """'k of n': of the n quantities profiled (those the structure fixes), how many the data bound, i.e. are
+    reported as identifiable (profile above the threshold on both sides, at most a decade wide); '' where
+    nothing was profiled. The structural count says what the equations allow, this what the numbers give."""
+    pid, free = r.get("profile"), tuple(r["problem"].free)
+    if pid is None or not pid.profiles:
+        return ""
+    bounded = sum(
+        not (a.ridge[free.index(n)] if n in free else a.combo_ridge.get(n, True)) for n in pid.profiles
+    )
+    return f"{bounded} of {len(pid.profiles)}"
 
 
 def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
