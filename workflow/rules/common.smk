@@ -132,6 +132,22 @@ def check_inputs_producible(rules):
                 raise ClaimsError(f"notebooks.{name}.inputs: no rule writes {path!r}")
 
 
+def canonical(value):
+    """A config value with every mapping's keys in sorted order (lists keep theirs: their order is meaning).
+
+    Snakemake compares a job's params by their repr, where a dict shows its keys in the order the YAML file
+    wrote them: a reordered key would re-run every job that reads it. The 1-DOF and map sections, the friction
+    table's and the FE peer's go through here (the FE sections are sorted by studies.fe_config.job_config),
+    so those jobs depend on what the config says, not on how it is laid out. Left as written: sections whose
+    order is meaning (the methods study's and validation's labels and law order, the inverse study's
+    hypotheses, each named by its first key)."""
+    if isinstance(value, dict):
+        return {key: canonical(value[key]) for key in sorted(value, key=str)}
+    if isinstance(value, (list, tuple)):
+        return [canonical(item) for item in value]
+    return value
+
+
 def _names(value):
     return None if value is None else [value] if isinstance(value, str) else sorted(set(value))
 
@@ -146,7 +162,7 @@ def onedof_subconfig(readings=None, scenes=None, methods=None, study=None):
         sub[key] = ONEDOF[key] if names is None else {n: ONEDOF[key][n] for n in names}
     if study is not None:
         sub[study] = ONEDOF[study]
-    return {"onedof": sub}
+    return canonical({"onedof": sub})
 
 
 def onedof_runs():
@@ -238,4 +254,4 @@ def dense_map_subconfig(name):
     cfg = config["dense_map"]["maps"][name]
     sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
     section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
-    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}
+    return canonical({**sub, "dense_map": {**section, "maps": {name: cfg}}})
