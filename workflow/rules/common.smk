@@ -104,6 +104,20 @@ def rule_code_hash(rule):
     return code_hash([e for e in entries if e is not None], SRC)
 
 
+def catalogue_datasets(rules):
+    """Every catalogue dataset a rule names as an output (temporary outputs aside), for rule ``all``: a missing
+    dataset is then rebuilt by the default build, as make rebuilds a missing file. (Snakemake checks an
+    intermediate only when something downstream must re-run: a deleted dataset no rule-all input named
+    stayed gone.) The final products (pages, tables) are rule-all inputs where the config builds them. Outputs
+    of a rule with wildcards are left out: the catalogue lists every reading of a
+    sweep, the config builds a few; the build's record of what it wrote covers those (`make figures`,
+    stickslip.pipeline.build)."""
+    named = {
+        str(o) for rule in rules for o in rule.output if not o.flags.get("temp") and not o.contains_wildcard()
+    }
+    return [p for p in CATALOGUE if p in named and p.endswith(".nc")]
+
+
 def check_inputs_producible(rules):
     """Every dataset a claim reads and every file a notebook reads is an output of some rule. Snakemake would
     take an existing file whose producer is gone for a source file and never rebuild its consumers."""
