@@ -41,21 +41,34 @@ def summary_text(ds, checksum: str = "") -> str:
     return "\n".join(lines)
 
 
-def show_text(path: Path) -> str:
-    """``summary_text`` of the dataset at ``path``, read with its checksum verified: a damaged file is still
-    summarised (as stored), its checksum line saying MISMATCH and why."""
+def show_state(path: Path) -> tuple[str, str]:
+    """(text, state) of the dataset at ``path``: state ``ok`` (its checksum verified), ``mismatch`` (a
+    dataset whose stored content no longer matches its checksum: summarised as stored, the checksum line
+    saying MISMATCH and why) or ``unreadable`` (not a netCDF file at all, or truncated: the text says so)."""
+    import xarray as xr
+
     from ..io.netcdf import CorruptDatasetError, read_dataset
 
     try:
         ds = read_dataset(path)
-        state = "ok (content matches content_checksum)"
+        return summary_text(ds, "ok (content matches content_checksum)"), "ok"
     except CorruptDatasetError as exc:
-        import xarray as xr
-
         state = f"MISMATCH: {exc}"
-        try:
-            with xr.open_dataset(path) as opened:
-                ds = opened.load()
-        except Exception:  # truncated or not netCDF at all: the state is all there is to say
-            return f"{Path(path).name}: unreadable\n  checksum: {state}"
-    return summary_text(ds, state)
+    except (OSError, ValueError) as exc:  # not a file netCDF can open at all
+        return f"{path}: not a netCDF dataset ({type(exc).__name__}: {exc})", "unreadable"
+    try:
+        with xr.open_dataset(path) as opened:
+            ds = opened.load()
+    except Exception as exc:  # truncated or not netCDF at all: the state is all there is to say
+        why = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        return f"{path}: not a readable netCDF dataset ({why})", "unreadable"
+    return summary_text(ds, state), "mismatch"
+
+
+def show_text(path: Path) -> str:
+    """``summary_text`` of the dataset at ``path``, read with its checksum verified: a damaged file is still
+    summarised (as stored), its checksum line saying MISMATCH and why."""
+    text, state = show_state(path)
+    if state == "unreadable":
+        return f"{Path(path).name}: unreadable\n  checksum: {text}"
+    return text
