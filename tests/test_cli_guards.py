@@ -150,7 +150,7 @@ def test_allow_expensive_lets_the_user_take_the_cost(tmp_path):
 
 def test_show_exits_non_zero_on_a_file_that_is_not_a_dataset(tmp_path, capsys):
     err = refused(["show", "/etc/passwd"], capsys)
-    assert "FILE: /etc/passwd: not a readable netCDF dataset" in err and "make repair" not in err
+    assert "FILE: /etc/passwd: not a netCDF dataset" in err and "make repair" not in err
     refused(["show", str(tmp_path / "missing.nc")], capsys)
     xr.Dataset({"a": ("x", np.arange(3.0))}).to_netcdf(
         tmp_path / "foreign.nc"
@@ -163,3 +163,35 @@ def test_a_missing_root_is_a_message_not_a_key_error(tmp_path, capsys):
     for argv in (["run"], ["claims", "--figure", "2"], ["fe", "--scene", "x"], ["show", "results/x.nc"]):
         err = refused([*argv, "--root", str(tmp_path / "nowhere")], capsys)
         assert "--root: " in err and "is not a stickslip project folder: it does not exist" in err
+
+
+def test_a_truncated_dataset_is_a_failed_check_and_a_foreign_file_is_not_a_dataset(tmp_path, capsys):
+    """A netCDF file cut short (a killed copy) is a damaged dataset: summarised as far as it goes, exit 1,
+    `make repair` advised; a file that is no netCDF at all is bad input (exit 2), with no rebuild advice."""
+    import stickslip
+    from stickslip.io.netcdf import write_dataset
+
+    path = tmp_path / "run.nc"
+    write_dataset(stickslip.simulate(t_end=20.0, transient=5.0), path, scene={}, interpretation="", method={})
+    path.write_bytes(path.read_bytes()[:400])
+    assert main(["show", str(path)]) == 1
+    assert "checksum: MISMATCH" in capsys.readouterr().out
+    (tmp_path / "notes.nc").write_text("not a dataset\n")
+    err = refused(["show", str(tmp_path / "notes.nc")], capsys)
+    assert "not a netCDF dataset" in err and "make repair" not in err
+
+
+def test_show_says_the_outcome_first_and_why_each_value_is_missing(tmp_path, capsys):
+    from stickslip.io.netcdf import write_dataset
+
+    path = tmp_path / "fig06.nc"
+    write_dataset(stickslip.simulate(scene="fig06"), path, scene={}, interpretation="", method={})
+    assert main(["show", str(path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[1].startswith("  outcome: diverged: slip damping C - mu_s N sigma = 1.5 - 4 = -2.5")
+    missing = [ln for ln in lines if ln.startswith("  n/a (")]
+    assert (
+        len(missing) == 1
+        and "n/a (not defined by this run, whose outcome is diverged): stick_time" in missing[0]
+    )
+    assert not any(ln.endswith("= n/a") for ln in lines)  # no value printed undefined without its reason
