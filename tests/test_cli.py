@@ -244,6 +244,8 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
             "claim": "s3_frequency",
             "reading": "consistent_caption",
             "status": "deviates",
+            "reported": "0.25",
+            "measured": "0.27881234567",
             "reason": "0.28 Hz",
             "evidence": "evidence",
         },
@@ -280,6 +282,7 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
     )
     assert "- s3_stick_velocity: reproduced  [by construction: not counted]" in out
     assert "- s3_frequency: deviates" in out and "reason: 0.28 Hz" in out
+    assert "reported 0.25, measured 0.2788\n" in out  # the table's 0.27881234567, to 4 significant digits
     assert "s6_something_else" not in out  # not a claim about Fig. 2
     # then where Fig. 2 comes from: its runs and image, each with the rule that makes it (the catalogue)
     assert "  results/onedof/fig02/consistent_caption/exact.nc  (rule simulate_onedof_fig02)" in out

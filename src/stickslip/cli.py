@@ -612,6 +612,15 @@ def cmd_laws(args) -> int:
 # -- claims ----------------------------------------------------------------------------------------------
 
 
+def _rounded(text: str) -> str:
+    """A number of the claims table to 4 significant digits (the table keeps every digit); text as it is."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return text
+    return f"{value:.4g}" if value == value else "n/a"
+
+
 def cmd_claims(args) -> int:
     from . import api
     from .claims.load import load_claims
@@ -643,8 +652,9 @@ def cmd_claims(args) -> int:
     for r in sorted(shown, key=lambda r: (not is_evidence(r), r["claim"])):
         apart = "" if is_evidence(r) else f"  [{r['evidence'].replace('_', ' ')}: not counted]"
         print(
-            f"- {r['claim']}: {r['status']}{apart}  reported {r['reported']} {r['unit']}, "
-            f"measured {r['measured']}"
+            f"- {r['claim']}: {r['status']}{apart}  reported {_rounded(r['reported'])}"
+            f"{' ' + r['unit'] if r['unit'] else ''}, "
+            f"measured {_rounded(r['measured'])}"
         )
         print(f'    "{r["quote"]}"')
         if r["reason"]:
