@@ -240,3 +240,21 @@ def test_laws_lists_every_kind_with_formula_parameters_and_units(tmp_path):
     assert {p["name"] for p in kinds["tabulated"]["parameters"]} == {"path", "static_mu"}
     text = cli("laws", cwd=tmp_path).stdout
     assert "    path [file] (required)" in text and "callable (Python only)" in text
+
+
+def test_the_plot_title_names_the_law_once_and_leaves_the_reading_to_the_figure(tmp_path, monkeypatch):
+    import matplotlib.pyplot as plt
+
+    import stickslip.presentation.plots as plots
+
+    seen = {}
+
+    def figure(runs, spec, reading):
+        seen.update(spec, reading=reading)
+        return plt.figure()
+
+    monkeypatch.setattr(plots, "onedof_figure", figure)
+    argv = ["run", "--law", "stribeck", "mu_k=0.3", "v_s=0.5", "--t-end", "20", "--transient", "5"]
+    assert main([*argv, "--plot", str(tmp_path / "p.png")]) == 0
+    assert seen["title"] == "custom: method switch, friction law StribeckLaw(mu_s=0.5, mu_k=0.3, v_s=0.5)"
+    assert seen["reading"] == "consistent_caption" and "consistent_caption" not in seen["title"]

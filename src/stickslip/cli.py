@@ -490,7 +490,11 @@ def _plot_onedof(ds, config: dict, args, reading: str, out=None) -> None:
         "timeseries",
     )
     method = ds.attrs.get("method_name", "")
-    spec = {"title": ds.attrs.get("title", ""), "scene": scene, "plot": kind, "readings": [reading]}
+    # the figure adds the reading under the title: the title names the run and its friction law, once each
+    law = ds.attrs.get("scene_friction_law")
+    friction = f", friction law {law}" if law else ""
+    title = f"{ds.attrs.get('scene_figure', '')} {scene}: method {method}{friction}".strip()
+    spec = {"title": title, "scene": scene, "plot": kind, "readings": [reading]}
     fig = onedof_figure({method: ds}, {**spec, "methods": [method]}, reading=reading)
     fig.savefig(args.plot, dpi=110)
     plt.close(fig)
