@@ -258,3 +258,14 @@ def test_the_plot_title_names_the_law_once_and_leaves_the_reading_to_the_figure(
     assert main([*argv, "--plot", str(tmp_path / "p.png")]) == 0
     assert seen["title"] == "custom: method switch, friction law StribeckLaw(mu_s=0.5, mu_k=0.3, v_s=0.5)"
     assert seen["reading"] == "consistent_caption" and "consistent_caption" not in seen["title"]
+
+
+def test_two_tables_in_memory_are_never_taken_for_each_other():
+    """A TabulatedLaw built in memory has no source to tell it by: recorded by a digest of its values."""
+    from stickslip.model.laws import TabulatedLaw
+
+    run = dict(t_end=20.0, transient=5.0)
+    a = stickslip.simulate(law=TabulatedLaw(np.array([0.0, 0.5, 1.0]), np.array([0.5, 0.4, 0.35])), **run)
+    b = stickslip.simulate(law=TabulatedLaw(np.array([0.0, 0.5, 1.0]), np.array([0.5, 0.3, 0.25])), **run)
+    assert a.attrs["scene_friction_law"] != b.attrs["scene_friction_law"]
+    assert float(a.amplitude_peak_to_peak) != pytest.approx(float(b.amplitude_peak_to_peak), rel=1e-3)

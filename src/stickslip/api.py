@@ -345,15 +345,15 @@ def _law_object(law, key: str):
     if isinstance(law, FrictionLaw):
         if type(law) is LAW_KINDS.get(law.kind) and law.kind != "tabulated":
             return None  # a built-in law: its config mapping, checked by the config layer
-        if law.kind == "tabulated":
-            return check_law(law, key)
-        # your own subclass: its formula (continued below 0 as it defines), its static limit and breakpoints,
-        # recorded by name and a digest of its values as a callable law is
+        # your own subclass, or a table in memory: its formula (continued below 0 as it defines), its static
+        # limit and breakpoints, recorded by name and a digest of its values as a callable law is (two tables
+        # in memory share a repr, and a kept solve is found by it)
         try:
+            source = getattr(law, "source", "")
             wrapped = _callable_law_class()(
                 law.mu_continued,
                 static=law.static,
-                name=type(law).__name__,
+                name=f"{type(law).__name__}({source})" if source else type(law).__name__,
                 continued=True,
                 breakpoints=law.breakpoints,
             )
