@@ -265,9 +265,10 @@ def _callable_law_class():
             h = 1e-7
             self._slope0 = float(dmu(0.0)) if dmu is not None else (float(mu(h)) - float(mu(0.0))) / h
             values = [float(mu(v)) for v in LAW_CHECK_SPEEDS]
-            self._digest = hashlib.sha256(repr((values, self._static, self._slope0)).encode()).hexdigest()[
-                :12
-            ]
+            code = getattr(mu, "__code__", None)  # a function's code as well as its values: two that
+            body = (code.co_code, repr(code.co_consts)) if code is not None else ()  # differ between them
+            record = repr((values, self._static, self._slope0, body)).encode()
+            self._digest = hashlib.sha256(record).hexdigest()[:12]
 
         @property
         def static(self) -> float:
