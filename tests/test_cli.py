@@ -102,9 +102,16 @@ def test_a_scene_law_runs_under_the_switch_solver_and_is_recorded():
             r"--transient \(onedof\.scenes\.custom\.transient\): 6\.0 does not fit",
         ),
         (
-            ["fe", "--scene", "section9_kinematic", "--speed", "0.7"],
-            r"--scene: fe\.scenes\.section9_kinematic",
+            ["fe", "--scene", "section99_nothing", "--speed", "0.7"],
+            r"--scene: fe\.scenes\.section99_nothing: no such scene",
         ),
+        (["fe", "--scene", "section9_kinematic"], r"--scene: .*a stem, not a scene: add --speed"),
+        (["fe", "--scene", "section9_kinematic", "--speed", "nan"], r"--speed: .* number > 0, got nan"),
+        (["fe", "--scene", "section9_kinematic", "--rpm", "-3"], r"--rpm: .* finite number > 0, got -3"),
+        (["fe", "--scene", "section9_kinematic", "--speed", "1", "--rpm", "3"], r"--speed: .*not both"),
+        (["fe", "--scene", "section9_kinematic", "--speed", "1", "--t-end", "inf"], r"--t-end: .*got inf"),
+        (["run", "--root", "/nonexistent/stickslip"], r"--root: '/nonexistent/stickslip' is not a stickslip"),
+        (["run", "--configfile", "/nonexistent/x.yaml"], r"/nonexistent/x\.yaml: cannot read"),
     ],
 )
 def test_a_bad_option_is_an_error_naming_the_option(argv, message, capsys):
@@ -147,7 +154,7 @@ def test_a_diverging_run_prints_its_mechanism_first_and_is_an_answer_not_an_erro
     first = capsys.readouterr().out.splitlines()[0]
     assert main(["run", "--scene", "fig06"]) == 0  # the figure's own numbers, not the baseline's
     assert "4.6 s (s5_fig6_stick_time)" in capsys.readouterr().out
-    assert first.startswith("outcome: diverged - ") and "1.5 - 4 = -2.5" in first
+    assert first.startswith("outcome: diverged: slip damping") and "1.5 - 4 = -2.5" in first
     ds = api.simulate(mu_s=0.8)
     assert ds.attrs["status"] == "diverged" and ds.attrs["success"] == 1
     assert "grows without bound" in ds.attrs["message"]
@@ -155,6 +162,7 @@ def test_a_diverging_run_prints_its_mechanism_first_and_is_an_answer_not_an_erro
 
 
 def test_claims_without_a_build_says_how_to_build_it(tmp_path, capsys):
+    (tmp_path / "config").symlink_to(ROOT / "config")  # a project, never built
     with pytest.raises(SystemExit):
         main(["claims", "--figure", "2", "--root", str(tmp_path)])
     assert "results/claims/deviations.csv" in capsys.readouterr().err
@@ -185,7 +193,7 @@ def test_show_reports_the_checksum_state_of_a_dataset(tmp_path, capsys):
     ds2 = read_dataset(path)
     ds2["solver_steps"] = ds2.solver_steps + 1  # the file edited by another program: data no longer sealed
     ds2.to_netcdf(tmp_path / "edited.nc")
-    assert main(["show", str(tmp_path / "edited.nc")]) == 0
+    assert main(["show", str(tmp_path / "edited.nc")]) == 1  # summarised as stored, and a failed check
     assert "checksum: MISMATCH" in capsys.readouterr().out
 
 
@@ -236,6 +244,8 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
             "claim": "s3_frequency",
             "reading": "consistent_caption",
             "status": "deviates",
+            "reported": "0.25",
+            "measured": "0.27881234567",
             "reason": "0.28 Hz",
             "evidence": "evidence",
         },
@@ -272,6 +282,7 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
     )
     assert "- s3_stick_velocity: reproduced  [by construction: not counted]" in out
     assert "- s3_frequency: deviates" in out and "reason: 0.28 Hz" in out
+    assert "reported 0.25, measured 0.2788\n" in out  # the table's 0.27881234567, to 4 significant digits
     assert "s6_something_else" not in out  # not a claim about Fig. 2
     # then where Fig. 2 comes from: its runs and image, each with the rule that makes it (the catalogue)
     assert "  results/onedof/fig02/consistent_caption/exact.nc  (rule simulate_onedof_fig02)" in out
@@ -279,12 +290,11 @@ def test_claims_prints_the_figures_verdict_and_each_claims_reason(tmp_path, caps
     assert "results/onedof/fig05/" not in out
 
 
-def test_fe_runs_from_a_folder_outside_the_project(tmp_path_factory, tmp_path, monkeypatch):
-    """The documented command from another folder: the project's paths (the inverse study's claims glob among
-    them) resolve against the project (here the small run's copy, which holds the friction table), not the
-    working directory."""
-    work = shared_small_run(tmp_path_factory)
+def test_fe_runs_from_a_folder_outside_the_project(tmp_path, monkeypatch):
+    """The documented command from another folder, with the ensemble and the step-halving check: the project's
+    paths (the inverse study's claims glob among them, and the friction table, computed when no build has
+    written it) resolve against the project the package belongs to, not the working directory."""
     monkeypatch.chdir(tmp_path)
     args = ["fe", "--scene", "section9_kinematic", "--speed", "0.5", "--t-end", "0.01", "-o", "s9.nc"]
-    assert main([*args, "--root", str(work)]) == 0
-    assert (tmp_path / "s9.nc").is_file()
+    assert main(args) == 0
+    assert "ensemble_member" in read_dataset(tmp_path / "s9.nc").dims

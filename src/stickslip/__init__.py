@@ -7,7 +7,7 @@ Your own scenario (``stickslip.api``; the ``stickslip`` console command does the
 * ``stickslip.simulate_fe("section9_kinematic", speed=0.5, t_end=0.1)``: one beam-on-disc scene.
 
 ``output="run.nc"`` writes the dataset the pipeline would write. Command line: ``stickslip --help``
-(``run``, ``fe``, ``claims``, ``show``).
+(``run``, ``fe``, ``laws``, ``claims``, ``show``); the API's manual: ``help(stickslip.api)``.
 
 Layers, each importing only from the ones listed before it:
 ``model``, ``solvers``, ``analysis``, ``fe``, ``io``; then ``studies`` (config in, dataset out), ``pipeline``
@@ -22,13 +22,19 @@ _API = {"simulate": "api", "simulate_fe": "api"}
 __all__ = ["simulate", "simulate_fe", "__version__"]
 
 
-def __getattr__(name: str):
-    if name in _API:
-        from importlib import import_module
+#: Submodules reachable as attributes without an import of their own (``help(stickslip.api)``).
+_SUBMODULES = ("api", "cli", "catalogue")
 
+
+def __getattr__(name: str):
+    from importlib import import_module
+
+    if name in _API:
         return getattr(import_module(f".{_API[name]}", __name__), name)
+    if name in _SUBMODULES:
+        return import_module(f".{name}", __name__)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def __dir__():
-    return sorted([*globals(), *_API])
+    return sorted([*globals(), *_API, *_SUBMODULES])

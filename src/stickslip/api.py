@@ -18,6 +18,23 @@ under the switch solver, the only one that integrates any law:
 >>> ds = stickslip.simulate(law={"kind": "stribeck", "mu_k": 0.3, "v_s": 0.5}, t_end=20.0, transient=5.0)
 >>> ds.attrs["method_name"], ds.attrs["scene_friction_law"]
 ('switch', 'StribeckLaw(mu_s=0.5, mu_k=0.3, v_s=0.5)')
+
+Your own law as a Python function of the relative speed |v_r| [mm/s] (optionally ``law_derivative``), checked
+as the built-in laws are and solved by the same switch solver:
+
+>>> ds = stickslip.simulate(law=lambda v: 0.5 / (1 + 0.5 * v), t_end=20.0, transient=5.0)
+>>> ds.attrs["status"], ds.attrs["method_name"], ds.attrs["scene_friction_law"][:27]
+('success', 'switch', 'CallableLaw(mu=<lambda>, st')
+
+As ``solve_ivp`` reports, every run says what it did: ``status`` (success, diverged, failed), ``success`` and
+``message``; a divergence is the model's answer, with its mechanism (the ``outcome`` variable says the same):
+
+>>> ds = stickslip.simulate(mu_s=0.8)
+>>> ds.attrs["status"], ds.attrs["success"], str(ds.outcome.attrs["flag_meanings"].split()[int(ds.outcome)])
+('diverged', 1, 'diverged')
+>>> print(ds.attrs["message"])  # doctest: +ELLIPSIS
+diverged: slip damping C - mu_s N sigma = 1.5 - 4 = -2.5 N s/mm < 0 ...: the motion grows without bound
+
 >>> from stickslip.pipeline.config import ConfigError
 >>> try:
 ...     stickslip.simulate(law={"kind": "stribeck", "mu_k": 0.3, "v_s": 0.5}, method="exact")
@@ -41,17 +58,93 @@ CUSTOM = "custom"
 RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 
 
+def _is_project(folder: Path) -> bool:
+    return (folder / "config" / "config.yaml").is_file()
+
+
 def project_root(root: str | Path | None = None) -> Path:
-    """The project folder: ``root``, else the working directory if it holds ``config/config.yaml``, else
-    the checkout this package is installed from."""
+    """The project folder: ``root``, else the checkout this package belongs to (an editable install, the
+    way ``make setup`` installs it), else the working directory if it holds ``config/config.yaml``. Every
+    project path (config, claims, friction table, results) is read from there, wherever the call runs."""
+    from .pipeline.config import ConfigError
+
     if root is not None:
-        return Path(root)
-    for candidate in (Path.cwd(), Path(__file__).resolve().parents[2]):
-        if (candidate / "config" / "config.yaml").is_file():
+        folder = Path(root).expanduser()
+        if not _is_project(folder):
+            what = "does not exist" if not folder.exists() else "holds no config/config.yaml"
+            raise ConfigError(f"root: {str(folder)!r} is not a stickslip project folder: it {what}")
+        return folder.resolve()
+    for candidate in (Path(__file__).resolve().parents[2], Path.cwd()):
+        if _is_project(candidate):
             return candidate
-    raise FileNotFoundError(
-        "no project folder: run from the stickslip checkout (it holds config/config.yaml) or pass root="
+    raise ConfigError(
+        "root: no project folder: this package is not installed from a stickslip checkout and the working "
+        "directory holds no config/config.yaml; pass root= (--root) naming the checkout"
     )
+
+
+def _results_folder_of(path: Path) -> Path | None:
+    """The results folder of the project ``path`` lies in (any stickslip checkout, not only this one's)."""
+    from .catalogue import RESULTS
+
+    for folder in path.parents:
+        if folder.name == RESULTS and _is_project(folder.parent):
+            return folder
+    return None
+
+
+def check_output(
+    output: str | Path | None, root: str | Path, *, force: bool = False, key: str = "output", config=None
+) -> Path | None:
+    """``output`` as a path this call may write, checked before any work.
+
+    Refused: a path the pipeline's catalogue names (``stickslip.catalogue``) or anything under a project's
+    results folder (the build owns those files: a custom run there would be read as the pipeline's; ``force``
+    does not change this); an existing file unless ``force``; a directory; a place no file can be created
+    in (``/proc``, a read-only or missing parent). The message names ``key`` (``-o`` on the command line)."""
+    from .pipeline.config import ConfigError
+
+    if output is None:
+        return None
+    path = Path(output).expanduser()
+    target = path.resolve()
+    root = Path(root).resolve()
+    results = _results_folder_of(target)
+    if results is not None:
+        from . import catalogue as paths
+
+        rel = target.relative_to(results.parent).as_posix()
+        named = (
+            " (a catalogue path: the pipeline writes it)" if config and rel in paths.catalogue(config) else ""
+        )
+        raise ConfigError(
+            f"{key}: {str(path)!r} is inside the pipeline's results folder {str(results)!r}{named}; the "
+            "build "
+            "owns every file there and would read a custom run as its own: write elsewhere (--force does not "
+            "change this)"
+        )
+    if target.is_dir():
+        raise ConfigError(f"{key}: {str(path)!r} is a directory; name a file, e.g. {str(path / 'run.nc')!r}")
+    if target.exists() and not force:
+        raise ConfigError(f"{key}: {str(path)!r} exists; pass --force (force=True) to overwrite it")
+    parent = target.parent
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    if not parent.is_dir():
+        raise ConfigError(f"{key}: {str(path)!r} cannot be written: {str(parent)!r} is not a directory")
+    import os
+    import tempfile
+
+    try:  # the real test (root may write where permission bits say no; /proc refuses new files)
+        fd, probe = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".probe", dir=parent)
+        os.close(fd)
+        os.unlink(probe)
+        if target.exists():
+            with open(target, "ab"):
+                pass
+    except OSError as exc:
+        raise ConfigError(f"{key}: {str(path)!r} cannot be written ({exc.strerror or exc})") from None
+    return path
 
 
 def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path | None = None) -> dict:
@@ -114,6 +207,174 @@ def _law_mapping(law, mu_s: float) -> dict | None:
     return entry
 
 
+#: Relative speeds [mm/s] a law given as an object or a callable is checked at (and fingerprinted by):
+#: 0, then 1e-6 to 1e3 mm/s geometrically, far beyond any speed a 1-DOF run of the paper reaches.
+LAW_CHECK_SPEEDS = (0.0, *(10.0 ** (k / 4.0) for k in range(-24, 13)))
+
+
+def check_law(law, key: str = "law"):
+    """The checks every built-in law makes, applied to any law object: mu finite and >= 0 at every relative
+    speed of ``LAW_CHECK_SPEEDS``, the static limit finite and > 0, and mu(0+) not above it (a mass released
+    from stick would be pushed back into it). Errors name ``key``."""
+    import math
+
+    from .pipeline.config import ConfigError
+
+    try:
+        static = float(law.static)
+        values = [float(law.mu_continued(v)) for v in LAW_CHECK_SPEEDS]
+    except ConfigError:
+        raise
+    except Exception as exc:  # the user's code: its own error, named
+        raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
+    if not (math.isfinite(static) and static > 0):
+        raise ConfigError(f"{key}: the static limit must be finite and > 0, got {static!r}")
+    for v, mu in zip(LAW_CHECK_SPEEDS, values, strict=True):
+        if not (math.isfinite(mu) and mu >= 0):
+            raise ConfigError(
+                f"{key}: mu({v:g} mm/s) = {mu!r}; mu must be finite and >= 0 (a magnitude |F|/N)"
+            )
+    zero_plus = max(values[0], float(law.mu_continued(1e-12)))  # a jump right after 0 too
+    if zero_plus > static * (1 + 1e-9):
+        raise ConfigError(f"{key}: mu(0+) = {zero_plus!r} exceeds the static limit {static!r}")
+    return law
+
+
+def _callable_law_class():
+    """``CallableLaw``, defined on first use (``import stickslip.api`` stays free of numpy)."""
+    import hashlib
+
+    import numpy as np
+
+    from .model.laws import FrictionLaw
+
+    class CallableLaw(FrictionLaw):
+        """A friction law from a Python callable: ``mu(v_r)`` [1] of the relative speed |v_r| >= 0 [mm/s],
+        optionally its derivative ``dmu(v_r)`` [s/mm] and the static limit (default mu(0)). Solved by the
+        switch solver like the built-in laws; below 0 (the continuation a high-order step across v_r = 0
+        may ask for) the law is continued linearly with its slope at 0 (``dmu(0)``, else a difference
+        quotient). ``repr`` carries a digest of the values at ``LAW_CHECK_SPEEDS``, so two different
+        callables never share a record or a kept solve."""
+
+        kind = "callable"
+
+        def __init__(self, mu, dmu=None, static=None, name: str = "", continued=False, breakpoints=()):
+            self._mu, self._dmu, self._continued, self._breakpoints = mu, dmu, continued, tuple(breakpoints)
+            self.name = name or getattr(mu, "__name__", None) or type(mu).__name__
+            self._static = float(mu(0.0)) if static is None else float(static)
+            h = 1e-7
+            self._slope0 = float(dmu(0.0)) if dmu is not None else (float(mu(h)) - float(mu(0.0))) / h
+            values = [float(mu(v)) for v in LAW_CHECK_SPEEDS]
+            code = getattr(mu, "__code__", None)  # a function's code as well as its values: two that
+            body = (code.co_code, repr(code.co_consts)) if code is not None else ()  # differ between them
+            record = repr((values, self._static, self._slope0, body)).encode()
+            self._digest = hashlib.sha256(record).hexdigest()[:12]
+
+        @property
+        def static(self) -> float:
+            return self._static
+
+        @property
+        def breakpoints(self) -> tuple[float, ...]:
+            return self._breakpoints
+
+        def _scalar(self, speed: float) -> float:
+            if speed >= 0.0 or self._continued:
+                return float(self._mu(speed))
+            return float(self._mu(0.0)) + self._slope0 * speed
+
+        def mu_continued(self, speed):
+            if isinstance(speed, float):
+                return self._scalar(speed)
+            arr = np.asarray(speed, dtype=float)
+            return np.vectorize(self._scalar, otypes=[float])(arr) if arr.ndim else self._scalar(float(arr))
+
+        def derivative(self, speed: float) -> float:
+            """d mu / d|v_r| [s/mm]: the given ``dmu``, else a central difference quotient."""
+            if self._dmu is not None:
+                return float(self._dmu(speed))
+            h = 1e-6 * max(1.0, abs(speed))
+            return (self._scalar(speed + h) - self._scalar(max(speed - h, 0.0))) / (
+                speed + h - max(speed - h, 0)
+            )
+
+        def describe(self) -> dict:
+            return {"kind": self.kind, "mu": self.name, "static": self._static, "digest": self._digest}
+
+        def __repr__(self) -> str:
+            return f"CallableLaw(mu={self.name}, static={self._static!r}, digest={self._digest})"
+
+    return CallableLaw
+
+
+def callable_law(mu, dmu=None, static=None, key: str = "law"):
+    """A checked ``CallableLaw`` (see ``simulate``): ``mu(v_r)`` of the relative speed [mm/s]; ``dmu`` its
+    derivative (checked against difference quotients of ``mu``), ``static`` the static limit (default
+    mu(0))."""
+    import math
+
+    from .pipeline.config import ConfigError
+
+    if not callable(mu) or (dmu is not None and not callable(dmu)):
+        raise ConfigError(f"{key}: expected a callable mu(v_r) (and dmu(v_r)), got {type(mu).__name__}")
+    try:
+        law = _callable_law_class()(mu, dmu, static)
+    except (TypeError, ValueError, ArithmeticError) as exc:
+        raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
+    check_law(law, key)
+    if dmu is not None:
+        for v in LAW_CHECK_SPEEDS[1:]:
+            h = 1e-6 * v
+            quotient = (float(mu(v + h)) - float(mu(v - h))) / (2 * h)
+            given = float(dmu(v))
+            scale = max(abs(quotient), abs(float(mu(v))) / max(v, 1e-300) * 1e-6, 1e-9)
+            if not math.isfinite(given) or abs(given - quotient) > 1e-3 * scale + 1e-6:
+                raise ConfigError(
+                    f"{key} derivative: dmu({v:g} mm/s) = {given!r} but mu's difference quotient there is "
+                    f"{quotient:.6g}: not mu's derivative"
+                )
+    return law
+
+
+def _law_object(law, key: str):
+    """A law given as an object (a ``FrictionLaw`` the config cannot name, or a callable), checked; None for
+    a config mapping or a built-in law (those go through the config, as the pipeline's)."""
+    from .model.laws import LAW_KINDS, FrictionLaw
+
+    if law is None or isinstance(law, Mapping):
+        return None
+    if isinstance(law, FrictionLaw):
+        if type(law) is LAW_KINDS.get(law.kind) and law.kind != "tabulated":
+            return None  # a built-in law: its config mapping, checked by the config layer
+        # your own subclass, or a table in memory: its formula (continued below 0 as it defines), its static
+        # limit and breakpoints, recorded by name and a digest of its values as a callable law is (two tables
+        # in memory share a repr, and a kept solve is found by it)
+        try:
+            source = getattr(law, "source", "")
+            wrapped = _callable_law_class()(
+                law.mu_continued,
+                static=law.static,
+                name=f"{type(law).__name__}({source})" if source else type(law).__name__,
+                continued=True,
+                breakpoints=law.breakpoints,
+            )
+        except Exception as exc:
+            from .pipeline.config import ConfigError
+
+            raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
+        return check_law(wrapped, key)
+    if isinstance(law, tuple) and len(law) == 2 and all(callable(f) for f in law):
+        return callable_law(*law, key=key)
+    if callable(law):
+        return callable_law(law, key=key)
+    from .pipeline.config import ConfigError
+
+    raise ConfigError(
+        f"{key}: expected a config mapping ({{'kind': 'stribeck', ...}}), a FrictionLaw or a callable "
+        f"mu(v_r), got {type(law).__name__}"
+    )
+
+
 def onedof_scenario(
     config: dict,
     scene: str | None = None,
@@ -121,6 +382,7 @@ def onedof_scenario(
     law=None,
     run: Mapping | None = None,
     params: Mapping | None = None,
+    own_law=None,
 ) -> tuple[dict, str]:
     """(config, scene name) with the changes as a scene of their own: ``onedof.scenes.custom`` = ``scene``
     (default: the baseline's) with ``params``, ``law`` and ``run`` lengths over it. Without changes the
@@ -132,7 +394,7 @@ def onedof_scenario(
 
         raise ConfigError(f"scene: {scene!r} is not an entry of onedof.scenes ({sorted(onedof['scenes'])})")
     params, run = dict(params or {}), dict(run or {})
-    if not (params or run or law is not None):
+    if not (params or run or law is not None or own_law is not None):
         return config, scene
     base = copy.deepcopy(onedof["scenes"][scene])
     merged = {**(onedof["defaults"].get("params") or {}), **(base.get("params") or {}), **params}
@@ -148,6 +410,8 @@ def onedof_scenario(
     if law_entry is not None:
         entry["law"] = law_entry
         entry["description"] += f", friction law {law_entry['kind']}"
+    if own_law is not None:  # not a config value: the run replaces its spec's law (api.simulate)
+        entry["description"] += f", friction law {own_law!r}"
     config = copy.deepcopy(config)
     config["onedof"]["scenes"][CUSTOM] = entry
     return config, CUSTOM
@@ -165,12 +429,14 @@ def simulate(
     reading: str | None = None,
     method: str | None = None,
     law=None,
+    law_derivative: Callable[[float], float] | None = None,
     t_end: float | None = None,
     output_dt: float | None = None,
     transient: float | None = None,
     count_window: float | None = None,
     ensemble: bool = False,
     output: str | Path | None = None,
+    force: bool = False,
     configfiles: Sequence[str | Path] = (),
     root: str | Path | None = None,
     config: dict | None = None,
@@ -182,49 +448,82 @@ def simulate(
     As scipy's ``solve_ivp`` reports its outcome, the dataset's attributes ``status`` ("success",
     "diverged" or "failed"), ``success`` (0 only for a numerical failure) and ``message`` (the outcome and
     the mechanism behind it, e.g. why the motion grows without bound) say what the run did; a divergence is
-    the model's answer, not an error. Every metric is there, NaN where the run defines none.
+    the model's answer, not an error. The variable ``outcome`` (flags ``stick_slip no_stick rest diverged
+    failed``, attribute ``mechanism``) says the same per run. Every metric is there, NaN where the run
+    defines none.
 
     ``scene``, ``reading`` and ``method`` are entries of ``onedof.scenes/readings/methods`` (default: the
     baseline's, ``onedof.baseline``; with a ``law`` the default method is ``switch``). ``params`` are the
     scene's parameters (``mass``, ``stiffness``, ``damping``, ``mu_s``, ``sigma``, ``normal_force``, ``x0``,
-    ``v0``, ``belt_velocity``, ``belt_deceleration``, ``units``, ``plateau_speed``); ``law`` is a config
-    mapping (``{"kind": "stribeck", "mu_k": 0.3, "v_s": 0.5}``; ``mu_s`` defaults to the run's) or a law of
-    ``stickslip.model.laws``. ``ensemble`` adds the config's perturbation ensemble (``<metric>_ensemble``),
-    built over this run's config. ``output`` writes the dataset with the pipeline's writer and returns it as
-    read back (checksum verified). ``config``: the project config already loaded (``load_project_config``)
-    instead of reading ``configfiles``. A bad value raises ``ConfigError`` naming its config key."""
+    ``v0``, ``belt_velocity``, ``belt_deceleration``, ``units``, ``plateau_speed``).
+
+    ``law`` replaces the reading's friction (switch solver): a config mapping (``{"kind": "stribeck",
+    "mu_k": 0.3, "v_s": 0.5}``; ``mu_s`` defaults to the run's; ``stickslip laws`` lists the kinds), a law of
+    ``stickslip.model.laws`` or your own ``FrictionLaw`` subclass, or a Python callable ``mu(v_r)`` of the
+    relative speed |v_r| >= 0 [mm/s] (``law_derivative``: its derivative [s/mm], checked against mu's
+    difference quotients; the static limit is mu(0)). Every law passes the built-in laws' checks before the
+    run: mu finite and >= 0 from 0 to 1000 mm/s, mu(0+) not above the static limit.
+
+    ``ensemble`` adds the config's perturbation ensemble (``<metric>_ensemble``), built over this run's
+    config.
+    ``output`` writes the dataset with the pipeline's writer and returns it as read back (checksum verified);
+    it is checked before any work: never a path of the pipeline's results folder, never an existing file
+    unless ``force``, never a directory or a place no file can be created. ``config``: the project config
+    already loaded (``load_project_config``) instead of reading ``configfiles``. The run's size is bounded
+    by the pipeline's cost guard (``stickslip.pipeline.config_models``: samples per run, and samples of the
+    ensemble's runs together), checked before any work unless the config says ``allow_expensive: true``.
+    A bad value raises ``ConfigError`` naming its key."""
+    from dataclasses import replace
+
     from .catalogue import onedof_dataset
     from .ensemble import ensemble_dataset
+    from .pipeline.config import ConfigError
     from .studies.onedof import scene_run_dataset
     from .studies.specs import PERTURBED_FIELDS, run_spec
 
-    config = config if config is not None else load_project_config(configfiles, root)
+    base_root = project_root(root)
+    config = config if config is not None else load_project_config(configfiles, base_root)
+    output = check_output(output, base_root, force=force, config=config)
     baseline = config["onedof"]["baseline"]
     run = {
         k: v
         for k, v in zip(RUN_LENGTHS, (t_end, output_dt, transient, count_window), strict=True)
         if v is not None
     }
-    config, name = onedof_scenario(config, scene, law=law, run=run, params=params)
+    if law_derivative is not None and law is not None:
+        law = (law, law_derivative)
+    own_law = _law_object(law, f"onedof.scenes.{CUSTOM}.law")
+    config, name = onedof_scenario(
+        config, scene, law=None if own_law is not None else law, run=run, params=params, own_law=own_law
+    )
     _validated_onedof(config)
     reading = reading or baseline["reading"]
     method = method or ("switch" if law is not None else baseline["method"])
     for key, value in (("reading", reading), ("method", method)):
         if value not in config["onedof"][key + "s"]:
-            from .pipeline.config import ConfigError
-
             known = sorted(config["onedof"][key + "s"])
             raise ConfigError(f"{key}: {value!r} is not an entry of onedof.{key}s ({known})")
-    try:
-        spec = run_spec(config, name, reading, method)
-    except ValueError as exc:
-        from .pipeline.config import ConfigError
+    if own_law is not None and config["onedof"]["methods"][method].get("solver") != "switch":
+        raise ConfigError(
+            f"onedof.scenes.{name}.law: a {own_law.kind!r} friction law is solved by the 'switch' solver "
+            "only; "
+            f"method {method!r} uses {config['onedof']['methods'][method].get('solver')!r}"
+        )
 
+    def spec_of(cfg):
+        spec = run_spec(cfg, name, reading, method)
+        return spec if own_law is None else replace(spec, law=own_law)
+
+    try:
+        spec = spec_of(config)
+    except ValueError as exc:
         raise ConfigError(str(exc)) from None
+    members = _ensemble_spec(config, ensemble)
+    check_run_cost(config, name, reading, members, given=run, lengths=(spec.t_end, spec.output_dt))
     ds = ensemble_dataset(  # signs drawn by name: the run's dataset path in the pipeline's catalogue
-        lambda cfg: scene_run_dataset(run_spec(cfg, name, reading, method)),
+        lambda cfg: scene_run_dataset(spec_of(cfg)),
         config,
-        _ensemble_spec(config, ensemble),
+        members,
         run_id=onedof_dataset(name, reading, method),
         fields=PERTURBED_FIELDS,
     )
@@ -232,9 +531,74 @@ def simulate(
         "scene": spec.scene_attrs(),
         "interpretation": spec.interpretation(),
         "method": {"name": method, **spec.solver_settings, **ds.attrs.pop("solver_run_settings", {})},
-        "title": f"{spec.figure} {name}: reading {reading}, method {method}",
+        "title": f"{spec.figure} {name}: reading {reading}, method {method}".strip(),
     }
     return _finish(ds, attrs, output)
+
+
+def ensemble_members(spec) -> int:
+    """Runs an ensemble makes: the base run, one per seed, the step member, the window and BLAS members."""
+    if spec is None:
+        return 1
+    extra = (spec.window_factor is not None) + (spec.blas_threads is not None)
+    return 1 + len(spec.seeds) + 1 + extra
+
+
+def check_run_cost(
+    config: dict, scene: str, reading: str, ensemble_spec=None, given: Mapping = (), lengths=None
+) -> None:
+    """The pipeline's cost guard for one run (``stickslip.pipeline.config_models``): its samples per run
+    (``estimated_costs``, against ``MAX_SAMPLES_PER_RUN``) and, with an ensemble, the samples of all its
+    runs together (against ``MAX_SAMPLES_PER_STUDY``), before any work. Skipped with ``allow_expensive:
+    true`` in the config, as in the pipeline. The message names the key, the cost and the bound."""
+    from .pipeline.config import ConfigError
+    from .pipeline.config_models import PipelineConfig, estimated_costs
+
+    if config.get("allow_expensive"):
+        return
+    from pydantic import ValidationError
+
+    try:
+        model = PipelineConfig.model_validate({**config, "allow_expensive": True})
+    except ValidationError:  # a section this run does not read; the run's own were checked
+        return
+    wanted = f"onedof.scenes.{scene} (reading {reading})"
+    for key, what, estimate, limit in estimated_costs(model):
+        if key != wanted:
+            continue
+        option = "output_dt" if "output_dt" in given and "t_end" not in given else "t_end"
+        span = f" (t_end = {lengths[0]:g} s at output_dt = {lengths[1]:g} s)" if lengths else ""
+        if estimate > limit:
+            raise ConfigError(
+                f"onedof.scenes.{scene}.{option}: {dict(given).get(option, '')!r}{span} makes an estimated "
+                f"{estimate:.3g} {what}, more than the limit {limit:.3g} (the pipeline's cost guard); "
+                "a shorter t_end or a coarser output_dt fits, or allow_expensive: true in a config file"
+            )
+        check_ensemble_cost(ensemble_spec, estimate, config)
+
+
+def check_ensemble_cost(spec, samples_per_run: float, config: Mapping) -> None:
+    """The pipeline's bounds on an ensemble, before any work: at most ``MAX_ENSEMBLE_SEEDS`` seeds, and its
+    runs together at most ``MAX_SAMPLES_PER_STUDY`` samples (``stickslip.pipeline.config_models``). Skipped
+    with ``allow_expensive: true``. The message names the key (``ensemble.seeds``), the cost and the bound."""
+    from .pipeline.config import ConfigError
+    from .pipeline.config_models import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_STUDY
+
+    if spec is None or config.get("allow_expensive"):
+        return
+    members = ensemble_members(spec)
+    if len(spec.seeds) > MAX_ENSEMBLE_SEEDS:
+        raise ConfigError(
+            f"ensemble.seeds: {len(spec.seeds)} seeds make {members} runs of this one, more than the limit "
+            f"{MAX_ENSEMBLE_SEEDS} seeds (the pipeline's cost guard); fewer seeds, or allow_expensive: true"
+        )
+    if members * samples_per_run > MAX_SAMPLES_PER_STUDY:
+        raise ConfigError(
+            f"ensemble.seeds: {len(spec.seeds)} seeds make {members} runs of {samples_per_run:.3g} samples, "
+            f"an estimated {members * samples_per_run:.3g} samples, more than the limit "
+            f"{MAX_SAMPLES_PER_STUDY:.3g} "
+            "(the pipeline's cost guard for a study); fewer seeds, or allow_expensive: true"
+        )
 
 
 def _finish(ds: xr.Dataset, attrs: dict, output) -> xr.Dataset:
@@ -252,35 +616,73 @@ def _finish(ds: xr.Dataset, attrs: dict, output) -> xr.Dataset:
     return ds
 
 
-def fe_scene_name(fe_cfg: Mapping, scene: str, speed: float | None = None) -> str:
-    """A scene of ``fe.scenes`` by its name, or by its stem and a surface speed [mm/s]: ``section9_kinematic``
-    with speed 0.5 is ``section9_kinematic_0p5mm_s``."""
-    scenes = fe_cfg.get("scenes", {})
-    if scene in scenes:
-        return scene
-    if speed is not None:
-        name = f"{scene}_{speed:g}mm_s".replace(".", "p")
-        if name in scenes:
-            return name
+def _speed_suffix(value: float, unit: str) -> str:
+    return f"{value:g}{unit}".replace(".", "p").replace("+", "")
+
+
+def _stem(scene: str) -> str:
+    return scene.rsplit("_", 2)[0] if scene.endswith("mm_s") else scene.rsplit("_", 1)[0]
+
+
+def fe_scene_name(
+    fe_cfg: Mapping, scene: str, speed: float | None = None, rpm: float | None = None
+) -> tuple[str, dict | None]:
+    """(name, entry) of the scene to run: a scene of ``fe.scenes`` by its name, or by its stem and a disc
+    speed, ``speed`` (surface speed [mm/s]) or ``rpm`` [rev/min]. A configured speed is that scene
+    (``section9_kinematic`` with speed 0.5 is ``section9_kinematic_0p5mm_s``, entry None); any other speed
+    is a new scene (entry: the stem's scene with its disc speed replaced), named as the config names them
+    (``section9_kinematic_2mm_s``, ``section9_kinematic_30rpm``)."""
+    import math
+
     from .pipeline.config import ConfigError
 
-    stems = sorted({s.rsplit("_", 2)[0] if s.endswith("mm_s") else s.rsplit("_", 1)[0] for s in scenes})
-    raise ConfigError(
-        f"fe.scenes.{scene}: no such scene (scenes: {sorted(scenes)}; or a stem {stems} with --speed "
-        "matching a scene's mm/s suffix)"
-    )
+    scenes = fe_cfg.get("scenes", {})
+    given = [(k, v) for k, v in (("speed", speed), ("rpm", rpm)) if v is not None]
+    if len(given) > 1:
+        raise ConfigError("speed: give --speed (mm/s) or --rpm (rev/min), not both")
+    for key, value in given:
+        number = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if not number or not math.isfinite(value) or value <= 0:
+            what = "surface speed [mm/s]" if key == "speed" else "disc speed [rev/min]"
+            raise ConfigError(f"{key}: the {what} must be a finite number > 0, got {value!r}")
+    if scene in scenes and not given:
+        return scene, None
+    stem = scene if scene not in scenes else _stem(scene)
+    family = sorted(s for s in scenes if _stem(s) == stem)
+    if not family:
+        raise ConfigError(
+            f"fe.scenes.{scene}: no such scene (scenes: {sorted(scenes)}; or a stem "
+            f"{sorted({_stem(s) for s in scenes})} with --speed MM_S or --rpm N for any disc speed)"
+        )
+    if not given:
+        raise ConfigError(
+            f"fe.scenes.{scene}: a stem, not a scene: add --speed MM_S or --rpm N (configured: {family})"
+        )
+    key, value = given[0]
+    disc_key, unit = ("surface_speed_mm_s", "mm_s") if key == "speed" else ("speed_rev_per_min", "rpm")
+    name = f"{stem}_{_speed_suffix(value, unit)}"
+    if name in scenes:
+        return name, None
+    base = next((s for s in family if disc_key in ((scenes[s] or {}).get("disc") or {})), family[0])
+    entry = copy.deepcopy(scenes[base] or {})
+    speeds = ("speed_rev_per_min", "surface_speed_mm_s")
+    disc = {k: v for k, v in (entry.get("disc") or {}).items() if k not in speeds}
+    entry["disc"] = {**disc, disc_key: float(value)}
+    return name, entry
 
 
 def simulate_fe(
     scene: str,
     *,
     speed: float | None = None,
+    rpm: float | None = None,
     reading: str | None = None,
     model: str = "beam",
     t_end: float | None = None,
     ensemble: bool = True,
     progress: Callable[[str], Callable[[int, int], None]] | None = None,
     output: str | Path | None = None,
+    force: bool = False,
     friction_table: str | Path | None = None,
     configfiles: Sequence[str | Path] = (),
     root: str | Path | None = None,
@@ -289,14 +691,19 @@ def simulate_fe(
     geometry reading), as rule ``fe_reading`` computes it: with ``model="beam"`` and ``ensemble`` the
     perturbation ensemble and the step-halving check, so ``output`` equals the pipeline's
     ``results/fe/<reading>/<scene>.nc`` for the same config. ``model="continuum"`` runs the continuum strip
-    of the model comparison (``fe.comparison.mesh``) on the scene instead. ``t_end`` [s] overrides the
+    of the model comparison (``fe.comparison.mesh``) on the scene instead.
+
+    ``scene`` is a scene name, or a stem (``section9_kinematic``) with a disc speed: ``speed`` the surface
+    speed [mm/s] or ``rpm`` the disc's rev/min, any value > 0 (a speed the config has is its scene; any
+    other runs the stem's scene at that speed, ``section9_kinematic_2mm_s``). ``t_end`` [s] overrides the
     scene's window; ``progress(label)`` returns a ``(done, total)`` callback per run (time steps). The
-    friction law is the Fig. 17 table (``fe.friction_table``, written by rule friction_table)."""
+    friction law is the Fig. 17 table (``fe.friction_table``, written by rule friction_table; computed as
+    that rule computes it when no build has written it yet). ``output`` is checked before any work as in
+    ``simulate``; the pipeline's cost guard bounds the run (samples, element-increments) and the ensemble."""
     from dataclasses import replace
 
     from . import catalogue as paths
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
-    from .fe.params import FrictionTable
     from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError
@@ -304,17 +711,38 @@ def simulate_fe(
     from .studies.fe_continuum import continuum_dataset
     from .studies.fe_scene import scene_dataset
 
-    config = load_project_config(configfiles, root)
-    name = fe_scene_name(config["fe"], scene, speed)
+    base_root = project_root(root)
+    config = load_project_config(configfiles, base_root)
+    output = check_output(output, base_root, force=force, config=config)
     if model not in ("beam", "continuum"):
         raise ConfigError(f"model: {model!r} is not one of ['beam', 'continuum']")
     if t_end is not None:
+        import math
+
+        if (
+            isinstance(t_end, bool)
+            or not isinstance(t_end, (int, float))
+            or not math.isfinite(t_end)
+            or t_end <= 0
+        ):
+            raise ConfigError(f"t_end: the simulated window [s] must be a finite number > 0, got {t_end!r}")
+    name, entry = fe_scene_name(config["fe"], scene, speed, rpm)
+    if entry is not None or t_end is not None:
         config = copy.deepcopy(config)
+    if entry is not None:
+        config["fe"]["scenes"][name] = entry
+    if t_end is not None:
         config["fe"]["scenes"][name] = {**config["fe"]["scenes"][name]}
         solver = dict(config["fe"]["scenes"][name].get("solver") or {})
         config["fe"]["scenes"][name]["solver"] = {**solver, "t_end": t_end}
         config.setdefault("fe", {})["control_readings_t_end"] = t_end  # the window of every reading
-    _validated(config)
+    try:
+        _validated(config)
+    except ConfigError as exc:
+        costly = ("samples over solver.t_end", "element-increments")
+        if t_end is not None and any(c in str(exc) for c in costly):  # the guard met your window
+            raise ConfigError(f"t_end: {t_end!r} s is beyond the pipeline's cost guard: {exc}") from None
+        raise
     cfg = effective_fe_config(config)
     readings = list(cfg.get("readings") or {})
     reading = reading or (readings[0] if readings else None)
@@ -322,13 +750,12 @@ def simulate_fe(
         mapping = scene_mapping(cfg, name, reading)
     except ValueError as exc:
         raise ConfigError(f"fe.{exc}") from None
-    table = Path(friction_table or project_root(root) / cfg["friction_table"])
-    if not table.is_file():
-        raise FileNotFoundError(
-            f"fe.friction_table: {table} does not exist; build it first: "
-            f"`.venv/bin/snakemake -j2 {paths.friction_table()}`"
-        )
-    friction = FrictionTable.from_csv(table)
+    spec = None
+    if ensemble and model == "beam":
+        spec = EnsembleSpec.from_mapping(config.get("ensemble")).without_blas()
+        spec = replace(spec, step_factor=HALF_STEP)
+        _check_fe_ensemble_cost(config, mapping, spec)
+    friction = _fe_friction_table(config, cfg, base_root, friction_table)
     if model == "continuum":
         nx, ny = cfg["comparison"]["mesh"]
         ds = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
@@ -340,16 +767,42 @@ def simulate_fe(
         label = f"{name} run {next(counter)}"
         return scene_dataset(mp, friction, name, progress=progress(label) if progress else None)
 
-    spec = None
-    if ensemble:
-        spec = EnsembleSpec.from_mapping(config.get("ensemble")).without_blas()
-        spec = replace(spec, step_factor=HALF_STEP)
     # signs drawn by name: the scene's dataset path as rule fe_reading writes it
-    ds = ensemble_dataset(
-        build, mapping, spec, run_id=paths.fe_scene(reading, name), fields=PERTURBED_FIELDS
-    )
+    ds = ensemble_dataset(build, mapping, spec, run_id=paths.fe_scene(reading, name), fields=PERTURBED_FIELDS)
     if ensemble:
         ds = apply_step_halving(ds, step_member_values(ds))
     ds.attrs["fe_reading"] = reading
     attrs = {"scene": mapping, "interpretation": INTERPRETATION, "method": {"fe_reading": reading}}
     return _finish(ds, attrs, output)
+
+
+def _check_fe_ensemble_cost(config: dict, mapping: Mapping, spec) -> None:
+    """``check_ensemble_cost`` of an FE scene's ensemble (samples per run: t_end / output_dt)."""
+    solver = mapping.get("solver") or {}
+    samples = (
+        solver["t_end"] / solver["output_dt"] + 1 if solver.get("t_end") and solver.get("output_dt") else 0
+    )
+    check_ensemble_cost(spec, samples, config)
+
+
+def _fe_friction_table(config: dict, cfg: Mapping, root: Path, given):
+    """The FE friction law: ``given``, else ``fe.friction_table`` of the project; the pipeline's own table
+    (rule friction_table's output) computed here as that rule computes it when no build has written it."""
+    import tempfile
+
+    from . import catalogue as paths
+    from .fe.params import FrictionTable
+
+    table = Path(given) if given is not None else root / cfg["friction_table"]
+    if table.is_file():
+        return FrictionTable.from_csv(table)
+    if given is not None or cfg["friction_table"] != paths.friction_table():
+        raise FileNotFoundError(f"fe.friction_table: {table} does not exist")
+    from .studies.onedof import friction_table_from_config
+
+    ds = friction_table_from_config(config, table=config["onedof"]["friction_table"])
+    with tempfile.TemporaryDirectory() as tmp:  # the rule's CSV format, so the values are the rule's
+        csv = Path(tmp) / "friction_mu_vr.csv"
+        rows = zip(ds.relative_speed.values, ds.mu.values, strict=True)
+        csv.write_text("relative_velocity_mm_per_s,mu\n" + "".join(f"{v:.10g},{m:.10g}\n" for v, m in rows))
+        return FrictionTable.from_csv(csv)

@@ -1,14 +1,21 @@
 """The ``stickslip`` console command: your own scenario, a figure's claims, a dataset's summary.
 
     stickslip run --mu-s 0.6 --damping 1.0            one 1-DOF run against the baseline and the paper
+    stickslip run --scene fig06 --json                 a figure's scene, its metrics as JSON
     stickslip run --law stribeck mu_k=0.3 v_s=0.5      any friction law (switch solver)
-    stickslip fe --scene section9_kinematic --speed 0.5 --t-end 0.1 -o s9.nc
+    stickslip laws                                     the friction laws: parameters, formulas, units
+    stickslip fe --scene section9_kinematic --speed 2 --t-end 0.1 -o s9.nc
     stickslip claims --figure 2                        the figure's claims, verdict and reasons
     stickslip show results/onedof/fig02/consistent_caption/exact.nc
 
-Options are checked as config keys (the typed models of ``stickslip.pipeline.config_models``): a bad value
-is reported with the option and the config key it sets. ``-o`` writes the dataset the pipeline would write
-(``stickslip.api``), ``--plot`` the pipeline's figure of it.
+Runs from any folder: project paths (config, claims, the friction table, results) are the project's the
+package belongs to, or --root's; paths you give (-o, --plot, --json, --csv, show FILE) are yours, relative to
+the working directory. Options are checked as config keys (the typed models of
+``stickslip.pipeline.config_models``): a bad value is reported with the option and the config key it sets,
+before any work, as are output paths (never the pipeline's results folder) and the run's cost (the
+pipeline's cost guard). ``-o`` writes the dataset the pipeline would write (``stickslip.api``), ``--plot`` the
+pipeline's figure of it. Exit status: 0 an answer (a diverging model is one), 1 a numerical failure or a
+damaged dataset, 2 bad input.
 """
 
 from __future__ import annotations
@@ -39,8 +46,36 @@ RUN_LENGTHS = {
     "output_dt": "sample spacing [s]",
     "transient": "discarded start [s]",
 }
-#: The paper's metrics ``stickslip run`` prints (dataset variables).
-METRICS = ("amplitude_peak_to_peak", "amplitude_peak_to_zero", "frequency_peaks", "stick_time", "slip_time")
+#: The paper's metrics ``stickslip run`` prints (dataset variables), each with its definition: the table's
+#: footnotes and ``stickslip run --help`` print these, so no number is shown undefined.
+DEFINITIONS = {
+    "amplitude_peak_to_peak": "max x - min x over the steady window (t >= transient): the swing of the "
+    "displacement x [mm] from its lowest to its highest point",
+    "amplitude_peak_to_zero": "max |x| over the steady window: the largest excursion from x = 0, where the "
+    "spring is unstretched. An oscillation about an offset centre has peak-to-zero above half its "
+    "peak-to-peak, and above the whole peak-to-peak when it never crosses x = 0",
+    "frequency_peaks": "1 / (mean spacing of the displacement maxima) in the steady window [Hz], as the "
+    "paper counts peaks",
+    "stick_time": "mean duration of the complete stick intervals (mass moving with the belt, v_r = 0) in "
+    "the steady window [s]",
+    "slip_time": "mean duration of the complete slip intervals (v_r != 0) in the steady window [s]",
+    "first_stick_time": "duration of the first stick interval from t = 0 [s]: defined even for a run that "
+    "later diverges",
+}
+METRICS = tuple(DEFINITIONS)
+#: Config keys of the API's own arguments -> the option that sets them.
+OPTION_OF_KEY = {
+    "root": "--root",
+    "output": "-o/--output",
+    "speed": "--speed",
+    "rpm": "--rpm",
+    "t_end": "--t-end",
+    "model": "--model",
+    "plot": "--plot",
+    "json": "--json",
+    "csv": "--csv",
+    "ensemble.seeds": "--ensemble (ensemble.seeds)",
+}
 
 
 class UsageError(Exception):
@@ -56,6 +91,10 @@ def _as_option(message: str) -> str:
     for line in message.splitlines():
         key = line.split(":", 1)[0]
         last = key.rsplit(".", 1)[-1]
+        if key in OPTION_OF_KEY:
+            return f"{OPTION_OF_KEY[key]}: {line.split(':', 1)[1].strip()}"
+        if key.startswith("onedof.scenes.") and key.endswith(".law derivative"):
+            return f"law_derivative ({key}): {line.split(':', 1)[1].strip()}"
         if key in ("scene", "reading", "method", "model") or key.startswith("fe.scenes."):
             option = "--scene" if key.startswith("fe.") else _option(key)
             return (
@@ -96,11 +135,19 @@ def _common(parser: argparse.ArgumentParser) -> None:
         metavar="FILE",
         help="config overlay over config/*.yaml (as snakemake --configfile); repeatable",
     )
-    parser.add_argument("--root", type=Path, help="project folder (default: the checkout, or the cwd)")
     parser.add_argument(
-        "-o", "--output", type=Path, help="write the dataset (netCDF) the pipeline would write"
+        "--root", type=Path, help="project folder (default: the checkout the package belongs to, or the cwd)"
+    )
+    parser.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        help="write the dataset (netCDF) the pipeline would write; never into the pipeline's results folder",
     )
     parser.add_argument("--plot", type=Path, help="draw the pipeline's figure of the run to this PNG")
+    parser.add_argument(
+        "--force", action="store_true", help="overwrite an existing -o/--plot file (never one under results/)"
+    )
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -112,8 +159,15 @@ def build_parser() -> argparse.ArgumentParser:
     run = sub.add_parser(
         "run",
         help="one 1-DOF run: the paper's metrics against the baseline and the paper",
-        description="One 1-DOF run (mass on a moving belt): amplitude, frequency, stick and slip time next "
-        "to the baseline's and the paper's reported values. Parameters not given are the scene's.",
+        description="One 1-DOF run (mass on a moving belt): first its outcome (stick-slip, no stick, rest, "
+        "diverged with the mechanism, or a numerical failure), then amplitude, frequency, stick and slip "
+        "time "
+        "next to the baseline's and the paper's values for the scene's figure (--scene figNN: that figure's "
+        "claims). Parameters not given are the scene's. Exit 0 for an answer (a diverging model is one), 1 "
+        "for a numerical failure, 2 for bad input.",
+        epilog="metrics (dataset variables):\n"
+        + "\n".join(f"  {name}: {text}" for name, text in DEFINITIONS.items()),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     run.add_argument("--scene", help="base scene (onedof.scenes; default: the baseline's)")
     run.add_argument("--reading", help="reading of the paper's friction (onedof.readings)")
@@ -131,6 +185,21 @@ def build_parser() -> argparse.ArgumentParser:
         "its parameters (mu_s defaults to the run's), e.g. --law stribeck mu_k=0.3 v_s=0.5",
     )
     run.add_argument("--ensemble", action="store_true", help="add the config's perturbation ensemble")
+    run.add_argument(
+        "--json",
+        nargs="?",
+        const="-",
+        metavar="FILE",
+        help="write the outcome and metrics as JSON to FILE (no FILE: to stdout, instead of the table)",
+    )
+    run.add_argument(
+        "--csv",
+        nargs="?",
+        const="-",
+        metavar="FILE",
+        help="write the metrics as CSV (metric,value,units,baseline,paper,claims,definition) to FILE or "
+        "stdout",
+    )
     _common(run)
 
     fe = sub.add_parser(
@@ -139,8 +208,15 @@ def build_parser() -> argparse.ArgumentParser:
         description="One beam-on-disc scene as rule fe_reading computes it (perturbation ensemble and "
         "step-halving check included unless --no-ensemble).",
     )
-    fe.add_argument("--scene", required=True, help="fe.scenes name, or its stem with --speed")
-    fe.add_argument("--speed", type=float, help="disc surface speed [mm/s] picking the scene (0.5: _0p5mm_s)")
+    fe.add_argument("--scene", required=True, help="fe.scenes name, or its stem with --speed or --rpm")
+    fe.add_argument(
+        "--speed",
+        type=float,
+        metavar="MM_S",
+        help="disc surface speed [mm/s], any value > 0 (0.5 is the configured _0p5mm_s scene; another "
+        "runs the stem's scene at that speed)",
+    )
+    fe.add_argument("--rpm", type=float, metavar="N", help="disc speed [rev/min] instead of --speed")
     fe.add_argument("--reading", help="FE reading (fe.readings; default: the first)")
     fe.add_argument("--model", choices=["beam", "continuum"], default="beam", help="FE model (default beam)")
     fe.add_argument("--t-end", dest="t_end", type=float, metavar="S", help="simulated window [s]")
@@ -156,8 +232,28 @@ def build_parser() -> argparse.ArgumentParser:
     claims.add_argument("--reading", help="show this reading (default: the figure's best)")
     claims.add_argument("--root", type=Path, help="project folder")
 
-    show = sub.add_parser("show", help="readable summary of a result dataset")
-    show.add_argument("file", type=Path, help="a netCDF dataset the pipeline or this command wrote")
+    laws = sub.add_parser(
+        "laws",
+        help="the friction laws --law takes: parameters, formulas, units",
+        description="Every kind of stickslip.model.laws: its formula, its parameters with units and "
+        "defaults. From Python, simulate(law=...) also takes any callable mu(v_r) (law_derivative= its "
+        "derivative) or FrictionLaw subclass, checked as the built-in laws are.",
+    )
+    laws.add_argument("--json", action="store_true", help="print the list as JSON")
+
+    show = sub.add_parser(
+        "show",
+        help="readable summary of a result dataset",
+        description="Title, provenance, scalar results with units, arrays and the checksum state of a "
+        "dataset. Exit 0: checksum ok; 1: the content no longer matches its checksum; 2: not a dataset.",
+    )
+    show.add_argument(
+        "file",
+        type=Path,
+        help="a netCDF dataset the pipeline or this command wrote (a path not found here is looked up in "
+        "the project folder, so results/... works from anywhere)",
+    )
+    show.add_argument("--root", type=Path, help="project folder for a results/... path")
     return parser
 
 
@@ -166,7 +262,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _fmt(value, unit: str = "") -> str:
     if value is None:
-        return "-"
+        return "n/a"
     if isinstance(value, str):
         return value
     if value != value:
@@ -210,9 +306,126 @@ def paper_values(config: dict, root: Path, scene: str | None = None) -> dict[str
     return out
 
 
+def _outputs(args, root: Path, config: dict, keys=("output", "plot", "json", "csv")) -> None:
+    """Every file the command will write, checked before any work (api.check_output)."""
+    from . import api
+
+    seen = set()
+    for key in keys:
+        value = getattr(args, key, None)
+        if value is None or str(value) == "-":
+            continue
+        path = Path(value).expanduser().resolve()
+        if path in seen:
+            raise UsageError(f"{OPTION_OF_KEY[key]}: {value} is also another option's output")
+        seen.add(path)
+        api.check_output(value, root, force=args.force, key=key, config=config)
+    to_stdout = [k for k in ("json", "csv") if getattr(args, k, None) == "-"]
+    if len(to_stdout) > 1:
+        raise UsageError("--json/--csv: only one of them can go to stdout; give the other a FILE")
+
+
+def _number(value):
+    """A JSON/CSV number: None for NaN or a missing value."""
+    return None if value is None or value != value else float(value)
+
+
+def run_report(ds, base: dict, where: str, paper: dict) -> dict:
+    """The run's outcome and metrics as data: what --json writes and the table prints."""
+    from .analysis.metrics import metric_attrs
+
+    mine = _metrics(ds)
+    outcome = ds["outcome"] if "outcome" in ds else None
+    return {
+        "title": ds.attrs.get("title", "").strip(),
+        "scene": ds.attrs.get("scene_name", ""),
+        "description": ds.attrs.get("scene_description", ""),
+        "reading": ds.attrs.get("interpretation_reading", ""),
+        "method": ds.attrs.get("method_name", ""),
+        "status": ds.attrs.get("status", ""),
+        "success": int(ds.attrs.get("success", 0)),
+        "message": ds.attrs.get("message", ""),
+        "outcome": ds.attrs.get("message", "").split(":", 1)[0]
+        if outcome is None
+        else _outcome_name(outcome),
+        "mechanism": "" if outcome is None else outcome.attrs.get("mechanism", ""),
+        "solver": ds.attrs.get("solver_message", ""),
+        "baseline_source": where,
+        "metrics": {
+            m: {
+                "value": _number(mine.get(m)),
+                "units": metric_attrs(m)["units"],
+                "baseline": _number(base.get(m)),
+                "paper": [{"value": v, "claim": cid} for v, cid in paper.get(m, [])],
+                "definition": DEFINITIONS[m],
+            }
+            for m in METRICS
+        },
+    }
+
+
+def _outcome_name(var) -> str:
+    meanings = str(var.attrs.get("flag_meanings", "")).split()
+    code = int(var.values)
+    return meanings[code] if 0 <= code < len(meanings) else str(code)
+
+
+def _write_text(target: str, text: str) -> None:
+    if target == "-":
+        sys.stdout.write(text)
+    else:
+        Path(target).write_text(text)
+
+
+def _write_csv(report: dict, target: str) -> None:
+    import csv
+    import io
+
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["metric", "value", "units", "baseline", "paper", "claims", "definition"])
+    for name, m in report["metrics"].items():
+        writer.writerow(
+            [
+                name,
+                "" if m["value"] is None else repr(m["value"]),
+                m["units"],
+                "" if m["baseline"] is None else repr(m["baseline"]),
+                ";".join(repr(p["value"]) for p in m["paper"]),
+                ";".join(p["claim"] for p in m["paper"]),
+                m["definition"],
+            ]
+        )
+    _write_text(target, buf.getvalue())
+
+
+def print_run(report: dict, out=None) -> None:
+    """The outcome block first (the answer and why), then the metrics table, then what each metric is."""
+    out = out or sys.stdout
+    why = report["mechanism"] or report["message"]
+    print(f"outcome: {report['outcome'].replace('_', ' ')}: {why}", file=out)
+    print(f"{report['title']}", file=out)
+    print(f"  {report['description']}; solver: {report['solver']}", file=out)
+    rows = [("metric", "this run", f"baseline ({report['baseline_source']})", "paper (claim)")]
+    for name, m in report["metrics"].items():
+        unit = m["units"]
+        reported = "; ".join(f"{_fmt(p['value'], unit)} ({p['claim']})" for p in m["paper"]) or "-"
+        rows.append((name, _fmt(m["value"], unit), _fmt(m["baseline"], unit), reported))
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    for row in rows:
+        print("  " + "  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip(), file=out)
+    if any(m["value"] is None for m in report["metrics"].values()):
+        print(
+            f"  n/a: not defined by this run, whose outcome is {report['outcome'].replace('_', ' ')}",
+            file=out,
+        )
+    print("  metrics (steady window: t >= the scene's transient):", file=out)
+    for name, text in DEFINITIONS.items():
+        print(f"    {name}: {text}", file=out)
+
+
 def cmd_run(args) -> int:
     from . import api
-    from .pipeline.config import ConfigError
 
     started = time.perf_counter()
     params = {k: getattr(args, k) for k in PARAMS if getattr(args, k) is not None}
@@ -220,51 +433,50 @@ def cmd_run(args) -> int:
         params["units"] = args.units
     run = {k: getattr(args, k) for k in RUN_LENGTHS if getattr(args, k) is not None}
     law = _law(args.law)
-    try:
-        root = api.project_root(args.root)
-        config = api.load_project_config(args.configfile, root)
-        ds = api.simulate(
-            args.scene,
-            reading=args.reading,
-            method=args.method,
-            law=law,
-            ensemble=args.ensemble,
-            output=args.output,
-            root=root,
-            config=config,
-            **run,
-            **params,
-        )
-        reading = args.reading or config["onedof"]["baseline"]["reading"]
-        base, where = baseline_metrics(config, reading, root)
-    except ConfigError as exc:
-        raise UsageError(_as_option(str(exc))) from None
-    from .analysis.metrics import metric_attrs
-
+    root = api.project_root(args.root)
+    config = api.load_project_config(args.configfile, root)
+    _outputs(args, root, config)
+    ds = api.simulate(
+        args.scene,
+        reading=args.reading,
+        method=args.method,
+        law=law,
+        ensemble=args.ensemble,
+        output=args.output,
+        force=args.force,
+        root=root,
+        config=config,
+        **run,
+        **params,
+    )
+    reading = args.reading or config["onedof"]["baseline"]["reading"]
+    base, where = baseline_metrics(config, reading, root)
     paper = paper_values(config, root, args.scene)
-    print(f"outcome: {ds.attrs.get('status', '?')} - {ds.attrs.get('message', '')}")
-    print(f"{ds.attrs.get('title', '').strip()}")
-    print(f"  {ds.attrs.get('scene_description', '')}; solver: {ds.attrs.get('solver_message', '')}")
-    rows = [("metric", "this run", f"baseline ({where})", "paper (claim)")]
-    for m in METRICS:
-        unit = metric_attrs(m)["units"]
-        mine = _metrics(ds).get(m)
-        reported = "; ".join(f"{_fmt(v, unit)} ({cid})" for v, cid in paper.get(m, [])) or "-"
-        rows.append((m, _fmt(mine, unit), _fmt(base.get(m), unit), reported))
-    widths = [max(len(r[i]) for r in rows) for i in range(4)]
-    for row in rows:
-        print("  " + "  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
-    if int(ds.solver_status) != 0 or not _metrics(ds):
-        print(f"  no limit-cycle metrics (n/a): the run's outcome is {ds.attrs.get('message', 'unknown')}")
+    report = run_report(ds, base, where, paper)
+    report["reading"] = reading
+    quiet = "-" in (args.json, args.csv)  # stdout is the data: the text goes to stderr
+    text_out = sys.stderr if quiet else sys.stdout
+    print_run(report, text_out)
     if args.output:
-        print(f"wrote {args.output}")
+        report["output"] = str(args.output)
+        print(f"wrote {args.output}", file=text_out)
     if args.plot:
-        _plot_onedof(ds, config, args, reading)
-    print(f"({time.perf_counter() - started:.1f} s)")
-    return 0 if ds.attrs.get("status") != "failed" else 1  # a divergence is an answer; a failure is not
+        _plot_onedof(ds, config, args, reading, text_out)
+    if args.json:
+        import json
+
+        _write_text(args.json, json.dumps(report, indent=1) + "\n")
+        if args.json != "-":
+            print(f"wrote {args.json}", file=text_out)
+    if args.csv:
+        _write_csv(report, args.csv)
+        if args.csv != "-":
+            print(f"wrote {args.csv}", file=text_out)
+    print(f"({time.perf_counter() - started:.1f} s)", file=text_out)
+    return 0 if report["status"] != "failed" else 1  # a divergence is an answer; a failure is not
 
 
-def _plot_onedof(ds, config: dict, args, reading: str) -> None:
+def _plot_onedof(ds, config: dict, args, reading: str, out=None) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -278,11 +490,15 @@ def _plot_onedof(ds, config: dict, args, reading: str) -> None:
         "timeseries",
     )
     method = ds.attrs.get("method_name", "")
-    spec = {"title": ds.attrs.get("title", ""), "scene": scene, "plot": kind, "readings": [reading]}
+    # the figure adds the reading under the title: the title names the run and its friction law, once each
+    law = ds.attrs.get("scene_friction_law")
+    friction = f", friction law {law}" if law else ""
+    title = f"{ds.attrs.get('scene_figure', '')} {scene}: method {method}{friction}".strip()
+    spec = {"title": title, "scene": scene, "plot": kind, "readings": [reading]}
     fig = onedof_figure({method: ds}, {**spec, "methods": [method]}, reading=reading)
     fig.savefig(args.plot, dpi=110)
     plt.close(fig)
-    print(f"wrote {args.plot}")
+    print(f"wrote {args.plot}", file=out or sys.stdout)
 
 
 # -- fe --------------------------------------------------------------------------------------------------
@@ -291,29 +507,30 @@ def _plot_onedof(ds, config: dict, args, reading: str) -> None:
 def cmd_fe(args) -> int:
     from . import api
     from .io.progress import step_callback
-    from .pipeline.config import ConfigError
 
     started = time.perf_counter()
 
     def progress(label):
         return step_callback(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
 
+    root = api.project_root(args.root)
+    config = api.load_project_config(args.configfile, root)
+    _outputs(args, root, config, keys=("output", "plot"))
     print(f"running {args.scene} ({args.model}); progress every 2 s on stderr", file=sys.stderr, flush=True)
-    try:
-        ds = api.simulate_fe(
-            args.scene,
-            speed=args.speed,
-            reading=args.reading,
-            model=args.model,
-            t_end=args.t_end,
-            ensemble=args.ensemble,
-            progress=progress,
-            output=args.output,
-            configfiles=args.configfile,
-            root=args.root,
-        )
-    except ConfigError as exc:
-        raise UsageError(_as_option(str(exc))) from None
+    ds = api.simulate_fe(
+        args.scene,
+        speed=args.speed,
+        rpm=args.rpm,
+        reading=args.reading,
+        model=args.model,
+        t_end=args.t_end,
+        ensemble=args.ensemble,
+        progress=progress,
+        output=args.output,
+        force=args.force,
+        configfiles=args.configfile,
+        root=root,
+    )
     summary(ds)
     if args.output:
         print(f"wrote {args.output}")
@@ -329,7 +546,83 @@ def cmd_fe(args) -> int:
     return 0
 
 
+# -- laws ------------------------------------------------------------------------------------------------
+
+#: Units and meaning of every law parameter (``stickslip.model.laws``).
+LAW_PARAMETERS = {
+    "mu_s": ("1", "static friction coefficient: the largest |F|/N in stick (default: the run's mu_s)"),
+    "mu_k": ("1", "kinetic coefficient: the slip limit at high relative speed"),
+    "sigma": ("s/mm", "slope of the affine law"),
+    "plateau_speed": ("mm/s", "relative speed beyond which the affine law stays constant (default: none)"),
+    "v_s": ("mm/s", "Stribeck speed: mu falls by 1/e of mu_s - mu_k over it"),
+    "delta": ("s/mm", "rate of the rational fall"),
+    "path": ("file", "CSV (relative_speed [mm/s], mu; one header line) or netCDF (mu over relative_speed)"),
+    "static_mu": ("1", "static limit of a table (default: its first row)"),
+}
+
+
+def law_kinds() -> list[dict]:
+    """Every law kind: formula, parameters (units, meaning, required or default)."""
+    import dataclasses
+
+    from .model.laws import _LAW_KEYS, LAW_KINDS
+
+    out = []
+    for kind, cls in LAW_KINDS.items():
+        doc = (cls.__doc__ or "").strip().split("\n\n")[0].replace("\n", " ")
+        defaults = {
+            f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING
+        }
+        params = []
+        for name in sorted(_LAW_KEYS[kind], key=lambda k: list(LAW_PARAMETERS).index(k)):
+            units, text = LAW_PARAMETERS[name]
+            if name in defaults:
+                default = defaults[name]
+                required = "optional" if default is None else f"default {default}"
+            else:
+                required = "optional" if name in ("mu_s", "static_mu") else "required"
+            params.append({"name": name, "units": units, "meaning": text, "required": required})
+        out.append({"kind": kind, "formula": doc, "parameters": params})
+    out.append(
+        {
+            "kind": "callable (Python only)",
+            "formula": "simulate(law=mu) with mu(v_r) -> float of the relative speed |v_r| >= 0 [mm/s]; "
+            "law_derivative=dmu optional; static limit mu(0)",
+            "parameters": [],
+        }
+    )
+    return out
+
+
+def cmd_laws(args) -> int:
+    kinds = law_kinds()
+    if args.json:
+        import json
+
+        print(json.dumps(kinds, indent=1))
+        return 0
+    print(
+        "Friction laws (--law KIND KEY=VALUE ...; slip force F = -N mu(|v_r|) sgn(v_r), "
+        "|F| <= N mu_s in stick)"
+    )
+    for entry in kinds:
+        print(f"{entry['kind']}: {entry['formula']}")
+        for prm in entry["parameters"]:
+            print(f"    {prm['name']} [{prm['units']}] ({prm['required']}): {prm['meaning']}")
+    print("e.g. stickslip run --law stribeck mu_k=0.3 v_s=0.5 (the switch solver integrates every law)")
+    return 0
+
+
 # -- claims ----------------------------------------------------------------------------------------------
+
+
+def _rounded(text: str) -> str:
+    """A number of the claims table to 4 significant digits (the table keeps every digit); text as it is."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return text
+    return f"{value:.4g}" if value == value else "n/a"
 
 
 def cmd_claims(args) -> int:
@@ -363,8 +656,9 @@ def cmd_claims(args) -> int:
     for r in sorted(shown, key=lambda r: (not is_evidence(r), r["claim"])):
         apart = "" if is_evidence(r) else f"  [{r['evidence'].replace('_', ' ')}: not counted]"
         print(
-            f"- {r['claim']}: {r['status']}{apart}  reported {r['reported']} {r['unit']}, "
-            f"measured {r['measured']}"
+            f"- {r['claim']}: {r['status']}{apart}  reported {_rounded(r['reported'])}"
+            f"{' ' + r['unit'] if r['unit'] else ''}, "
+            f"measured {_rounded(r['measured'])}"
         )
         print(f'    "{r["quote"]}"')
         if r["reason"]:
@@ -388,25 +682,37 @@ def summary(ds, checksum: str = "") -> None:
 
 
 def cmd_show(args) -> int:
-    from .presentation.show import show_text
+    from . import api
+    from .presentation.show import show_state
 
-    if not args.file.is_file():
-        raise UsageError(f"FILE: {args.file} does not exist")
-    print(show_text(args.file))
-    return 0
+    path = args.file
+    if not path.exists() and not path.is_absolute():  # results/... as the docs show it, from anywhere
+        in_project = api.project_root(args.root) / path
+        path = in_project if in_project.exists() else path
+    if not path.is_file():
+        raise UsageError(f"FILE: {args.file} does not exist" + (" or is not a file" if path.exists() else ""))
+    text, state = show_state(path)
+    if state == "unreadable":
+        raise UsageError(f"FILE: {text}")
+    print(text)
+    return 0 if state == "ok" else 1
 
 
-COMMANDS = {"run": cmd_run, "fe": cmd_fe, "claims": cmd_claims, "show": cmd_show}
+COMMANDS = {"run": cmd_run, "fe": cmd_fe, "laws": cmd_laws, "claims": cmd_claims, "show": cmd_show}
 
 
 def main(argv: list[str] | None = None) -> int:
     from .claims.load import ClaimsError  # a damaged claims file is the user's input: a message, no traceback
+    from .io.yaml_files import YamlFileError
+    from .pipeline.config import ConfigError
 
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
         return COMMANDS[args.command](args)
-    except (UsageError, FileNotFoundError, ClaimsError) as exc:
+    except ConfigError as exc:
+        parser.exit(2, f"stickslip {args.command}: error: {_as_option(str(exc))}\n")
+    except (UsageError, FileNotFoundError, ClaimsError, YamlFileError) as exc:
         parser.exit(2, f"stickslip {args.command}: error: {exc}\n")
 
 

@@ -127,6 +127,10 @@ from .schema.validation import (  # noqa: F401  (re-exported: the models keep th
 #: sample, several arrays a run).
 MAX_SAMPLES_PER_RUN = 2_000_000
 MAX_SAMPLES_PER_STUDY = 500_000_000
+#: Perturbation-ensemble seeds a run may draw (each one more run of it): the default config draws 2; the
+#: limit sits 50x above, as the sample limits do. The command line and ``stickslip.api`` check it before
+#: any work (``api.check_ensemble_cost``).
+MAX_ENSEMBLE_SEEDS = 100
 #: Largest beam mesh (elements) or continuum mesh (cells) without ``allow_expensive`` (the paper: 100 x 1).
 MAX_FE_ELEMENTS = 20_000
 
