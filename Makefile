@@ -13,6 +13,10 @@ JOBS ?= 2
 # of wall time in a clean build of this DAG on 2 cores (docs/TIMING.md). The greedy one picks by priority
 # (longest jobs first, workflow/rules/common.smk), which is all a 2-core run needs.
 SNAKEMAKE = $(BIN)/snakemake --scheduler greedy
+# Every build goes through one wrapper (src/stickslip/pipeline/build.py): one build per folder ("another build
+# is running in this folder"), --rerun-incomplete after a killed build, and a result changed since its rule
+# wrote it (recorded size and checksum, checked by a stat) rebuilt with what reads it.
+BUILD = $(BIN)/python -m stickslip.pipeline.build
 export PATH := $(BIN):$(PATH)
 # uv resolves for every Python >= 3.11 at once (markers pick the right pins at install time).
 COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes
@@ -70,14 +74,13 @@ ccx:
 
 # --logger: one console line per finished job, with the time left (src/snakemake_logger_plugin_*)
 figures: $(STAMP) ccx
-	$(SNAKEMAKE) -j$(JOBS) --logger stickslip-progress
+	$(BUILD) $(SNAKEMAKE) -j$(JOBS) --logger stickslip-progress
 
-# Rebuild every dataset that no longer matches its content checksum (damaged, truncated, edited by another
-# program), then everything downstream of it: `python -m stickslip.io.netcdf verify` lists them.
+# `make figures`, and before it every dataset's own content checksum verified (all data read, not only the
+# recorded checksums): a damaged one is rebuilt with everything that depends on it (`python -m
+# stickslip.io.netcdf verify` lists them).
 repair: $(STAMP)
-	bad=$$($(BIN)/python -m stickslip.io.netcdf verify results); \
-	if [ -n "$$bad" ]; then echo "rebuilding:" $$bad; $(SNAKEMAKE) -j$(JOBS) --force $$bad || exit 1; fi
-	$(SNAKEMAKE) -j$(JOBS)
+	$(BUILD) --deep $(SNAKEMAKE) -j$(JOBS)
 
 # Both cores: pytest-xdist workers (they share one small pipeline build, tests/project_run.py).
 test: $(STAMP)
@@ -91,7 +94,7 @@ lint: $(STAMP)
 
 # Self-contained HTML report: every figure captioned with its paper figure and claim statuses.
 report: $(STAMP)
-	$(SNAKEMAKE) -j$(JOBS)
+	$(BUILD) $(SNAKEMAKE) -j$(JOBS)
 	$(SNAKEMAKE) --report results/report.html
 
 bench: $(STAMP)
@@ -116,7 +119,7 @@ help:
 	@echo "  lint        ruff, snakefmt --check, snakemake --lint"
 	@echo "  report      the pipeline, then results/report.html (every figure captioned)"
 	@echo "  bench       every benchmarks/bench_*.py"
-	@echo "  repair      rebuild every dataset whose content checksum fails, and what depends on it"
+	@echo "  repair      figures, after verifying every dataset's content checksum (reads all data)"
 	@echo "  lock        re-resolve the lock to the newest allowed versions"
 	@echo "  clean       remove results/ and .snakemake/"
 	@echo "  slurm-test  opt-in: a small chunked map through a local SLURM"

@@ -44,9 +44,11 @@ def snakemake_command(workdir: Path, *args) -> list[str]:
     ]
 
 
-def run_snakemake(workdir: Path, *args, check=True, timeout=1200):
+def run_snakemake(workdir: Path, *args, check=True, timeout=1200, hash_seed: int | None = None):
+    """Snakemake on the project copy in ``workdir`` (``hash_seed``: its and every job's PYTHONHASHSEED)."""
     cmd = snakemake_command(workdir, *args)
-    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    env = None if hash_seed is None else {**os.environ, "PYTHONHASHSEED": str(hash_seed)}
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env)
     if check and proc.returncode != 0:
         raise AssertionError(
             f"snakemake failed ({proc.returncode}):\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}"
@@ -68,6 +70,8 @@ def start_snakemake(workdir: Path, *args, log: Path):
 
 
 _SMALL_RUNS: dict[str, Path] = {}
+#: The hash seed of the shared small run (tests/test_determinism.py builds again under another).
+SHARED_RUN_HASH_SEED = 0
 
 
 def session_root(tmp_path_factory) -> Path:
@@ -86,7 +90,8 @@ def session_lock(tmp_path_factory, name: str):
 def shared_small_run(tmp_path_factory) -> Path:
     """One complete run of the small configuration per test session, shared by every module and every
     xdist worker that reads it: the first to ask builds it, the others wait for it under a file lock and
-    then only read it (dry runs, --summary, datasets)."""
+    then only read it (dry runs, --summary, datasets). Built under PYTHONHASHSEED 0 (the determinism test
+    builds again under 1)."""
     if "run" not in _SMALL_RUNS:
         work = session_root(tmp_path_factory) / "small_run"
         done = work.with_name("small_run.done")
@@ -94,7 +99,7 @@ def shared_small_run(tmp_path_factory) -> Path:
             if not done.exists():
                 shutil.rmtree(work, ignore_errors=True)
                 work.mkdir()
-                run_snakemake(copy_project(work), *small_config_args(work))
+                run_snakemake(copy_project(work), *small_config_args(work), hash_seed=SHARED_RUN_HASH_SEED)
                 done.touch()
         _SMALL_RUNS["run"] = work
     return _SMALL_RUNS["run"]

@@ -48,6 +48,14 @@ CASES = {
         {"fe": {"friction_table": "results/onedof/no_such_table.csv"}},
         ["fe.friction_table", "no_such_table.csv"],
     ),
+    "friction_table_not_a_table": (
+        {"fe": {"friction_table": "/etc/passwd"}},
+        ["fe.friction_table", "/etc/passwd", "relative_velocity_mm_per_s,mu"],
+    ),
+    "friction_table_speeds_not_increasing": (
+        {"fe": {"friction_table": str(ROOT / "tests" / "data" / "friction_table_not_monotone.csv")}},
+        ["fe.friction_table", "friction_table_not_monotone.csv", "line 4", "must increase"],
+    ),
     "fe_negative_modulus": (
         {"fe": {"defaults": {"beam": {"youngs_modulus_gpa": -210.0}}}},
         ["youngs_modulus_gpa"],
@@ -557,7 +565,7 @@ BAD_CLAIMS_IN_CONTEXT = {
 
 
 #: Cases also run through the real pipeline: one schema error, one resolver error, one cross-section error.
-END_TO_END = ("mass_negative", "ode45_negative_rtol", "missing_friction_table")
+END_TO_END = ("mass_negative", "ode45_negative_rtol", "missing_friction_table", "friction_table_not_a_table")
 
 
 def base_config() -> dict:

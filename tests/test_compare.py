@@ -17,7 +17,7 @@ def test_identical_folders_compare_clean_and_cpu_times_are_ignored(tmp_path, cap
         write(root, "onedof/s.nc", [1.0, np.nan, 3.0], cpu=cpu)
     assert compare_results(tmp_path / "a", tmp_path / "b") == ([], 1)
     assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 0
-    assert "1 datasets compared: identical" in capsys.readouterr().out
+    assert "1 files compared: identical" in capsys.readouterr().out
 
 
 def test_a_last_bit_change_a_missing_file_and_a_changed_claims_table_are_reported(tmp_path):
@@ -28,11 +28,11 @@ def test_a_last_bit_change_a_missing_file_and_a_changed_claims_table_are_reporte
         (root / "claims").mkdir()
         (root / "claims" / "deviations.csv").write_text(f"claim,status\nc1,{status}\n")
     lines, compared = compare_results(tmp_path / "a", tmp_path / "b")
-    assert compared == 2
+    assert compared == 3
     assert lines == [
         f"only in {tmp_path / 'a'}: fe/only_a.nc",
-        "onedof/s.nc: x: 1 values differ",
         "claims/deviations.csv: differs",
+        "onedof/s.nc: x: 1 values differ",
     ]
     assert main([str(tmp_path / "a"), str(tmp_path / "b")]) == 1
 
@@ -59,3 +59,27 @@ def test_a_member_added_by_a_change_is_left_out_on_request_and_any_other_change_
     with_members(tmp_path / "b", "onedof/s.nc", ["base", "seed0", "window"], [1.0, 1.2, 7.0])
     lines, _ = compare_results(tmp_path / "a", tmp_path / "b", ("window",))
     assert lines == ["onedof/s.nc: m_ensemble: 1 values differ"]
+
+
+def test_every_file_a_build_writes_is_compared_but_logs_benchmarks_and_temporaries(tmp_path):
+    """Tables, decks and pages are results too (a table ordered by the hash seed differed only there);
+    the jobs' logs, Snakemake's benchmark timings and hidden temporaries are not."""
+    for root, word in ((tmp_path / "a", "one"), (tmp_path / "b", "two")):
+        for name in (
+            "claims/unreproduced_claims.csv",
+            "fe/inp/deck.inp",
+            "page/index.html",
+            "logs/job.log",
+            "benchmarks/job.tsv",
+            "fe/.deck.inp.x.tmp",
+            "page/thumbs/.snakemake_timestamp",
+        ):
+            (root / name).parent.mkdir(parents=True, exist_ok=True)
+            (root / name).write_text(f"{name}: {word}\n")
+    lines, compared = compare_results(tmp_path / "a", tmp_path / "b")
+    assert compared == 3
+    assert lines == [
+        "claims/unreproduced_claims.csv: differs",
+        "fe/inp/deck.inp: differs",
+        "page/index.html: differs",
+    ]

@@ -70,6 +70,22 @@ def test_written_datasets_are_readable_like_any_new_file(baseline_dataset, tmp_p
     assert (path.stat().st_mode & 0o777) == (0o666 & ~mask)
 
 
+def test_text_results_get_the_same_mode_as_datasets(baseline_dataset, tmp_path):
+    """Decks and tables (write_text_atomic, write_csv_atomic) are published like datasets: one mode for every
+    result, not the owner-only mode of mkstemp."""
+    import os
+
+    from stickslip.io.text_files import write_csv_atomic, write_text_atomic
+
+    data = netcdf.write_dataset(baseline_dataset, tmp_path / "d.nc", scene={}, interpretation="", method={})
+    deck = write_text_atomic(tmp_path / "deck.inp", "*HEADING\n")
+    table = write_csv_atomic(tmp_path / "t.csv", [{"a": 1}])
+    modes = {p.name: p.stat().st_mode & 0o777 for p in (data, deck, table)}
+    mask = os.umask(0)
+    os.umask(mask)
+    assert modes == dict.fromkeys(modes, 0o666 & ~mask)
+
+
 def test_text_dimensions_are_written_as_index_plus_labels_and_read_back_labelled(tmp_path):
     """CF wants numeric dimension coordinates: a text dimension is written as an integer index with the
     labels in an auxiliary coordinate, and read_dataset gives the labelled dimension back."""

@@ -3,6 +3,7 @@ critical speed.
 """
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -109,6 +110,32 @@ def test_ranking_counts_and_unreproduced():
     assert [t["reading"] for t in table] == ["r1", "r2"]
     assert table[0]["reproduced"] == 1 and table[0]["deviates"] == 1
     assert [u["claim"] for u in unreproduced_claims(rows, ["r1", "r2"])] == ["b"]
+
+
+def test_the_reason_of_an_unreproduced_claim_does_not_depend_on_the_hash_seed():
+    """Two readings' reasons of the same length: the one shown is chosen by content, not by where the hash
+    seed puts it in a set (the table was different under PYTHONHASHSEED 0-3)."""
+    import json
+    import subprocess
+    import sys
+
+    code = (
+        "from stickslip.studies.ranking import unreproduced_claims as u; "
+        "rows = [dict(claim='c', reading=r, status='deviates', figure='F', reason=w, quote='q') "
+        "for r, w in (('r1', 'alpha'), ('r2', 'gamma'), ('r3', 'delta'), ('r4', 'omega'))]; "
+        "print(u(rows, ['r1', 'r2', 'r3', 'r4'])[0]['why'])"
+    )
+    shown = {
+        subprocess.run(
+            [sys.executable, "-c", code],
+            env={**os.environ, "PYTHONHASHSEED": str(seed)},
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout.strip()
+        for seed in range(6)
+    }
+    assert shown == {"omega"}, json.dumps(sorted(shown))
 
 
 def test_the_window_member_reuses_the_base_solve_and_equals_a_fresh_one(repo_root, monkeypatch):

@@ -89,6 +89,35 @@ def test_a_config_comment_and_a_rewrite_with_the_same_values_schedule_nothing(bu
 
 
 @pytest.mark.pipeline
+def test_reordered_keys_and_an_unrelated_scene_schedule_nothing(built_copy):
+    """A job depends on what its config says, not on the order of its keys (Snakemake compares params by
+    their repr) nor on a scene it does not read: before, reordering onedof.defaults.params re-ran 66 of 74
+    jobs and a new 1-DOF scene re-ran the inverse study."""
+    path = built_copy / "config" / "config.yaml"
+    text = path.read_text()
+    lines = text.splitlines(keepends=True)
+    start = lines.index("    params:\n", lines.index("  defaults:\n")) + 1
+    end = next(i for i in range(start, len(lines)) if not lines[i].startswith("      "))
+    assert end - start > 5, lines[start:end]
+    lines[start:end] = lines[start:end][::-1]
+    scenes = lines.index("  scenes:\n") + 1
+    lines[scenes:scenes] = ["    unrelated_probe:\n", "      params: {belt_velocity: 0.7}\n"]
+    path.write_text("".join(lines))
+    fe = built_copy / "config" / "fe.yaml"
+    fe_text = fe.read_text()
+    assert "  peer: {mesh: [100, 1], tolerance: 0.005}\n" in fe_text
+    fe.write_text(
+        fe_text.replace(
+            "  peer: {mesh: [100, 1], tolerance: 0.005}", "  peer: {tolerance: 0.005, mesh: [100, 1]}"
+        )
+    )
+    assert dry_run_reasons(built_copy) == {}
+    # the edit is seen: a changed value of the defaults re-runs the jobs that read it
+    path.write_text("".join(lines).replace("      x0: 0.0 ", "      x0: 0.001 ", 1))
+    assert "simulate_onedof_fig02" in dry_run_reasons(built_copy)
+
+
+@pytest.mark.pipeline
 def test_a_new_claims_row_reruns_the_claims_table_and_what_reads_it_only(built_copy):
     row = {**VALUE_ROW, "id": "zz_new_row"}  # a complete, valid row of the bad-input matrix
     (built_copy / "config" / "claims" / "zz_new.yaml").write_text(yaml.safe_dump([row]))

@@ -104,6 +104,20 @@ def rule_code_hash(rule):
     return code_hash([e for e in entries if e is not None], SRC)
 
 
+def catalogue_datasets(rules):
+    """Every catalogue dataset a rule names as an output (temporary outputs aside), for rule ``all``: a missing
+    dataset is then rebuilt by the default build, as make rebuilds a missing file. (Snakemake checks an
+    intermediate only when something downstream must re-run: a deleted dataset no rule-all input named
+    stayed gone.) The final products (pages, tables) are rule-all inputs where the config builds them. Outputs
+    of a rule with wildcards are left out: the catalogue lists every reading of a
+    sweep, the config builds a few; the build's record of what it wrote covers those (`make figures`,
+    stickslip.pipeline.build)."""
+    named = {
+        str(o) for rule in rules for o in rule.output if not o.flags.get("temp") and not o.contains_wildcard()
+    }
+    return [p for p in CATALOGUE if p in named and p.endswith(".nc")]
+
+
 def check_inputs_producible(rules):
     """Every dataset a claim reads and every file a notebook reads is an output of some rule. Snakemake would
     take an existing file whose producer is gone for a source file and never rebuild its consumers."""
@@ -132,6 +146,22 @@ def check_inputs_producible(rules):
                 raise ClaimsError(f"notebooks.{name}.inputs: no rule writes {path!r}")
 
 
+def canonical(value):
+    """A config value with every mapping's keys in sorted order (lists keep theirs: their order is meaning).
+
+    Snakemake compares a job's params by their repr, where a dict shows its keys in the order the YAML file
+    wrote them: a reordered key would re-run every job that reads it. The 1-DOF and map sections, the friction
+    table's and the FE peer's go through here (the FE sections are sorted by studies.fe_config.job_config),
+    so those jobs depend on what the config says, not on how it is laid out. Left as written: sections whose
+    order is meaning (the methods study's and validation's labels and law order, the inverse study's
+    hypotheses, each named by its first key)."""
+    if isinstance(value, dict):
+        return {key: canonical(value[key]) for key in sorted(value, key=str)}
+    if isinstance(value, (list, tuple)):
+        return [canonical(item) for item in value]
+    return value
+
+
 def _names(value):
     return None if value is None else [value] if isinstance(value, str) else sorted(set(value))
 
@@ -146,7 +176,7 @@ def onedof_subconfig(readings=None, scenes=None, methods=None, study=None):
         sub[key] = ONEDOF[key] if names is None else {n: ONEDOF[key][n] for n in names}
     if study is not None:
         sub[study] = ONEDOF[study]
-    return {"onedof": sub}
+    return canonical({"onedof": sub})
 
 
 def onedof_runs():
@@ -238,4 +268,4 @@ def dense_map_subconfig(name):
     cfg = config["dense_map"]["maps"][name]
     sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
     section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
-    return {**sub, "dense_map": {**section, "maps": {name: cfg}}}
+    return canonical({**sub, "dense_map": {**section, "maps": {name: cfg}}})

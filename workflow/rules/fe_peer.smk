@@ -2,7 +2,7 @@
 # Needs the `ccx` executable (Debian package calculix-ccx); without it the peer job fails naming ccx.
 
 #: what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of the FE config
-FE_PEER_CONFIG = {"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}}
+FE_PEER_CONFIG = canonical({"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}})
 FE_PEER_DECKS = list(paths.FE_PEER_DECKS)
 
 

@@ -69,7 +69,7 @@ rule friction_table:
     conda:
         CONDA_ENV
     params:
-        table=ONEDOF["friction_table"],
+        table=canonical(ONEDOF["friction_table"]),
         config=onedof_subconfig(
             ONEDOF["friction_table"]["reading"],
             ONEDOF["friction_table"]["scene"],

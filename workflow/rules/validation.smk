@@ -54,7 +54,7 @@ rule validation_round_trip:
     conda:
         CONDA_ENV
     params:
-        table=ONEDOF["friction_table"],
+        table=canonical(ONEDOF["friction_table"]),
         onedof=onedof_subconfig(
             ONEDOF["friction_table"]["reading"],
             ONEDOF["friction_table"]["scene"],

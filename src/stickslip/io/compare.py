@@ -2,10 +2,20 @@
 
     python -m stickslip.io.compare RESULTS_A RESULTS_B [--without-member LABEL ...]
 
-prints every dataset whose variables (data and coordinates) differ bit for bit, every dataset present in
-only one folder, and whether the claims tables (``claims/deviations.csv``) are identical; exits 1 if
-anything differs. Attributes are not compared (history and source carry timestamps and the git revision),
-nor are CPU-time measurements (``is_machine_measurement``): they time the machine, not the model.
+compares every file a build writes and prints each difference, and each file present in only one folder;
+exits 1 if anything differs. Datasets (``.nc``) are compared variable by variable (data and coordinates, bit
+for bit); every other file (tables, decks, pages, images, notebooks) byte for byte.
+
+Left out, because they legitimately differ between two builds of the same code and config:
+
+* dataset attributes (history and source carry timestamps and the git revision) and CPU-time variables
+  (``is_machine_measurement``): they time the machine, not the model;
+* ``EXCLUDED_FOLDERS``: the jobs' logs and Snakemake's benchmark records (timings);
+* ``EXCLUDED_FILES``: files whose content is a measurement of the build itself (each with its reason);
+* ``VOLATILE``: in the files a pattern names, the text a regular expression matches (each with its reason:
+  the build time and commit a dataset preview shows, a rendered notebook's random cell and table ids and
+  execution times); the rest of those files is compared byte for byte;
+* hidden files (unfinished temporaries) and Snakemake's ``.snakemake_timestamp`` markers of folder outputs.
 
 ``--without-member LABEL`` leaves the perturbation-ensemble members of that label out of both sides (e.g.
 ``window``, a member added by a change: the rest of every dataset must then be unchanged).
@@ -13,10 +23,63 @@ nor are CPU-time measurements (``is_machine_measurement``): they time the machin
 
 from __future__ import annotations
 
+import re
 import sys
+from fnmatch import fnmatch
 from pathlib import Path
 
 from .netcdf import is_machine_measurement
+
+#: Top-level folders of results/ holding one build's own record: job logs and Snakemake's benchmark timings.
+EXCLUDED_FOLDERS = ("logs", "benchmarks")
+#: Files whose content measures the build (fnmatch pattern of the path relative to results/ -> why).
+EXCLUDED_FILES: dict[str, str] = {
+    "figures/methods/*_work_precision.png": "the work-precision diagrams plot measured CPU time",
+    "notebooks/methods_work_precision.*": "the methods notebook tabulates and plots measured CPU time",
+}
+#: (fnmatch pattern, regular expression, why): text left out of the files the pattern names.
+VOLATILE: tuple[tuple[str, str, str], ...] = (
+    (
+        "page/datasets/*.html",
+        r"(?m)^\s*(source|history): .*$|^.*cpu.*$",
+        "a dataset preview shows the dataset's provenance (the commit and the time it was written) and its "
+        "CPU-time attributes",
+    ),
+    (
+        "notebooks/*",
+        r'cell-id=[0-9a-f]+|"id": "[0-9a-f]+"|"(iopub\.[a-z_.]+|shell\.execute_reply)": "[^"]*"'
+        r"|T_[0-9a-f]{5}| at 0x[0-9a-f]+",
+        "a rendered notebook's cell ids, pandas table ids and object addresses are the run's, as its times",
+    ),
+)
+
+
+def _excluded(rel: str) -> bool:
+    return any(fnmatch(rel, pattern) for pattern in EXCLUDED_FILES)
+
+
+def _comparable_bytes(rel: str, data: bytes) -> bytes:
+    for pattern, regex, _ in VOLATILE:
+        if fnmatch(rel, pattern):
+            data = re.sub(regex.encode(), b"", data)
+    return data
+
+
+def result_files(root: Path) -> list[Path]:
+    """Every file of a build under ``root`` that ``compare_results`` compares (relative paths, sorted)."""
+    root = Path(root)
+    out = []
+    for path in root.rglob("*"):
+        rel = path.relative_to(root)
+        if (
+            not path.is_file()
+            or any(part.startswith(".") for part in rel.parts)
+            or rel.parts[0] in EXCLUDED_FOLDERS
+            or _excluded(rel.as_posix())
+        ):
+            continue
+        out.append(rel)
+    return sorted(out)
 
 
 def datasets(root: Path) -> list[Path]:
@@ -67,18 +130,18 @@ def data_differences(path_a: Path, path_b: Path, skip_members=()) -> list[str]:
 
 def compare_results(root_a: Path, root_b: Path, skip_members=()) -> tuple[list[str], int]:
     """One line per difference between two results folders (none when every result is identical), and the
-    number of datasets compared."""
+    number of files compared."""
     root_a, root_b = Path(root_a), Path(root_b)
-    a, b = set(datasets(root_a)), set(datasets(root_b))
+    a, b = set(result_files(root_a)), set(result_files(root_b))
     lines = [f"only in {root_a}: {p}" for p in sorted(a - b)]
     lines += [f"only in {root_b}: {p}" for p in sorted(b - a)]
     for path in sorted(a & b):
-        lines += [f"{path}: {d}" for d in data_differences(root_a / path, root_b / path, skip_members)]
-    table = Path("claims") / "deviations.csv"
-    if (root_a / table).is_file() or (root_b / table).is_file():
-        texts = [(r / table).read_text() if (r / table).is_file() else None for r in (root_a, root_b)]
-        if texts[0] != texts[1]:
-            lines.append(f"{table}: differs")
+        if path.suffix == ".nc":
+            lines += [f"{path}: {d}" for d in data_differences(root_a / path, root_b / path, skip_members)]
+        else:
+            texts = [_comparable_bytes(path.as_posix(), (r / path).read_bytes()) for r in (root_a, root_b)]
+            if texts[0] != texts[1]:
+                lines.append(f"{path}: differs")
     return lines, len(a | b)
 
 
@@ -94,7 +157,7 @@ def main(argv: list[str]) -> int:
     lines, n = compare_results(args.results_a, args.results_b, tuple(args.without_member))
     for line in lines:
         print(line)
-    print(f"{n} datasets compared: {'identical' if not lines else f'{len(lines)} differences'}")
+    print(f"{n} files compared: {'identical' if not lines else f'{len(lines)} differences'}")
     return 1 if lines else 0
 
 

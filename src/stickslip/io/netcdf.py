@@ -17,6 +17,7 @@ import xarray as xr
 from .._version import __version__
 from ..analysis.metrics import Metric
 from ..solvers.base import Trajectory
+from .text_files import publish  # noqa: F401 (re-exported: the writers of other modules take it from here)
 
 PAPER_REFERENCE = (
     "A. A. Yousif Mohammed, I. Abd Rahim: Investigate Stick-Slip Intervals with One Equation Of Motion "
@@ -265,17 +266,6 @@ MACHINE_MEASUREMENT_COMMENT = "measured on the machine that ran the job: not rep
 def is_machine_measurement(name: str) -> bool:
     """CPU times, and how many timing repeats they took: they measure the machine, not the model."""
     return "cpu_" in name or name.endswith("_cpu") or name in ("cpu", "repeats")
-
-
-def publish(tmp: str | os.PathLike, path: str | os.PathLike) -> None:
-    """Give a finished temporary file the permissions of a normally created one, then rename it into place.
-
-    (mkstemp creates files readable by their owner only.)
-    """
-    mask = os.umask(0)
-    os.umask(mask)
-    os.chmod(tmp, 0o666 & ~mask)
-    os.replace(tmp, path)
 
 
 #: Free bytes below which a failed write is reported as a full disk (the netCDF library says only

@@ -8,6 +8,7 @@ the friction table), each error naming the offending config key.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -284,6 +285,55 @@ def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool =
             f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes "
             f"{producible})"
         )
+    if table not in producible:  # a table of the user's: checked now, not by the first FE job
+        check_friction_table(table, "fe.friction_table")
+
+
+#: The header of a friction table (rule friction_table writes it; the FE scenes read it): the relative speed
+#: in mm/s and the friction coefficient (no unit).
+FRICTION_TABLE_COLUMNS = ("relative_velocity_mm_per_s", "mu")
+#: A friction table larger than this is not one (a table has tens to thousands of rows).
+FRICTION_TABLE_MAX_BYTES = 10 << 20
+
+
+def check_friction_table(path, key: str) -> None:
+    """A friction table file as the FE scenes read it: the header ``relative_velocity_mm_per_s,mu`` (the
+    speed's unit is in its name), at least one row, every value a finite number, speeds >= 0 and increasing,
+    mu >= 0. Raises ConfigError naming the key, the file and the line."""
+    where = f"{key}: {str(path)!r}"
+    expected = ",".join(FRICTION_TABLE_COLUMNS)
+    try:
+        if Path(path).stat().st_size > FRICTION_TABLE_MAX_BYTES:
+            raise ConfigError(f"{where} is over {FRICTION_TABLE_MAX_BYTES} bytes: not a friction table")
+        lines = Path(path).read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ConfigError(f"{where} cannot be read as a friction table ({type(exc).__name__})") from exc
+    rows = [(n, line) for n, line in enumerate(lines, 1) if line.strip()]
+    header = rows[0][1].strip() if rows else ""
+    if tuple(c.strip() for c in header.split(",")) != FRICTION_TABLE_COLUMNS:
+        raise ConfigError(
+            f"{where} is not a friction table: line 1 must be the header {expected!r} (relative speed in "
+            f"mm/s, friction coefficient), got {header[:80]!r}"
+        )
+    if len(rows) < 2:
+        raise ConfigError(f"{where}: the friction table has a header but no rows")
+    speeds = []
+    for n, line in rows[1:]:
+        cells = line.split(",")
+        try:
+            speed, mu = (float(c) for c in cells) if len(cells) == 2 else (None, None)
+        except ValueError:
+            speed = mu = None
+        if speed is None or not (math.isfinite(speed) and math.isfinite(mu)):
+            raise ConfigError(f"{where} line {n}: expected two finite numbers ({expected}): {line[:80]!r}")
+        if speed < 0 or mu < 0:
+            raise ConfigError(f"{where} line {n}: speed and mu must be >= 0, got {line[:80]!r}")
+        if speeds and speed <= speeds[-1]:
+            raise ConfigError(
+                f"{where} line {n}: the speeds must increase (relative_velocity_mm_per_s {speed!r} after "
+                f"{speeds[-1]!r})"
+            )
+        speeds.append(speed)
 
 
 def check_methods_config(cfg: dict) -> None:

@@ -39,7 +39,10 @@ def unreproduced_claims(rows: list[dict], readings: list[str]) -> list[dict]:
         if any(r["status"] == "reproduced" for r in mine):
             continue
         statuses = "; ".join(f"{r['reading'] or '-'}: {r['status']}" for r in mine)
-        reasons = sorted({r["reason"].split("; ", 1)[-1] for r in mine if r["reason"]}, key=len)
+        # the longest reason, ties broken by the text: a set has no order of its own (hash seed)
+        reasons = sorted(
+            {r["reason"].split("; ", 1)[-1] for r in mine if r["reason"]}, key=lambda text: (len(text), text)
+        )
         out.append(
             {
                 "claim": claim,
