@@ -105,11 +105,11 @@ def rule_code_hash(rule):
 
 
 def catalogue_datasets(rules):
-    """Every catalogue dataset a rule names as an output (temporary outputs aside), for rule ``all``: a missing
+    """Every catalogue dataset named as an output (temporary outputs aside), for the default target; a missing
     dataset is then rebuilt by the default build, as make rebuilds a missing file. (Snakemake checks an
     intermediate only when something downstream must re-run: a deleted dataset no rule-all input named
     stayed gone.) The final products (pages, tables) are rule-all inputs where the config builds them. Outputs
-    of a rule with wildcards are left out: the catalogue lists every reading of a
+    with wildcards are left out; the catalogue lists every reading of a
     sweep, the config builds a few; the build's record of what it wrote covers those (`make figures`,
     stickslip.pipeline.build)."""
     named = {
@@ -269,3 +269,27 @@ def dense_map_subconfig(name):
     sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
     section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
     return canonical({**sub, "dense_map": {**section, "maps": {name: cfg}}})
+
+
+def inverse_onedof_config():
+    """The part of the 1-DOF config the study reads: the baseline, the defaults, and only the scenes and
+    sweeps its claims' datasets, its one-scene figures and those sweeps' base scenes name (an unrelated new
+    scene re-runs nothing). A claim id not among the project's claims files (another claims_glob) keeps
+    every scene and sweep."""
+    from stickslip.inverse.problem import runs_by_dataset
+
+    inv = config["inverse"]
+    ids = {cid for fig in inv["figures"].values() for cid in fig.get("claims", [])}
+    rows = {c.id: c for c in CLAIMS}
+    keep = {k: ONEDOF[k] for k in ("baseline", "defaults", "scenes", "sweeps")}
+    if not ids <= set(rows):
+        return canonical(keep)
+    runs = runs_by_dataset(ONEDOF)
+    named = [runs[rows[i].dataset] for i in sorted(ids) if rows[i].dataset in runs]
+    sweeps = sorted({name for kind, name in named if kind == "sweep"})
+    scenes = {name for kind, name in named if kind == "scene"} | {BASELINE["scene"]}
+    scenes |= {fig["scene"] for fig in inv["figures"].values() if "scene" in fig}
+    scenes |= {ONEDOF["sweeps"][s].get("scene") or BASELINE["scene"] for s in sweeps}
+    keep["scenes"] = {name: ONEDOF["scenes"][name] for name in scenes if name in ONEDOF["scenes"]}
+    keep["sweeps"] = {name: ONEDOF["sweeps"][name] for name in sweeps}
+    return canonical(keep)
