@@ -21,7 +21,7 @@ export PATH := $(BIN):$(PATH)
 # uv resolves for every Python >= 3.11 at once (markers pick the right pins at install time).
 COMPILE = $(BIN)/uv pip compile --quiet --universal --python-version 3.11 --generate-hashes
 
-.PHONY: ccx setup figures test lint bench report clean lock slurm-test repair
+.PHONY: ccx setup figures small test lint bench report clean lock slurm-test repair
 
 # A venv names the folder that built it (its scripts' #! lines, the editable install's path to src/): in a
 # copied or moved project it would run the original's code, or nothing once that is gone. The stamp records
@@ -76,6 +76,20 @@ ccx:
 figures: $(STAMP) ccx
 	$(BUILD) $(SNAKEMAKE) -j$(JOBS) --logger stickslip-progress
 
+# A configuration with overlays builds in a folder of its own, never into results/ (the full build's; a build
+# of another configuration there is refused, stickslip.pipeline.results_owner). The folder links the project's
+# code and config, so its results/ is all it holds: `make small` is the small CI configuration in
+# build/small/results; `make small OVERLAY="config/test/*.yaml trials/mine.yaml" OVERLAY_DIR=build/mine` any
+# other (TARGETS=...: only those).
+OVERLAY ?= config/test/*.yaml
+OVERLAY_DIR ?= build/small
+OVERLAY_FILES = $(abspath $(wildcard $(OVERLAY)))
+TARGETS ?=
+small: $(STAMP) ccx
+	@test -n "$(OVERLAY_FILES)" || { echo "OVERLAY=$(OVERLAY): no such config file"; exit 1; }
+	$(BUILD) --in $(OVERLAY_DIR) $(SNAKEMAKE) -j$(JOBS) --logger stickslip-progress $(TARGETS) \
+	    --configfile $(OVERLAY_FILES)
+
 # `make figures`, and before it every dataset's own content checksum verified (all data read, not only the
 # recorded checksums): a damaged one is rebuilt with everything that depends on it (`python -m
 # stickslip.io.netcdf verify` lists them).
@@ -101,7 +115,7 @@ bench: $(STAMP)
 	for script in benchmarks/bench_*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
 
 clean:
-	rm -rf results .snakemake
+	rm -rf results .snakemake build
 
 # Opt-in (root, Debian/Ubuntu): a single-node SLURM on localhost runs a small chunked map through the
 # official executor plugin and the merged dataset is compared with the local run.
@@ -115,13 +129,14 @@ help:
 	@echo "make targets:"
 	@echo "  setup       create .venv from the lock (requirements/lock.txt), then install the project"
 	@echo "  figures     rebuild every result with snakemake -j$(JOBS) (results/index.html answers the paper)"
+	@echo "  small       the small CI configuration in build/small/results (OVERLAY=<files> OVERLAY_DIR=<folder>: yours)"
 	@echo "  test        the whole test suite on $(JOBS) cores (incl. the claims check)"
 	@echo "  lint        ruff, snakefmt --check, snakemake --lint"
 	@echo "  report      the pipeline, then results/report.html (every figure captioned)"
 	@echo "  bench       every benchmarks/bench_*.py"
 	@echo "  repair      figures, after verifying every dataset's content checksum (reads all data)"
 	@echo "  lock        re-resolve the lock to the newest allowed versions"
-	@echo "  clean       remove results/ and .snakemake/"
+	@echo "  clean       remove results/, .snakemake/ and build/ (make small's folders)"
 	@echo "  slurm-test  opt-in: a small chunked map through a local SLURM"
 	@echo "  help        this list"
 	@echo "your own scenario (after make setup): .venv/bin/stickslip --help"

@@ -29,6 +29,11 @@ CONFIG_FILES = [str(p) for p in sorted(Path(workflow.basedir, "config").glob("*.
 update_config(config, load_config(CONFIG_FILES))
 update_config(config, dict(workflow.config_settings.config or {}))
 
+from stickslip.pipeline import results_owner  # noqa: E402
+
+#: The --configfile overlays of this build: a results folder holds the build of one configuration only.
+CONFIG_OVERLAYS = results_owner.overlays(CONFIG_FILES, workflow.basedir)
+
 
 include: "workflow/rules/common.smk"
 
@@ -55,3 +60,9 @@ rule all:
     input:
         ALL_TARGETS,
         EVERY_DATASET,
+
+
+# Only a build that runs jobs (not a dry run) claims the results folder, after checking it is not another
+# configuration's (stickslip.pipeline.results_owner).
+onstart:
+    results_owner.claim(paths.RESULTS, CONFIG_OVERLAYS)

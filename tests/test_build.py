@@ -118,3 +118,31 @@ def test_a_second_build_is_refused_and_a_killed_build_recovers_without_a_flag(tm
     assert not (work / TARGET).exists()
     build(work, TARGET, *args)  # no --unlock, no --rerun-incomplete
     assert (work / TARGET).exists()
+
+
+@pytest.mark.pipeline
+def test_a_build_of_another_configuration_is_refused_before_any_job_and_leaves_the_results_untouched(
+    tmp_path,
+):
+    work = copy_project(tmp_path)
+    table = "results/onedof/friction_mu_vr.csv"
+    run_snakemake(work, table)  # the full configuration's build owns results/
+    before = {
+        p: p.read_bytes() for p in (work / "results").rglob("*") if p.is_file() and "logs" not in p.parts
+    }
+
+    small = run_snakemake(
+        work, "--forcerun", "friction_table", *small_config_args(work), "--", table, check=False
+    )
+    assert small.returncode == 1
+    assert "results/ holds the build of configuration config/*.yaml; this build is config/*.yaml + " in (
+        small.stdout + small.stderr
+    )
+    assert "make small" in small.stdout + small.stderr
+    after = {
+        p: p.read_bytes() for p in (work / "results").rglob("*") if p.is_file() and "logs" not in p.parts
+    }
+    assert after == before
+    run_snakemake(
+        work, "--forcerun", "friction_table", "--", table
+    )  # the owner's own configuration still builds

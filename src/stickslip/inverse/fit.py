@@ -84,7 +84,8 @@ class Region:
 
 def _fun(forward: Forward, problem: Problem):
     def fun(u):
-        values = 10.0**u
+        with np.errstate(over="ignore"):  # far outside the bounds: inf, rejected just below
+            values = 10.0**u
         if not problem.in_bounds(values):
             return np.full(len(problem.observations), INFEASIBLE_RESIDUAL)
         r = forward.residuals(values)  # clipped: a run growing without bound must not overflow the solver
@@ -218,7 +219,9 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
     burn = steps // 2
     chain = sampler.get_chain(discard=burn, flat=True)
     logp = sampler.get_log_prob(discard=burn, flat=True)
-    tau = sampler.get_autocorr_time(tol=0, quiet=True) if steps >= 4 else np.full(ndim, np.nan)
+    # a coordinate whose chain never moved has no autocorrelation (0/0): NaN, i.e. not converged
+    with np.errstate(invalid="ignore", divide="ignore"):
+        tau = sampler.get_autocorr_time(tol=0, quiet=True) if steps >= 4 else np.full(ndim, np.nan)
     free = np.array([p.from_coordinates(w) for w in chain]).reshape(-1, len(p.free))
     used = max(forward.evaluations - n0, 1)
     return Region(

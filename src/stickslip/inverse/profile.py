@@ -212,7 +212,7 @@ class _Space:
     def feasible(self, w) -> np.ndarray:
         """log10 free values with coordinates w: through the best fit, else shifted into the bounds."""
         u = self.u0 + self.basis @ w
-        if self.p.in_bounds(10.0**u) or self.null.shape[1] == 0:
+        if self.p.in_bounds(_power10(u)) or self.null.shape[1] == 0:
             return u
         a, b = self._constraints(u)
         res = linprog(np.zeros(self.null.shape[1]), A_ub=a, b_ub=b, bounds=(None, None), method="highs")
@@ -406,7 +406,13 @@ def _minimise(fun, space: _Space, w_fixed, q, z0, target: float, nfev: int):
     u = space.feasible(w_fixed + q @ z)
     r = fun(u)
     chi2 = float(r @ r)
-    return u, (chi2 if space.p.in_bounds(10.0**u) else np.inf), z
+    return u, (chi2 if space.p.in_bounds(_power10(u)) else np.inf), z
+
+
+def _power10(u) -> np.ndarray:
+    """10**u, inf where a step far outside the bounds overflows (the bounds check then rejects it)."""
+    with np.errstate(over="ignore"):
+        return 10.0**u
 
 
 def profile_identify(forward: Forward, free_values, structure: tuple = ()) -> ProfileIdentification:

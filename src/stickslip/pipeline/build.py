@@ -1,6 +1,6 @@
 """`make figures` and `make repair`: one Snakemake build of this folder that heals itself.
 
-    python -m stickslip.pipeline.build [--deep] [--] SNAKEMAKE [ARGS...]
+    python -m stickslip.pipeline.build [--deep] [--in FOLDER] [--] SNAKEMAKE [ARGS...]
 
 * **One build per folder.** The build holds an exclusive lock (``.snakemake/stickslip-build.lock``, flock: the
   kernel drops it when the build dies, even by ``kill -9``); a second build is told "another build is
@@ -12,6 +12,9 @@
   checksum (``stickslip.pipeline.integrity``: a stat per file; bytes are read only for a file whose stat
   moved) and rebuilt with ``--forcerun`` if it changed. ``--deep`` (`make repair`) also verifies every
   dataset's own content checksum (``python -m stickslip.io.netcdf verify``), reading all data.
+* **A configuration's own folder.** ``--in FOLDER`` (``make small``) builds in FOLDER, which links the
+  project's code and config (``PROJECT_LINKS``) and so holds only its own ``results/``: a configuration
+  with overlays never writes into the full build's (``stickslip.pipeline.results_owner``).
 * **Nothing missing.** Every catalogue dataset a rule names is a target of rule ``all``, and a recorded file
   that is gone is forcerun too (the outputs of rules with wildcards).
 """
@@ -78,13 +81,44 @@ def _producible(argv: list[str], files: list[str]) -> list[str]:
     return files
 
 
+#: What a folder of ``--in`` links from the project (everything a build reads; results are its own).
+PROJECT_LINKS = ("Snakefile", "workflow", "config", "notebooks", "src", "README.md", "docs")
+
+
+def link_project(folder: Path, project: Path) -> None:
+    """Make ``folder`` a place to build the project in: links to its code and config, its own results."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for name in PROJECT_LINKS:
+        link, target = folder / name, (project / name).resolve()
+        if link.is_symlink() and link.resolve() == target:
+            continue
+        if link.is_symlink():
+            link.unlink()
+        elif link.exists():
+            raise SystemExit(f"--in {folder}: {link} exists and is not a link to the project's {name}")
+        link.symlink_to(target)
+
+
+def _options(argv: list[str]) -> tuple[bool, Path | None, list[str]]:
+    deep, folder = False, None
+    while argv[:1] in (["--deep"], ["--in"]):
+        if argv[0] == "--deep":
+            deep, argv = True, argv[1:]
+        elif len(argv) < 2:
+            raise SystemExit("--in needs a folder")
+        else:
+            folder, argv = Path(argv[1]), argv[2:]
+    return deep, folder, argv[1:] if argv[:1] == ["--"] else argv
+
+
 def main(argv: list[str]) -> int:
-    deep = bool(argv) and argv[0] == "--deep"
-    argv = argv[1:] if deep else argv
-    argv = argv[1:] if argv[:1] == ["--"] else argv
+    deep, folder, argv = _options(argv)
     if not argv:
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
+    if folder is not None:
+        link_project(folder, Path.cwd())
+        os.chdir(folder)
     LOCK.parent.mkdir(parents=True, exist_ok=True)
     lock = open(LOCK, "a+")
     try:
