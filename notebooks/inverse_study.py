@@ -100,19 +100,20 @@ def pairs_html(row):
     return pairs(row).replace(", open", "; open").replace(", ", "<br>").replace("; open", ", open")
 
 
+# the answer first (verdict, the worst number), so it is in view without scrolling; the ranges after it
 table = summary.assign(**{"fitted (stated)": summary.apply(pairs_html, axis=1)})[
     [
         "figure",
         "family",
+        "verdict",
+        "worst_residual",
+        "worst_claim",
+        "verdict_above_noise",
+        "residual_noise",
         "numbers",
         "free_parameters",
         "identifiable_dimensions",
         "fitted (stated)",
-        "worst_residual",
-        "worst_claim",
-        "verdict",
-        "residual_noise",
-        "verdict_above_noise",
     ]
 ]
 display(

@@ -56,6 +56,23 @@ def test_a_beam_on_disc_row_names_a_model_that_matches_its_dataset():
         ClaimRow.model_validate({**ROW, "dataset": "results/onedof/x.nc"})
 
 
+def test_every_claim_is_shown_only_on_cards_of_its_own_half_of_the_paper():
+    """A card lists the claims of its figures: a beam-on-disc claim on a 1-DOF figure's card (or the
+    reverse) would put the other half's dataset there."""
+    from glob import glob
+
+    from stickslip.presentation.page import paper_spec
+
+    half = {e["number"]: e["half"] for e in paper_spec()["figures"]}
+    wrong = []
+    for c in load_claims(sorted(glob("config/claims/*.yaml"))):
+        paths = c.dataset_paths()
+        if paths:
+            mine = "fe" if all(p.startswith("results/fe/") for p in paths) else "onedof"
+            wrong += [(c.id, n) for n in c.figures if half.get(n, mine) != mine]
+    assert wrong == []
+
+
 def test_every_beam_on_disc_row_of_the_project_names_its_model():
     rows = load_claims(["config/claims/sections_09_12.yaml"])
     fe = [c for c in rows if any(p.startswith("results/fe/") for p in c.dataset_paths())]

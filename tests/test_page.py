@@ -12,7 +12,7 @@ import pytest
 
 from stickslip.claims.load import load_claims
 from stickslip.claims.table import read_table
-from stickslip.presentation.page import paper_spec
+from stickslip.presentation.page import outcome_line, paper_spec
 from stickslip.presentation.verdicts import (
     SUCCESS,
     VERDICTS,
@@ -292,6 +292,24 @@ def check_page(chrome, run):
     }
     assert table["2"]["primary_reading"] in config["claims"]["readings"]
     assert "glossary" in proc.stdout and 'id="g-primary"' in proc.stdout
+    # every in-page link lands on an element (a glossary term for every inverse column shown on a card)
+    ids = set(re.findall(r'id="([^"]+)"', proc.stdout))
+    assert sorted(set(re.findall(r'href="#([^"]+)"', proc.stdout)) - ids) == []
+    from stickslip.presentation.page import KEPT_COLUMNS, RANGE_PREFIXES, TERMS
+
+    for table in sorted((results / "inverse").glob("*.csv")):
+        header = table.read_text().splitlines()[0].split(",")
+        if "figure" in header:
+            shown = [c for c in header if not c.startswith(RANGE_PREFIXES) or c in KEPT_COLUMNS]
+            assert sorted(set(shown) - set(TERMS)) == [], table.name
+    # the top names the paper, the configuration (the small one's overlays), the commit, and the outcome
+    assert "Replication of A. A. Yousif Mohammed" in proc.stdout
+    assert "Configuration: <code>config/*.yaml + config/test/" in proc.stdout
+    assert re.search(r"commit <code>[0-9a-f]{7,}|commit <code>unknown", proc.stdout)
+    assert re.search(
+        r'id="outcome"><b>Under the primary reading: 1-DOF mass on a moving belt [a-z ]+ \(\d+ of \d+',
+        proc.stdout,
+    )
 
     # nothing on a card is wider than the card at 1400 px: a copy of the page measures itself
     probe = results / "index_probe.html"
@@ -309,6 +327,23 @@ def check_page(chrome, run):
     found = re.search(r'data-too-wide="([^"]*)"', proc.stdout)
     assert found, "the width probe did not run"
     assert found.group(1) == "none", f"tables wider than their card at 1400 px: {found.group(1)}"
+
+    # the inverse notebook's answer is in view at 1400 px: the summary's verdict column needs no scrolling
+    notebook = results / "notebooks" / "inverse_study.html"
+    probe = notebook.with_name("inverse_probe.html")
+    probe.write_text(
+        notebook.read_text().replace(
+            "</body>",
+            "<script>const th = [...document.querySelectorAll('th')].find(h => h.textContent.trim() === "
+            "'verdict'); document.body.dataset.verdictRight = th ?"
+            " Math.round(th.getBoundingClientRect().right) : 'missing';</script></body>",
+        )
+    )
+    proc = _headless(chrome, "--window-size=1400,900", "--dump-dom", probe.resolve().as_uri())
+    probe.unlink()
+    found = re.search(r'data-verdict-right="([^"]*)"', proc.stdout)
+    assert found and found.group(1) != "missing", "no verdict column in the inverse notebook"
+    assert int(found.group(1)) <= 1400, f"the verdict column ends at {found.group(1)} px, off-screen at 1400"
 
     shot = results / "page_top.png"
     shot.unlink(missing_ok=True)
@@ -452,3 +487,38 @@ def test_an_unidentified_inverse_quantity_is_shown_as_a_range_never_a_point():
     assert range_text(row, "sigma") == "sigma: range 0.19–1.5 (open above)"
     assert range_text(row, "k") == "k = 7.8 [6.5, 9.5]"
     assert range_text(row, "absent") == ""
+
+
+@pytest.mark.parametrize(
+    ("k", "n", "words"),
+    [(0, 0, "decides nothing"), (0, 5, "does not replicate"), (2, 5, "replicates in part"),
+     (3, 5, "replicates for the most part"), (5, 5, "replicates")],
+)  # fmt: skip
+def test_the_outcome_line_states_each_halfs_share_of_decided_checks(k, n, words):
+    halves = [{"title": "1-DOF mass on a moving belt (Sections 3-7)", "k": k, "n": n}]
+    assert outcome_line(halves) == (
+        f"Under the primary reading: 1-DOF mass on a moving belt {words} "
+        f"({k} of {n} decided claim checks reproduced)."
+    )
+
+
+def test_the_inverse_answer_is_a_sentence_with_the_verdict_the_conflict_and_what_is_fixed():
+    from stickslip.presentation.page import inverse_sentence
+
+    row = {"family": "consistent", "numbers": "12", "verdict": "inconsistent", "worst_claim": "s3_a",
+           "worst_residual": "2.32", "lower_K_over_M": "6.4", "upper_K_over_M": "9.6",
+           "best_K_over_M": "7.85", "identifiable_K_over_M": "1", "lower_mass": "0.1", "upper_mass": "7.8",
+           "identifiable_mass": "0"}  # fmt: skip
+    conflicts = [{"size": "2", "claims": "s3_a + s3_b"}, {"size": "3", "claims": "s3_a + s3_b + s3_c"}]
+    assert inverse_sentence(row, conflicts) == (
+        "consistent family: no parameter set gives all 12 of the figure's numbers (the worst, s3_a, stays "
+        "2.32 tolerances off; the smallest set that cannot hold together: s3_a + s3_b); the numbers fix "
+        "K_over_M = 7.85 [6.4, 9.6] (the rest range over their bounds)."
+    )
+    unmeasured = {**row, "worst_residual": "inf"}
+    assert "s3_a stays unmeasured: the model rests, diverges or never sticks" in inverse_sentence(unmeasured)
+    consistent = {**row, "verdict": "consistent", "identifiable_K_over_M": "0"}
+    assert inverse_sentence(consistent) == (
+        "consistent family: one parameter set gives all 12 of the figure's numbers within tolerance; the "
+        "numbers fix no parameter combination."
+    )

@@ -77,6 +77,7 @@ rule replication_page:
             if name in config["claims"]["readings"] or name in FE_READINGS
         },
         friction_table=FE_FRICTION,
+        configuration=results_owner.describe(CONFIG_OVERLAYS),
     script:
         "../scripts/build_page.py"
 

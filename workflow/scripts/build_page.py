@@ -17,5 +17,6 @@ builder = PageBuilder(
     reading_descriptions=dict(params.reading_descriptions),
     friction_table=params.friction_table,
     workers=snakemake.threads,
+    configuration=params.configuration,
 )
 build_page(Path(snakemake.output.html), builder)

@@ -90,10 +90,16 @@ def _short(text: str, limit: int) -> str:
 
 
 def conclusion(
-    claim: Claim, m: Measurement, status: str, failures: list[str], answer: ModelAnswer | None = None
+    claim: Claim,
+    m: Measurement,
+    status: str,
+    failures: list[str],
+    answer: ModelAnswer | None = None,
+    reading: str = "",
 ) -> str:
-    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters; a row decided
-    by a model answer starts with the answer's mechanism."""
+    """One sentence that says what the row concludes, at most CONCLUSION_LENGTH characters: why first. A
+    row decided by a model answer starts with the answer's mechanism; a value that deviates with a cause in
+    the row's note (the paper contradicting itself, a reading precision) with that cause and the size."""
     kind = claim.kind
     if status == "not-comparable":
         text = f"Not comparable: {NOT_COMPARABLE_CAUSES[not_comparable_cause(claim, m, failures)]}."
@@ -104,7 +110,10 @@ def conclusion(
         text = "Undecided: the margin to the threshold is within the run's own numerical noise."
     else:
         verb = "Reproduced" if status == "reproduced" else "Deviates"
-        if kind in ("value", "ratio"):
+        cause = _per_reading(claim.note, reading) if status == "deviates" else ""
+        if kind in ("value", "ratio") and cause:  # the cause the paper's text gives first, then the size
+            text = f"{verb} by {100 * m.deviation:+.0f} %: {cause.rstrip('.')}."
+        elif kind in ("value", "ratio"):
             unit = "" if claim.unit in (None, "1") else f" {claim.unit}"
             text = (
                 f"{verb}: {m.measured:.3g}{unit} against the paper's {float(m.reported):.3g}{unit} "
@@ -131,7 +140,7 @@ def reason_text(
 ):
     """The conclusion sentence, then the numbers, then every caveat: why the row is not evidence, values
     computed but withheld, failed sweep members, and the row's note (never dropped)."""
-    parts = [conclusion(claim, m, status, failures, answer), detail]
+    parts = [conclusion(claim, m, status, failures, answer, reading), detail]
     if claim.evidence_note:
         parts.append(f"Not evidence ({claim.evidence.replace('_', ' ')}): {claim.evidence_note}")
     if m.withheld and not detail.startswith("withheld"):

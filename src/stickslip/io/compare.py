@@ -46,6 +46,11 @@ VOLATILE: tuple[tuple[str, str, str], ...] = (
         "CPU-time attributes",
     ),
     (
+        "index.html",
+        r'(?m)^<p class="build">.*$',
+        "the replication page names the commit and the time it was built",
+    ),
+    (
         "notebooks/*",
         r'cell-id=[0-9a-f]+|"id": "[0-9a-f]+"|"(iopub\.[a-z_.]+|shell\.execute_reply)": "[^"]*"'
         r"|T_[0-9a-f]{5}| at 0x[0-9a-f]+",

@@ -16,10 +16,12 @@ from __future__ import annotations
 import csv
 import functools
 import html
+import math
 import os
 import re
 from collections import Counter
 from dataclasses import dataclass, field
+from datetime import UTC, datetime
 from pathlib import Path
 
 import yaml
@@ -232,6 +234,55 @@ def make_thumbnails(jobs, workers: int = 2) -> None:
 
 
 #: Per-quantity columns of the inverse study's tables, shown as one range_text cell each.
+#: Every column name of the inverse study's tables shown on a card, and the terms reasons use, in words.
+TERMS = {
+    "family": "The friction law the inverse study fits: `consistent` (mu = mu_s (1 - sigma |v_r|), the "
+    "physically consistent sign) or `plateau` (the same law levelling off at plateau_speed).",
+    "figure": "The paper figure whose numbers are fitted together (`joint`: every figure's at once).",
+    "numbers": "How many of the paper's numbers the fit uses.",
+    "identifiable_dimensions": "How many parameter combinations the numbers pin down: the structural count, "
+    "capped by the number of numbers.",
+    "structural_dimensions": "How many parameter combinations the equation of motion lets any data fix "
+    "(exact rank, derived from the equations, not from an optimiser).",
+    "phases_visited": "The phases of motion the fitted runs pass through (stick, slip, plateau).",
+    "dimensions_note": "Why the identifiable count differs from the structural one, where it does.",
+    "profiles_bounded": "k of n: of the n combinations profiled, how many the numbers bound on both sides.",
+    "free_parameters": "How many parameters the fit may move.",
+    "values (a point) or ranges (not identifiable)": "q = best [lo, hi] for a combination the numbers fix; "
+    "q: range lo-hi for one they do not (never a point). `open below`/`open above`/`open both`: the range "
+    "reaches the search bound on that side, so the numbers put no limit there.",
+    "worst_residual": "The largest |measured - reported| / reading precision at the best fit (1 = at the "
+    "edge of the precision; inf = a number the run leaves unmeasured).",
+    "worst_claim": "The claim with the worst residual.",
+    "chi_square": "Sum of the squared residuals at the best fit.",
+    "verdict": "consistent: one parameter set gives every number within its reading precision; inconsistent: "
+    "none does.",
+    "residual_noise": "How far the worst residual moves under the solver's own noise (perturbation "
+    "ensemble): a verdict needs the worst residual further than this from 1.",
+    "verdict_above_noise": "1 when the worst residual is further from 1 than its noise (the verdict holds).",
+    "fit_source": "How the best fit was found (least squares; restarted where a profile went deeper).",
+    "minimal_conflicts": "How many smallest sets of numbers cannot hold together.",
+    "max_size_searched": "The largest set size searched for conflicts.",
+    "size": "How many numbers the conflicting set holds.",
+    "claims": "The claims of the conflicting set.",
+    "above_noise": "1 when the conflict's residual exceeds its noise.",
+    "claim": "The claim id (config/claims/*.yaml).",
+    "metric": "The dataset variable that measures the number.",
+    "unit": "Unit of the reported value.",
+    "reported": "The value the paper reports.",
+    "reading_precision": "How precisely the number can be read from the paper (a figure's pixel, the last "
+    "printed digit): the residuals' unit.",
+    "measured_best": "The number measured at the best fit.",
+    "residual": "(measured - reported) / reading precision at the best fit.",
+    "residual_stated": "The same at the paper's stated parameters.",
+    "in_a_conflict": "1 when the number belongs to a minimal conflicting set.",
+    "drop start": "The beam-on-disc initial state: the beam starts undeformed, touching the disc, with its "
+    "load applied at t = 0, so it first drops into contact (config fe.solver.initial_state: drop; `static` "
+    "starts from the loaded equilibrium instead).",
+    "margin": "How far the measured value lies from the tolerance edge that decides the claim.",
+    "spread": "How far the measured value moves across the run's perturbation ensemble and a second step.",
+}
+
 RANGE_PREFIXES = ("best_", "stated_", "lower_", "upper_", "identifiable_", "open_")
 KEPT_COLUMNS = ("identifiable_dimensions",)
 
@@ -249,6 +300,43 @@ def range_text(row: dict, quantity: str) -> str:
     return f"{quantity} = {best} [{lo}, {hi}]" if lo or hi else f"{quantity} = {best}"
 
 
+def inverse_sentence(row: dict, conflicts: list[dict] = ()) -> str:
+    """The inverse study's answer for one figure and family, in words: can one parameter set of the family
+    give all of the figure's numbers; if not, the smallest set of numbers that cannot hold together; what
+    the numbers fix (identified combinations with their ranges) and what they leave open."""
+    n = row.get("numbers", "")
+    family = row.get("family", "")
+    verdict = row.get("verdict", "")
+    quantities = [c[len("lower_") :] for c in row if c.startswith("lower_")]
+    identified = [q for q in quantities if str(row.get(f"identifiable_{q}")) in ("1", "1.0", "True")]
+    fixed = [range_text(row, q) for q in identified]
+    if verdict == "consistent":
+        head = f"{family} family: one parameter set gives all {n} of the figure's numbers within tolerance"
+    elif verdict == "inconsistent" and _number(row.get("worst_residual")) == math.inf:
+        return (
+            f"{family} family: no parameter set the fit tried measures all {n} of the figure's numbers "
+            f"({row.get('worst_claim', '')} stays unmeasured: the model rests, diverges or never sticks)"
+            "."
+        )
+    elif verdict == "inconsistent":
+        smallest = min(conflicts, key=lambda r: int(r.get("size") or 0), default=None)
+        if smallest and int(smallest.get("size") or 0) == 1:
+            clash = f"; {smallest['claims']} alone cannot be met"
+        elif smallest and smallest.get("claims"):
+            clash = f"; the smallest set that cannot hold together: {smallest['claims']}"
+        else:
+            clash = ""
+        head = (
+            f"{family} family: no parameter set gives all {n} of the figure's numbers (the worst, "
+            f"{row.get('worst_claim', '')}, stays {fmt(row.get('worst_residual'))} tolerances off{clash})"
+        )
+    else:
+        head = f"{family} family: {verdict or 'no verdict'}"
+    if fixed:
+        return f"{head}; the numbers fix {', '.join(fixed)} (the rest range over their bounds)."
+    return f"{head}; the numbers fix no parameter combination."
+
+
 class PageBuilder:
     """Gathers every card's content from a run's results (paths relative to ``workdir``)."""
 
@@ -264,6 +352,7 @@ class PageBuilder:
         claims_glob: str = "config/claims/*.yaml",
         results: str = paths.RESULTS,
         workers: int = 1,
+        configuration: str = "config/*.yaml",
     ):
         self.workdir = Path(workdir)
         self.results = self.workdir / results
@@ -291,6 +380,7 @@ class PageBuilder:
         #: file -> its text page (a dataset's ``stickslip show`` text, a source file by line), for ``context``
         self.text_jobs: dict[Path, Path] = {}
         self.workers = workers
+        self.configuration = configuration
 
     # -- links ----------------------------------------------------------------------------------------
 
@@ -355,6 +445,7 @@ class PageBuilder:
             if any(number in self.figures_of.get(i, []) for i in ids)
         ]
         out = []
+        conflicts = [r for r in self.inverse.get("conflicts.csv", []) if r.get("figure") in names]
         for table, rows in self.inverse.items():
             mine = [r for r in rows if r.get("figure") in names]
             if not mine:
@@ -375,6 +466,11 @@ class PageBuilder:
                     "verdicts": sorted(
                         {(r.get("family", ""), r.get("verdict", "")) for r in mine if r.get("verdict")}
                     ),
+                    "sentences": [
+                        inverse_sentence(r, [c for c in conflicts if c["family"] == r["family"]])
+                        for r in mine
+                        if table == "summary.csv" and r.get("verdict")
+                    ],
                 }
             )
         return out
@@ -656,12 +752,24 @@ class PageBuilder:
             "cards": mine,
         }
 
+    def provenance(self) -> dict:
+        """What the page is a build of: the paper, the configuration, the code's commit and the build time."""
+        from ..io.netcdf import PAPER_REFERENCE, git_revision
+
+        return {
+            "paper": PAPER_REFERENCE,
+            "configuration": self.configuration,
+            "commit": git_revision(self.workdir),
+            "built": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
+        }
+
     def glossary(self) -> dict:
         return {
             "readings": self.descriptions,
             "statuses": STATUS_MEANING,
             "verdicts": VERDICT_RULE,
             "evidence": EVIDENCE_CLASSES,
+            "terms": TERMS,
         }
 
     def context(self) -> dict:
@@ -676,6 +784,8 @@ class PageBuilder:
         evidence = [r for r in self.rows if is_evidence(r)]
         apart = Counter(r.get("evidence", "") for r in self.rows if not is_evidence(r))
         return {
+            "provenance": self.provenance(),
+            "outcome": outcome_line(halves),
             "cards": cards,
             "halves": halves,
             "verdicts": VERDICTS,
@@ -716,6 +826,28 @@ class PageBuilder:
                     **page, file_label="plain text", lines=path.read_text(errors="replace").splitlines()
                 )
             write_atomically(out, text)
+
+
+def replication_extent(k: int, n: int) -> str:
+    """The share of decided claim checks reproduced, in words (the thresholds are the sentence's only
+    judgement: all, most, some, none)."""
+    if n == 0:
+        return "decides nothing"
+    if k == n:
+        return "replicates"
+    if 2 * k > n:
+        return "replicates for the most part"
+    return "replicates in part" if k else "does not replicate"
+
+
+def outcome_line(halves: list[dict]) -> str:
+    """One line under the primary reading: per half of the paper, the checks reproduced of those decided."""
+    parts = [
+        f"{h['title'].split(' (')[0]} {replication_extent(h['k'], h['n'])} "
+        f"({h['k']} of {h['n']} decided claim checks reproduced)"
+        for h in halves
+    ]
+    return "Under the primary reading: " + "; ".join(parts) + "."
 
 
 def relative_href(target: Path, page: Path) -> str:
