@@ -510,13 +510,18 @@ def cmd_fe(args) -> int:
 
     started = time.perf_counter()
 
+    announced = []
+
     def progress(label):
+        if not announced:  # once the run starts: a refused input is answered before any "running"
+            announced.append(label)
+            note = f"running {args.scene} ({args.model}); progress every 2 s on stderr"
+            print(note, file=sys.stderr, flush=True)
         return step_callback(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
 
     root = api.project_root(args.root)
     config = api.load_project_config(args.configfile, root)
     _outputs(args, root, config, keys=("output", "plot"))
-    print(f"running {args.scene} ({args.model}); progress every 2 s on stderr", file=sys.stderr, flush=True)
     ds = api.simulate_fe(
         args.scene,
         speed=args.speed,
