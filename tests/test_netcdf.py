@@ -1,5 +1,7 @@
 """Datasets carry units, long names and provenance, and are written atomically."""
 
+import re
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -125,6 +127,25 @@ def test_a_full_disk_is_named_before_anything_is_written(tmp_path, monkeypatch):
         _write(ds, tmp_path / "a.nc")
     assert isinstance(info.value, netcdf.DiskFullError) and info.value.errno == netcdf.errno.ENOSPC
     assert "a.nc" in str(info.value) and list(tmp_path.iterdir()) == []
+
+
+def test_the_size_estimate_bounds_the_written_file_and_the_message_states_it_and_the_floor(
+    tmp_path, monkeypatch
+):
+    """Many small variables with long attributes: the file is far larger than the data (HDF5 structure)."""
+    ds = xr.Dataset(
+        {f"v{i}": ("t", np.arange(10.0), {"comment": "x" * 500}) for i in range(60)},
+        attrs={"note": "y" * 5000},
+    )
+    path = _write(ds, tmp_path / "many.nc")
+    assert netcdf.estimated_file_bytes(ds) >= path.stat().st_size > 10 * ds.nbytes
+    monkeypatch.setattr(netcdf.shutil, "disk_usage", _disk_with(2 << 20))
+    big = ds.assign(big=("n", np.zeros(400_000)))  # 3.2 MB of data, 2 MiB free
+    needed = netcdf.estimated_file_bytes(big)
+    with pytest.raises(netcdf.DiskFullError, match=r"needs an estimated \d+ bytes.*at least 1048576") as info:
+        _write(big, tmp_path / "b.nc")
+    stated = int(re.search(r"estimated (\d+) bytes", str(info.value))[1])
+    assert needed <= stated < needed + 20_000  # plus the provenance attributes the writer adds
 
 
 def test_a_write_that_fails_on_a_disk_that_filled_up_is_named_and_leaves_nothing(tmp_path, monkeypatch):

@@ -279,9 +279,24 @@ class DiskFullError(OSError):
     def __init__(self, path: Path, free: int, needed: int):
         super().__init__(
             errno.ENOSPC,
-            f"no space left on device writing {path}: {free} bytes free in {path.parent}, the dataset holds "
-            f"{needed} bytes (nothing was written under that name)",
+            f"no space left on device writing {path}: {free} bytes free in {path.parent}; the file needs an "
+            f"estimated {needed} bytes (data, attributes and ~{VARIABLE_OVERHEAD_BYTES // 1024} KiB of "
+            f"HDF5 structure per variable), and a write needs at least {MIN_FREE_BYTES} bytes (1 MiB) free "
+            "(nothing was written under that name)",
         )
+
+
+#: HDF5 structure per netCDF-4 variable (headers, chunk index, attribute heap), bounded from above by the
+#: project's own datasets (a file of ~100 variables and ~10 KB of data takes ~400 KB).
+VARIABLE_OVERHEAD_BYTES = 4096
+
+
+def estimated_file_bytes(ds: xr.Dataset) -> int:
+    """What writing ``ds`` takes on disk at most: its data, the text of its attributes and the HDF5
+    structure of each variable (compression only makes the file smaller)."""
+    attrs = sum(len(str(v)) + len(str(k)) for k, v in ds.attrs.items())
+    attrs += sum(len(str(v)) + len(str(k)) for var in ds.variables.values() for k, v in var.attrs.items())
+    return int(ds.nbytes) + attrs + VARIABLE_OVERHEAD_BYTES * (len(ds.variables) + 1)
 
 
 def _check_free_space(path: Path, needed: int) -> None:
@@ -319,12 +334,13 @@ def write_dataset(
     ds.attrs = _merged_attrs(ds.attrs, prov)
     ds = cf_fill_in(index_text_dimensions(ds))
     encoding = cf_encoding(ds)
-    _check_free_space(path, int(ds.nbytes))
+    needed = estimated_file_bytes(ds)
+    _check_free_space(path, needed)
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
         if exc.errno == errno.ENOSPC:
-            raise DiskFullError(path, shutil.disk_usage(path.parent).free, int(ds.nbytes)) from None
+            raise DiskFullError(path, shutil.disk_usage(path.parent).free, needed) from None
         raise
     os.close(fd)
     try:
@@ -336,10 +352,8 @@ def write_dataset(
         if isinstance(exc, Exception):
             # measured with the partial file gone: what is free is what the write could have had
             free = shutil.disk_usage(path.parent).free
-            if (isinstance(exc, OSError) and exc.errno == errno.ENOSPC) or free < max(
-                int(ds.nbytes), MIN_FREE_BYTES
-            ):
-                raise DiskFullError(path, free, int(ds.nbytes)) from exc
+            if (isinstance(exc, OSError) and exc.errno == errno.ENOSPC) or free < max(needed, MIN_FREE_BYTES):
+                raise DiskFullError(path, free, needed) from exc
         raise
     return path
 
