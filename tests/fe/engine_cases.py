@@ -165,9 +165,9 @@ def run_mapping(c: dict):
         r.extra["first_physical_coordinate"] = n_modal
         return r
     s = build_continuum(
-        BeamParams(**c["beam"]), DiscParams(**c["disc"]), ContactParams(**c["contact"]),
-        STICKY if c["sticky"] else FIG17, nx=100, ny=1, damping_beta=c["damping_beta"],
-        disc_rotation=c["rotation"],
+        BeamParams(**c["beam"]), DiscParams(**{**c["disc"], "direction": c["rotation"]}),
+        ContactParams(**c["contact"]), STICKY if c["sticky"] else FIG17, nx=100, ny=1,
+        damping_beta=c["damping_beta"],
     )  # fmt: skip
     dt = c["dt_factor"] * continuum_stable_time_step(s)
     return integrate_continuum(

@@ -35,9 +35,10 @@ BEAM = BeamParams()
 FIG17 = FrictionTable.paper_fig17()
 
 
-def scene(nx=100, ny=1, speed=0.5, friction=FIG17, **kw):
+def scene(nx=100, ny=1, speed=0.5, friction=FIG17, disc_rotation="clockwise", **kw):
     contact = ContactParams(**kw.pop("contact", {}))
-    return build_continuum(BEAM, DiscParams(surface_speed_mm_s=speed), contact, friction, nx=nx, ny=ny, **kw)
+    disc = DiscParams(surface_speed_mm_s=speed, direction=disc_rotation)
+    return build_continuum(BEAM, disc, contact, friction, nx=nx, ny=ny, **kw)
 
 
 def without_contact(s):
@@ -336,7 +337,7 @@ def test_penalty_spring_shortens_the_step_and_progress_reports_the_end():
         (lambda: scene(0, 1), "nx"),
         (lambda: scene(10, 1, damping_beta=-1.0), "damping_beta"),
         (lambda: scene(10, 1, contact_position=0.0), "contact_position"),
-        (lambda: scene(10, 1, disc_rotation="up"), "disc_rotation"),
+        (lambda: scene(10, 1, disc_rotation="up"), "direction"),  # the disc's own, checked by DiscParams
         (lambda: scene(10, 1, output_node="middle"), "output_node"),
         (lambda: integrate_continuum(scene(10, 1), -1.0), "duration"),
         (lambda: integrate_continuum(scene(10, 1), 1e-4, safety_factor=1.5), "safety_factor"),
@@ -404,3 +405,17 @@ def test_reruns_are_bit_identical():
     assert a.dt == b.dt
     for k in ("x", "y", "vx", "vy", "normal_force", "friction_force", "slip_velocity", "state"):
         assert np.array_equal(getattr(a, k), getattr(b, k))
+
+
+@pytest.mark.parametrize("factor", [1.5, -1.0, 0.0])
+def test_both_explicit_integrators_refuse_a_step_factor_outside_0_1_naming_it(factor):
+    """A factor above 1 steps past the stability limit; the beam's integrator ran such a step unchecked."""
+    from stickslip.fe.explicit import integrate
+    from stickslip.fe.params import SceneParams
+    from stickslip.fe.scene import build_scene
+
+    with pytest.raises(ValueError, match="safety_factor: must lie in"):
+        integrate_continuum(scene(10, 1), 1e-4, safety_factor=factor)
+    beam = build_scene(SceneParams.from_mapping({"disc": {"speed_rev_per_min": 15.2}}), FIG17)
+    with pytest.raises(ValueError, match="safety_factor: must lie in"):
+        integrate(beam.system, beam.law, 1e-4, safety_factor=factor)

@@ -70,9 +70,9 @@ class BoundedSolver:
             with np.errstate(all="ignore"):
                 traj = self.inner.solve(model, t_end, t_eval)
         except (ValueError, ArithmeticError) as exc:  # e.g. a root search on an overflowing segment
-            from ..solvers.base import SolverStats, Trajectory
+            from ..solvers.base import SolverStats, Trajectory, default_t_eval
 
-            t = np.asarray(t_eval if t_eval is not None else np.linspace(0, t_end, 2001), dtype=float)
+            t = default_t_eval(t_end, t_eval)  # the samples the inner solver would have returned
             stats = SolverStats(
                 status="failed", message=f"numerical failure while integrating: {exc}", failures=1
             )

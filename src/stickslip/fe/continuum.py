@@ -37,7 +37,7 @@ import scipy.sparse.linalg as spla
 
 from . import engine
 from .driver import SEPARATED, STICK, ExplicitResult, drive, pack_result
-from .params import BeamParams, ContactParams, DiscParams, FrictionTable
+from .params import DEFAULT_SAFETY_FACTOR, BeamParams, ContactParams, DiscParams, FrictionTable, check_run
 
 OUTPUT_NODES = ("free_end_lower", "free_end_upper", "free_end_axis", "contact")
 CONTINUUM_METHODS = ("kinematic", "penalty")
@@ -244,14 +244,13 @@ def build_continuum(
     output_node: str | int = "free_end_lower",
     damping_beta: float = 0.0,
     contact_position: float | None = None,
-    disc_rotation: str = "clockwise",
     constrain_upper_face: bool = False,
     candidate_gap: float | None = None,
 ) -> ContinuumScene:
     """Assemble the strip and place the disc.
 
     ``contact_position``: x of the lower-face touching point [mm] (default L, the free-end lower corner); it
-    snaps to the nearest lower-face node. ``disc_rotation``: "clockwise" (paper) or "counterclockwise".
+    snaps to the nearest lower-face node. The disc turns as ``disc.direction`` says (clockwise in the paper).
     ``constrain_upper_face``: hold u_y = 0 on the upper face (Section 10). ``candidate_gap``: lower-face
     nodes with an initial gap below it are slave nodes (default h). ``contact.surface_offset`` does not
     apply: the strip's contact is on its lower face by construction.
@@ -260,8 +259,6 @@ def build_continuum(
         raise ValueError(f"method: the continuum strip supports {CONTINUUM_METHODS}, got {contact.method!r}")
     if not (isinstance(damping_beta, (int, float)) and math.isfinite(damping_beta) and damping_beta >= 0):
         raise ValueError(f"damping_beta: must be a finite number >= 0, got {damping_beta!r}")
-    if disc_rotation not in ("clockwise", "counterclockwise"):
-        raise ValueError(f"disc_rotation: must be 'clockwise' or 'counterclockwise', got {disc_rotation!r}")
     mesh = strip_mesh(beam, nx, ny)
     K, mass, f, ke, me = assemble_strip(mesh, beam)
     fixed = np.zeros(mesh.n_dof, bool)
@@ -296,7 +293,7 @@ def build_continuum(
         raise ValueError(f"candidate_gap: must be > 0, got {candidate_gap!r}")
     cand = np.nonzero((gaps < gmax) & (np.arange(lx.size) > 0))[0]
     normals = rel[cand] / dist[cand, None]
-    sgn = 1.0 if disc_rotation == "clockwise" else -1.0
+    sgn = 1.0 if disc.direction == "clockwise" else -1.0
     tangents = sgn * np.column_stack([normals[:, 1], -normals[:, 0]])
     gap0 = np.maximum(gaps[cand], 0.0)
     gap0[cand == k0] = 0.0
@@ -393,10 +390,13 @@ def stable_time_step(scene: ContinuumScene, method: str = "global") -> float:
 
 
 def increments(
-    scene: ContinuumScene, duration: float, safety_factor: float = 0.9, method: str = "global"
+    scene: ContinuumScene,
+    duration: float,
+    safety_factor: float = DEFAULT_SAFETY_FACTOR,
+    method: str = "global",
 ) -> int:
     """Number of explicit increments to reach ``duration`` at safety_factor * dt_crit."""
-    _check_run(duration, safety_factor)
+    check_run(duration, safety_factor)
     return int(math.ceil(duration / (safety_factor * stable_time_step(scene, method)) - 1e-9))
 
 
@@ -456,13 +456,6 @@ def natural_frequencies(scene: ContinuumScene, n_modes: int = 10, contact_held: 
 
 
 # ------------------------------------------------------------------------------------------ integration
-def _check_run(duration: float, safety_factor: float) -> None:
-    if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
-        raise ValueError(f"duration: must be a positive finite number, got {duration!r}")
-    if not (isinstance(safety_factor, (int, float)) and 0 < safety_factor <= 1):
-        raise ValueError(f"safety_factor: must lie in (0, 1], got {safety_factor!r}")
-
-
 def quad_structure(scene: ContinuumScene, dt: float) -> engine.QuadStructure:
     """The engine's structure piece: the distinct element stiffnesses and each element's kind and DOFs,
     the lumped mass inverted (0 on constrained DOFs), gravity, stiffness-proportional damping."""
@@ -507,7 +500,7 @@ def integrate_continuum(
     scene: ContinuumScene,
     duration: float,
     *,
-    safety_factor: float = 0.9,
+    safety_factor: float = DEFAULT_SAFETY_FACTOR,
     output_interval: float | None = None,
     initial_state: str = "drop",
     progress=None,
@@ -533,7 +526,7 @@ def integrate_continuum(
     ``blowup=1e3`` mm (not 1e6); no second-half counts, and a blow-up reports the end of its chunk as the
     steps done (``n_steps``).
     """
-    _check_run(duration, safety_factor)
+    check_run(duration, safety_factor)
     if initial_state not in CONTINUUM_INITIAL_STATES:
         raise ValueError(f"initial_state: must be one of {CONTINUUM_INITIAL_STATES}, got {initial_state!r}")
     dt_crit = stable_time_step(scene)

@@ -16,6 +16,8 @@ from typing import Any
 
 import numpy as np
 
+from .mechanics import disc_surface_speed
+
 CONTACT_METHODS = ("kinematic", "penalty", "fixed_normal")
 MASS_KINDS = ("lumped", "consistent")
 INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
@@ -176,7 +178,7 @@ class DiscParams:
         """Disc surface speed at the contact [mm s-1]."""
         if self.surface_speed_mm_s is not None:
             return float(self.surface_speed_mm_s)
-        return float(self.speed_rev_per_min) * 2.0 * math.pi / 60.0 * self.diameter / 2.0
+        return disc_surface_speed(float(self.speed_rev_per_min), self.diameter)
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> DiscParams:
@@ -214,13 +216,29 @@ class ContactParams:
         return _from_mapping(cls, data, "contact.")
 
 
+#: dt = safety_factor * dt_crit: the one default of every explicit integrator and of the scenes' solver
+DEFAULT_SAFETY_FACTOR = 0.9
+
+
+def check_run(duration, safety_factor) -> None:
+    """An explicit run's window and step factor, checked before any work (ValueError naming the key)."""
+    if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration: must be a positive finite number, got {duration!r}")
+    if not (isinstance(safety_factor, (int, float)) and 0 < safety_factor <= 1):
+        raise ValueError(
+            f"safety_factor: must lie in (0, 1] (a step above dt_crit is unstable), got {safety_factor!r}"
+        )
+
+
 @dataclass(frozen=True)
 class SolverParams:
     """Explicit central-difference settings."""
 
     #: simulated time [s] (the 1-DOF runs' name)
     t_end: float = declared(1.0, Bound(gt=0, description="simulated time [s]"))
-    safety_factor: float = declared(0.9, Bound(gt=0, le=1))  #: dt = safety_factor * 2 / omega_max [-]
+    safety_factor: float = declared(
+        DEFAULT_SAFETY_FACTOR, Bound(gt=0, le=1)
+    )  #: dt = safety_factor * 2 / omega_max [-]
     #: sampling interval of the stored trajectory [s]
     output_dt: float = declared(1.0e-5, Bound(gt=0, description="output interval [s]"))
     #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)

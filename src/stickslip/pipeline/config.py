@@ -233,7 +233,10 @@ def check_fe_lengths(
     if allow_expensive or any(beam.get(k) is None for k in needed):
         return
     wave_speed = (beam["youngs_modulus_gpa"] * 1e9 / beam["density_kg_m3"]) ** 0.5 * 1e3  # mm/s
-    step = solver.get("safety_factor", 1.0) * beam["length"] / beam["n_elements"] / wave_speed
+    from ..fe.params import DEFAULT_SAFETY_FACTOR
+
+    factor = solver.get("safety_factor", DEFAULT_SAFETY_FACTOR)
+    step = factor * beam["length"] / beam["n_elements"] / wave_speed
     cost = beam["n_elements"] * t_end / step
     if cost > MAX_FE_ELEMENT_INCREMENTS:
         raise ConfigError(

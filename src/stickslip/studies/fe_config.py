@@ -11,6 +11,7 @@ from __future__ import annotations
 import copy
 from collections.abc import Mapping
 
+from ..fe.params import DEFAULT_SAFETY_FACTOR
 from ..fe.step_halving import HALF_STEP
 
 #: The fields of an FE mapping (a scene's, or the ``fe`` section a study reads) that the perturbation
@@ -126,5 +127,5 @@ def window_mapping(fe_cfg: Mapping, name: str) -> dict:
 
 def halved_step(mapping: Mapping) -> dict:
     """The scene mapping with its explicit time step halved (safety factor x 0.5)."""
-    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", 0.9))
+    sf = float((mapping.get("solver", {}) or {}).get("safety_factor", DEFAULT_SAFETY_FACTOR))
     return deep_merge(mapping, {"solver": {"safety_factor": HALF_STEP * sf}})

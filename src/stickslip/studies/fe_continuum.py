@@ -43,9 +43,7 @@ def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: 
         ny=ny,
         output_node=p.contact.output_node,
         damping_beta=p.solver.stiffness_damping,
-        disc_rotation=p.disc.direction,
         constrain_upper_face=upper,
-        contact_position=None if p.contact.surface_offset else None,
     )
 
 

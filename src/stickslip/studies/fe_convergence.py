@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 
 from ..fe.beam import cantilever_errors
-from ..fe.params import FrictionTable
+from ..fe.params import DEFAULT_SAFETY_FACTOR, FrictionTable
 from ..fe.quantities import INTERPRETATION, metric_attrs
 from .fe_config import deep_merge, scene_mapping
 from .fe_scene import run_scene
@@ -79,7 +79,7 @@ def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
     cv = fe_cfg["convergence"]
     base = scene_mapping(fe_cfg, cv["base"])
     n_el = list(cv["n_elements"])
-    sfs = list(cv.get("safety_factors", [base.get("solver", {}).get("safety_factor", 0.9)]))
+    sfs = list(cv.get("safety_factors", [base.get("solver", {}).get("safety_factor", DEFAULT_SAFETY_FACTOR)]))
     vals, dt, bend_err, ax_err = _grid_runs(cv, base, n_el, sfs, friction)
     dims = ("n_elements", "safety_factor")
     ds = xr.Dataset(coords=_grid_coords(n_el, sfs))
