@@ -1,6 +1,7 @@
 """The forward model of the identification: the exact event-driven solver and the claims' metrics.
 
-A parameter set is run exactly as the pipeline runs a scene (same t_end, sample spacing, steady window) and
+A parameter set is run (the compiled exact solver, ``solvers.exact_compiled``) exactly as the pipeline runs
+a scene (same t_end, sample spacing, steady window) and
 measured with the same definitions as ``analysis.metrics.limit_cycle_metrics`` (only the metrics a value
 claim can name, without the spectrum, which no fitted claim uses; ``tests/test_inverse.py`` checks they are
 equal). A run that fails, leaves finite numbers, or cannot produce a reported metric (no complete stick
@@ -24,13 +25,15 @@ from ..model.friction import AffineFriction, friction_law
 from ..model.params import BeltParams, ParameterError
 from ..solvers.base import STICK, Trajectory
 from ..solvers.exact import ExactSwitchSolver
+from ..solvers.exact_compiled import CompiledExactSolver
 from .problem import Problem
 
 
-class StaticKineticSolver(ExactSwitchSolver):
+class StaticKineticSolver(CompiledExactSolver):
     """The exact solver with a stick limit ``static_force`` [N] larger than the slip friction's |a|.
 
-    Stick and the stick/slip decision use the static limit; slip uses the model's own (kinetic) law.
+    Stick and the stick/slip decision use the static limit; slip uses the model's own (kinetic) law. Compiled
+    (``_stick_a``); the Python hooks below are its reference (``exact_compiled.python_reference``).
     """
 
     def __init__(self, static_force: float, **kwargs):
@@ -39,6 +42,9 @@ class StaticKineticSolver(ExactSwitchSolver):
             raise ParameterError(f"static_force: must be a positive number, got {static_force!r}")
         self.static_force = float(static_force)
         self.name = "exact_static_kinetic"
+
+    def _stick_a(self, model: BeltModel) -> float:
+        return -self.static_force
 
     def _static_model(self, model: BeltModel) -> BeltModel:
         return BeltModel(model.params, replace(model.friction, a=-self.static_force))
@@ -69,7 +75,7 @@ def build_model(params: BeltParams, variant: str, eq4_term: bool = False, mu_k_r
             plateau_speed=law.plateau_speed,
         )
         return BeltModel(params, law), StaticKineticSolver(params.mu_s * params.normal_force)
-    return BeltModel(params, law), ExactSwitchSolver()
+    return BeltModel(params, law), CompiledExactSolver()
 
 
 def observe(traj: Trajectory, transient: float, count_window: float, names) -> dict:

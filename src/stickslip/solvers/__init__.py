@@ -17,7 +17,7 @@ from .base import (
 #: imported on first use (module ``__getattr__``): a job that only reads trajectories and draws them need not
 #: import scipy's optimisers and integrators (~0.3 s of every such job's start).
 REGISTRY = {
-    "exact": ("exact", "ExactSwitchSolver"),
+    "exact": ("exact_compiled", "CompiledExactSolver"),  # numba; the pure-Python reference: ExactSwitchSolver
     "sign_rk": ("sign_rk", "SignRungeKutta"),
     "smooth": ("smooth", "SmoothedSign"),
     "karnopp": ("karnopp", "Karnopp"),
@@ -25,6 +25,7 @@ REGISTRY = {
     "switch": ("switch", "SwitchSolver"),  # any friction law (model/laws.py); affine laws: agrees with exact
 }
 _MODULE_OF = {cls: module for module, cls in REGISTRY.values()}
+_MODULE_OF["ExactSwitchSolver"] = "exact"  # the exact method's pure-Python reference (tests, benchmarks)
 
 
 def __getattr__(name: str):
@@ -57,6 +58,7 @@ __all__ = [
     "SolverStats",
     "Trajectory",
     "ExactSwitchSolver",
+    "CompiledExactSolver",
     "SignRungeKutta",
     "SwitchSolver",
     "METHODS",

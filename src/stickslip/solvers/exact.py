@@ -6,6 +6,11 @@ closed-form root. Slip: a linear ODE with constant coefficients (``LinearSegment
 v_r = 0 is bracketed on a grid of the closed form and refined with Brent's method to machine precision.
 Tangential returns (grazing) are caught at the local minima of |v_r|, so an orbit that touches the belt
 velocity without crossing it is not missed. The belt's stop (decelerating scene) is a scheduled event.
+
+This module is the pure-Python statement of the algorithm and the tests' reference. The pipeline's method
+``exact`` runs the same algorithm compiled: ``exact_compiled.CompiledExactSolver`` (``exact_kernel``), which
+agrees with this one to the root search's tolerance (``tests/solvers/test_exact_compiled.py``); an edit to
+the algorithm here must be made there too.
 """
 
 from __future__ import annotations
@@ -60,7 +65,8 @@ def first_exit_root(c0: float, c1: float, c2: float) -> float:
 
 @dataclass
 class ExactSwitchSolver(EventDrivenSolver):
-    """Reference solver; ``graze_tolerance`` is relative to the model's velocity scale."""
+    """The exact solver in pure Python, the reference of the compiled ``CompiledExactSolver`` (the method
+    ``exact``); ``graze_tolerance`` is relative to the model's velocity scale."""
 
     samples_per_period: int = 64
     graze_tolerance: float = 1e-12
