@@ -58,3 +58,15 @@ def _exists(path: str) -> bool:
 )
 def test_every_repository_path_the_pages_cite_exists(page, path):
     assert not path or path in WRITTEN or _exists(path), f"{page}: {path} does not exist"
+
+
+def test_the_readmes_time_budgets_are_the_benchmarks_targets():
+    """The README's budgets are the ones benchmarks/bench_pipeline.py measures against."""
+    import importlib.util as iu
+
+    spec = iu.spec_from_file_location("bench_pipeline", ROOT / "benchmarks" / "bench_pipeline.py")
+    bench = iu.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    build, tests = (int(bench.TARGETS[k]) for k in ("clean make figures", "clean make test"))
+    text = " ".join(TEXT["README.md"].split())
+    assert f"a clean build is budgeted at {build} s including the install and the tests at {tests} s" in text
