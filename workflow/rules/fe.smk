@@ -252,7 +252,7 @@ rule fe_figures:
                 for c in CLAIMS
                 if n in c.figures and c.unit in ("mm", "mm s-1", "s") and c.value is not None
             ]
-            for n in range(21, 37)
+            for n in paths.fe_paper_figure_numbers()
         },
         # Fig. 31: the "several times the initial normal force" the claims row compares with
         paper_normal_force_ratio=next(

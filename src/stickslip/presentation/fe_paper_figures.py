@@ -17,6 +17,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, Rectangle
 
+from .. import catalogue as paths
 from .fe_plots import band_columns, grouped, power_of_ten, scaled_ylabel, shade_states, state_legend_handles
 
 #: the running mean drawn over the band averages this many seconds (several periods of the 366 Hz mode)
@@ -109,7 +110,7 @@ TIME_SERIES = {
     ),
     36: PaperFigure(12, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (contact at 30°)"),
 }
-PAPER_FIGURE_NUMBERS = tuple(range(21, 37))
+PAPER_FIGURE_NUMBERS = tuple(paths.fe_paper_figure_numbers())  # one home: the catalogue
 #: how the sketches name each contact method (stickslip.fe.params.ContactParams.method)
 METHOD_NOTE = {
     "kinematic": "kinematic contact (exact\nnon-penetration, may separate)",
