@@ -36,6 +36,7 @@ EXCLUDED_FOLDERS = ("logs", "benchmarks")
 EXCLUDED_FILES: dict[str, str] = {
     "figures/methods/*_work_precision.png": "the work-precision diagrams plot measured CPU time",
     "notebooks/methods_work_precision.*": "the methods notebook tabulates and plots measured CPU time",
+    "notebooks/validation_friction_laws.*": "the friction-law validation plots measured CPU time",
 }
 #: (fnmatch pattern, regular expression, why): text left out of the files the pattern names.
 VOLATILE: tuple[tuple[str, str, str], ...] = (
