@@ -55,6 +55,8 @@ def timed(label: str, cmd: list[str], cwd: Path, log: Path) -> dict:
         proc = subprocess.run(cmd, cwd=cwd, stdout=fh, stderr=subprocess.STDOUT)
     wall, cpu = time.perf_counter() - t0, children_cpu() - cpu0
     print(f"  {label}: exit {proc.returncode}, {wall:.1f} s elapsed, {cpu:.1f} s CPU (log {log})", flush=True)
+    if proc.returncode:  # the temporary folder goes at the end: show why here
+        print("    " + "\n    ".join(log.read_text().splitlines()[-40:]), flush=True)
     return {"step": label, "exit": proc.returncode, "wall_s": wall, "cpu_s": cpu}
 
 
