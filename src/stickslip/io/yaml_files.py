@@ -60,8 +60,9 @@ def _where(path: Path, mark) -> str:
 MAX_EXPANDED_NODES = 1_000_000
 
 
-def _expanded_size(root) -> int:
-    sizes: dict[int, int] = {}
+def _expanded_size(root, sizes: dict[int, int] | None = None) -> int:
+    """Nodes under ``root`` once every alias is expanded (``sizes``, if given, gets every node's)."""
+    sizes = {} if sizes is None else sizes
     stack = [(root, False)]
     while stack:
         node, done = stack.pop()
@@ -90,13 +91,28 @@ def _refuse_alias_bombs(path: Path, text: str) -> None:
     root = yaml.compose(text, Loader=_BASE)
     if root is None:
         return
-    size = _expanded_size(root)
+    sizes: dict[int, int] = {}
+    size = _expanded_size(root, sizes)
     if size > MAX_EXPANDED_NODES:
-        first = next(t for t in yaml.scan(text, Loader=_BASE) if isinstance(t, yaml.AliasToken))
+        key, node = _largest_entry(root, sizes)
         raise YamlFileError(
-            f"{_where(path, first.start_mark)}: YAML aliases (first *{first.value[:40]}) expand this file to "
-            f"{size:.3g} nodes, more than the limit {MAX_EXPANDED_NODES:.0e}: config files are plain data"
+            f"{_where(path, node.start_mark)}: {key or 'the document'}: YAML aliases expand it to "
+            f"{sizes[id(node)]:.3g} nodes (the file to {size:.3g}), more than the limit "
+            f"{MAX_EXPANDED_NODES:.0e}: config files are plain data"
         )
+
+
+def _largest_entry(root, sizes: dict[int, int]) -> tuple[str, object]:
+    """The dotted key of the deepest mapping entry that alone expands beyond the limit, and its node (the
+    place to name: the entry that blows up, not the first alias of the file)."""
+    key, node = "", root
+    while isinstance(node, yaml.MappingNode):
+        big = [(k, v) for k, v in node.value if sizes[id(v)] > MAX_EXPANDED_NODES]
+        if not big:
+            break
+        k, node = big[0]
+        key = f"{key}.{k.value}" if key else str(k.value)
+    return key, node
 
 
 def _key_parts(key: str) -> list:
