@@ -9,7 +9,7 @@ from pydantic import ValidationError
 
 from stickslip.claims.evaluate import evaluate
 from stickslip.claims.load import load_claims
-from stickslip.claims.models import annotate, read_comparison
+from stickslip.claims.models import annotate, read_comparison, unchecked
 from stickslip.claims.rows import Claim, ClaimRow
 
 BEAM = "results/fe/lower_face_drop/s10.nc"
@@ -125,3 +125,19 @@ def test_a_growth_verdict_cites_both_models_at_both_steps(tmp_path):
     result = evaluate(annotated, "", lambda path: xr.Dataset({"first_mode_growth_rate": 0.565}))
     assert result.status == "reproduced"
     assert "beam 0.565/0.536, continuum 0.523/0.57 (agree)" in result.reason
+
+
+def test_a_beam_row_says_which_of_its_operands_no_comparison_over_its_window_checks():
+    comparison = {
+        ("s10", "horizontal_amplitude"): {"window": "short", "agreement": "True"},
+        ("s10", "first_mode_growth_rate"): {"window": "claim", "agreement": "True"},
+    }
+    row = {**ROW, "dataset": BEAM, "model": "beam"}
+    text = unchecked(ClaimRow.model_validate({**row, "variable": "max_horizontal_displacement"}), comparison)
+    assert text == (
+        "beam value unchecked over the claim's window: the comparison covers only its short window for s10 "
+        "max_horizontal_displacement"
+    )
+    none = unchecked(ClaimRow.model_validate({**row, "variable": "max_abs_vertical_velocity"}), comparison)
+    assert none.endswith("no model comparison covers s10 max_abs_vertical_velocity")
+    assert unchecked(ClaimRow.model_validate({**row, "variable": "first_mode_growth_rate"}), comparison) == ""

@@ -10,7 +10,8 @@ claim not comparable with that reason (``Claim.not_adequate``), so its pinned st
 row be pointed at the continuum.
 
 Where a comparison row over a claim's window exists (first-mode growth, the separation burst), the claim's
-reason also cites both models' values at dt and dt/2 (``Claim.model_values``).
+reason also cites both models' values at dt and dt/2 (``Claim.model_values``); where none does, the reason
+says so (``unchecked``): the beam then decides unchecked over that window.
 """
 
 from __future__ import annotations
@@ -103,11 +104,34 @@ def model_values(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping])
     return "; ".join(dict.fromkeys(out))
 
 
+def unchecked(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
+    """The beam operands no comparison row over the claim's window covers, in words ("" when none): the
+    beam decides them unchecked against the continuum (the comparison covers 0.1 s, or nothing)."""
+    short, none = [], []
+    if claim.model != "beam":  # a closed form or the continuum decides it; a beam operand is then an input
+        return ""
+    for path, variable in beam_operands(claim):
+        scene, quantity = last_name(path), COMPARED_AS.get(variable)
+        row = comparison.get((scene, quantity)) if quantity else None
+        if row is None:
+            none.append(f"{scene} {variable}")
+        elif row.get("window", "short") != "claim":
+            short.append(f"{scene} {variable}")
+    parts = []
+    if none:
+        parts.append("no model comparison covers " + ", ".join(dict.fromkeys(none)))
+    if short:
+        parts.append("the comparison covers only its short window for " + ", ".join(dict.fromkeys(short)))
+    return ("beam value unchecked over the claim's window: " + "; ".join(parts)) if parts else ""
+
+
 def annotate(claims: Iterable[Claim], comparison: Mapping[tuple[str, str], Mapping]) -> list[Claim]:
     """Copies of the claims with ``not_adequate`` (why the comparison does not license a beam row) and
     ``model_values`` (the window comparison's values) set; both "" where they do not apply."""
     out = []
     for c in claims:
-        notes = {"not_adequate": inadequacy(c, comparison), "model_values": model_values(c, comparison)}
+        inadequate = inadequacy(c, comparison)  # not decided at all: no need to say what is unchecked
+        values = [model_values(c, comparison)] + ([] if inadequate else [unchecked(c, comparison)])
+        notes = {"not_adequate": inadequate, "model_values": "; ".join(filter(None, values))}
         out.append(c.model_copy(update=notes))
     return out
