@@ -37,7 +37,15 @@ import scipy.sparse.linalg as spla
 
 from . import engine
 from .driver import SEPARATED, STICK, ExplicitResult, drive, pack_result
-from .params import DEFAULT_SAFETY_FACTOR, BeamParams, ContactParams, DiscParams, FrictionTable, check_run
+from .params import (
+    DEFAULT_INITIAL_STATE,
+    DEFAULT_SAFETY_FACTOR,
+    BeamParams,
+    ContactParams,
+    DiscParams,
+    FrictionTable,
+    check_run,
+)
 
 OUTPUT_NODES = ("free_end_lower", "free_end_upper", "free_end_axis", "contact")
 CONTINUUM_METHODS = ("kinematic", "penalty")
@@ -502,7 +510,7 @@ def integrate_continuum(
     *,
     safety_factor: float = DEFAULT_SAFETY_FACTOR,
     output_interval: float | None = None,
-    initial_state: str = "drop",
+    initial_state: str = DEFAULT_INITIAL_STATE,
     progress=None,
     dt: float | None = None,
     u0: np.ndarray | None = None,
@@ -521,9 +529,9 @@ def integrate_continuum(
     ``u0``/``v0`` (all DOFs) override the initial displacement/velocity. ``record_state`` stores u, v (all
     DOFs) at every sample (slow path, for tests).
 
-    A thin wrapper of :func:`stickslip.fe.driver.drive`. Its defaults differ from
-    :func:`stickslip.fe.explicit.integrate`'s on purpose: ``initial_state="drop"`` (not ``static``),
-    ``blowup=1e3`` mm (not 1e6); no second-half counts, and a blow-up reports the end of its chunk as the
+    A thin wrapper of :func:`stickslip.fe.driver.drive`. It starts as :func:`stickslip.fe.explicit.integrate`
+    and the scenes do (``DEFAULT_INITIAL_STATE``, the same step factor); ``blowup`` differs on purpose
+    (1e3 mm, not 1e6); no second-half counts, and a blow-up reports the end of its chunk as the
     steps done (``n_steps``).
     """
     check_run(duration, safety_factor)

@@ -29,7 +29,7 @@ import scipy.sparse as sps
 
 from . import engine
 from .driver import SEPARATED, SLIP, STICK, ExplicitResult, drive, named_counts, pack_result
-from .params import DEFAULT_SAFETY_FACTOR, FrictionTable, check_run
+from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, check_run
 
 __all__ = ["SEPARATED", "SLIP", "STICK", "ExplicitResult", "integrate", "integrate_python"]
 
@@ -312,7 +312,7 @@ def integrate(
     dt: float | None = None,
     safety_factor: float = DEFAULT_SAFETY_FACTOR,
     output_interval: float | None = None,
-    initial_state: str = "static",
+    initial_state: str = DEFAULT_INITIAL_STATE,
     q0: np.ndarray | None = None,
     v0: np.ndarray | None = None,
     mass_damping: float = 0.0,
@@ -338,10 +338,11 @@ def integrate(
 
     Stops early (result flagged ``extra['diverged']``) if any displacement exceeds ``blowup`` mm.
 
-    A thin wrapper of :func:`stickslip.fe.driver.drive`. Its defaults differ from
-    :func:`stickslip.fe.continuum.integrate_continuum`'s on purpose: ``initial_state="static"`` (not
-    ``drop``), ``blowup=1e6`` mm (not 1e3); its result counts the second half's states apart
-    (``extra['second_half_counts']``) and a blow-up reports the sampled step at which it was found.
+    A thin wrapper of :func:`stickslip.fe.driver.drive`. It starts as
+    :func:`stickslip.fe.continuum.integrate_continuum` and the scenes do (``DEFAULT_INITIAL_STATE``, the
+    same step factor); ``blowup`` differs on purpose (1e6 mm, not 1e3: a beam run's growth is data). Its
+    result counts the second half's states apart (``extra['second_half_counts']``) and a blow-up reports
+    the sampled step at which it was found.
     """
     if backend not in ("compiled", "python"):
         raise ValueError(f"backend: must be 'compiled' or 'python', got {backend!r}")

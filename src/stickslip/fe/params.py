@@ -218,6 +218,9 @@ class ContactParams:
 
 #: dt = safety_factor * dt_crit: the one default of every explicit integrator and of the scenes' solver
 DEFAULT_SAFETY_FACTOR = 0.9
+#: how every explicit run starts unless told otherwise (config/fe.yaml's default too): undeformed, the load
+#: applied at t = 0, as an ABAQUS/Explicit step starts
+DEFAULT_INITIAL_STATE = "drop"
 
 
 def check_run(duration, safety_factor) -> None:
@@ -242,7 +245,7 @@ class SolverParams:
     #: sampling interval of the stored trajectory [s]
     output_dt: float = declared(1.0e-5, Bound(gt=0, description="output interval [s]"))
     #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
-    initial_state: str = declared("static", Bound("choice", choices=INITIAL_STATES))
+    initial_state: str = declared(DEFAULT_INITIAL_STATE, Bound("choice", choices=INITIAL_STATES))
     #: mass-proportional Rayleigh damping alpha [s-1]
     mass_damping: float = declared(0.0, Bound(ge=0, description="s-1"))
     #: stiffness-proportional Rayleigh damping beta [s]; below 1e-3 s, far above any scene's (~1e-8 s)
