@@ -9,7 +9,7 @@ from pydantic import ValidationError
 
 from stickslip.claims.evaluate import evaluate
 from stickslip.claims.load import load_claims
-from stickslip.claims.models import annotate, read_comparison, unchecked
+from stickslip.claims.models import annotate, inadequacy, read_comparison
 from stickslip.claims.rows import Claim, ClaimRow
 
 BEAM = "results/fe/lower_face_drop/s10.nc"
@@ -83,10 +83,14 @@ def test_every_beam_on_disc_row_of_the_project_names_its_model():
 
 def test_a_beam_row_whose_comparison_disagrees_is_not_decided(tmp_path):
     ds = xr.Dataset({"max_horizontal_displacement": 3e-4})
-    disagree = {"scene": "s10", "quantity": "horizontal_amplitude", "continuum": "1e-8", "beam": "3e-4"}
-    disagree |= {"agreement": "False", "note": "not the same model", "window": "short"}
+    # over the claim's window, for the variable the row reads, at dt and dt/2
+    disagree = {"scene": "s10", "quantity": "max_horizontal_displacement"}
+    disagree |= {"continuum": "1e-8", "beam": "3e-4", "agreement": "False", "note": "not the same model"}
+    disagree |= {"window": "claim", "t_end": "1.0"}
+    disagree |= {"continuum_half_step": "1e-8", "beam_half_step": "3e-4"}
     (row,) = annotate([Claim.model_validate(ROW)], _comparison(tmp_path, [disagree]))
-    assert row.not_adequate.startswith("the beam is not adequate here") and row.model_values == ""
+    assert row.not_adequate.startswith("the beam is not adequate here")
+    assert "(disagree)" in row.model_values
     result = evaluate(row, "", lambda path: ds)
     assert result.status == "not-comparable"
     assert "the beam is not adequate here" in result.reason and "not the same model" in result.reason
@@ -127,17 +131,25 @@ def test_a_growth_verdict_cites_both_models_at_both_steps(tmp_path):
     assert "beam 0.565/0.536, continuum 0.523/0.57 (agree)" in result.reason
 
 
-def test_a_beam_row_says_which_of_its_operands_no_comparison_over_its_window_checks():
-    comparison = {
-        ("s10", "horizontal_amplitude"): {"window": "short", "agreement": "True"},
-        ("s10", "first_mode_growth_rate"): {"window": "claim", "agreement": "True"},
-    }
-    row = {**ROW, "dataset": BEAM, "model": "beam"}
-    text = unchecked(ClaimRow.model_validate({**row, "variable": "max_horizontal_displacement"}), comparison)
-    assert text == (
-        "beam value unchecked over the claim's window: the comparison covers only its short window for s10 "
+def _window(agree="True", beam=("1.0", "1.0"), cont=("1.0", "1.0")):
+    return {"window": "claim", "agreement": agree, "t_end": "1.0", "beam": beam[0], "beam_half_step": beam[1],
+            "continuum": cont[0], "continuum_half_step": cont[1], "note": "n"}  # fmt: skip
+
+
+def test_a_beam_decided_row_counts_only_where_a_comparison_over_its_window_agrees():
+    row = ClaimRow.model_validate({**ROW, "dataset": BEAM, "model": "beam"})
+    assert inadequacy(row, {("s10", "max_horizontal_displacement"): _window()}) == ""
+    missing = inadequacy(row, {("s10", "horizontal_amplitude"): {"window": "short", "agreement": "True"}})
+    assert missing == (
+        "the beam is not adequate here: no comparison over the claim's window checks s10 "
         "max_horizontal_displacement"
     )
-    none = unchecked(ClaimRow.model_validate({**row, "variable": "max_abs_vertical_velocity"}), comparison)
-    assert none.endswith("no model comparison covers s10 max_abs_vertical_velocity")
-    assert unchecked(ClaimRow.model_validate({**row, "variable": "first_mode_growth_rate"}), comparison) == ""
+    disagree = inadequacy(row, {("s10", "max_horizontal_displacement"): _window("False", cont=("3", "2"))})
+    assert disagree.startswith("the beam is not adequate here: the model comparison disagrees on s10 ")
+    assert "beam 1/1 vs continuum 3/2 at dt/dt/2" in disagree
+    # a ratio of two beam scenes is checked through both scenes' quantity
+    ratio = ClaimRow.model_validate({**ROW, "dataset": "results/fe/lower_face_drop/cross_scene.nc",
+                                     "variable": "r", "model": "beam"})  # fmt: skip
+    both = {("a", "v"): _window(), ("b", "v"): _window()}
+    assert inadequacy(ratio, both, {"r": [("a", "v"), ("b", "v")]}) == ""
+    assert "checks b v" in inadequacy(ratio, {("a", "v"): _window()}, {"r": [("a", "v"), ("b", "v")]})

@@ -80,3 +80,15 @@ def test_window_rows_read_the_full_step_value_and_note_every_disagreement():
         pytest.approx([0.56, 0.30])
     )
     assert int(ds["window_agreement"].sel(window_scene="s", window_quantity="separation_burst_time")) == 0
+
+
+def test_every_scalar_both_models_hold_at_both_steps_is_compared_and_equal_values_agree():
+    from stickslip.studies.fe_comparison import window_quantities
+
+    both = {"a": 1.0, "a_half_step": 1.0}
+    both |= {"separation_burst_time": 0.4, "separation_burst_time_half_step": 0.4}
+    beam = xr.Dataset({**both, "only_beam": 2.0, "only_beam_half_step": 2.0, "no_half": 3.0,
+                       "series": ("t", [1.0, 2.0]), "series_half_step": ("t", [1.0, 2.0])})  # fmt: skip
+    assert window_quantities(xr.Dataset(both), beam) == ["separation_burst_time", "a"]
+    assert window_agrees((0.0, 0.0), (0.0, 0.0))  # no separation in either model at either step
+    assert not window_agrees((0.0, 0.0), (0.1, 0.1))

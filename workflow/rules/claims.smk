@@ -24,6 +24,8 @@ rule claims_table:
         CONDA_ENV
     params:
         readings=CLAIM_READINGS,
+        # a cross-scene ratio of beam values is checked through its two scenes (stickslip.claims.models)
+        cross_scene=canonical(config["fe"].get("cross_scene") or {}),
     script:
         "../scripts/claims_table.py"
 
@@ -46,6 +48,7 @@ rule claims_check:
         CONDA_ENV
     params:
         readings=CLAIM_READINGS,
+        cross_scene=canonical(config["fe"].get("cross_scene") or {}),
     script:
         "../scripts/claims_check.py"
 

@@ -186,6 +186,7 @@ rule fe_readings_claims:
     params:
         readings=FE_READINGS,
         scenes=FE_SCENES,
+        cross_scene=canonical(FE.get("cross_scene") or {}),
     script:
         "../scripts/fe_readings_claims.py"
 

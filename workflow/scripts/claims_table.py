@@ -10,6 +10,7 @@ from stickslip.io.netcdf import read_dataset
 
 open_dataset = lru_cache(maxsize=None)(read_dataset)
 # a beam-on-disc row decided by the beam where the model comparison disagrees is not decided (claim_models)
-claims = annotate(load_claims(snakemake.input.claims), read_comparison(snakemake.input.comparison))  # noqa: F821
+comparison = read_comparison(snakemake.input.comparison)  # noqa: F821
+claims = annotate(load_claims(snakemake.input.claims), comparison, snakemake.params.cross_scene)  # noqa: F821
 results = evaluate_all(claims, snakemake.params.readings, open_dataset)  # noqa: F821
 write_table(results, snakemake.output.csv, snakemake.output.md)

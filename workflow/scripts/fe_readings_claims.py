@@ -15,7 +15,7 @@ from stickslip.io.progress import log_to_file
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 # the model comparison (default reading) decides which model may decide a row, in every reading alike
 comparison = read_comparison(snakemake.input.comparison)  # noqa: F821
-claims = annotate(load_claims([snakemake.input.claims]), comparison)  # noqa: F821
+claims = annotate(load_claims([snakemake.input.claims]), comparison, snakemake.params.cross_scene)  # noqa: F821
 # every FE scene under every reading: where a row's run is found again in another reading
 entries = {e.path: e for e in fe_scene_entries(snakemake.params.scenes, snakemake.params.readings)}  # noqa: F821
 results = claims_per_reading(

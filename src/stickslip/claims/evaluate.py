@@ -65,7 +65,7 @@ CONCLUSION_LENGTH = 220
 #: Why a row is not comparable, as the page counts them.
 NOT_COMPARABLE_CAUSES = {
     "failure": "the solver run failed",
-    "not_adequate": "the beam is not the paper's model here (model comparison)",
+    "not_adequate": "no agreeing comparison with the continuum over the claim's window backs the beam here",
     "contradiction": "the paper contradicts this sentence elsewhere",
     "withheld": "the value moves under step halving, so it is withheld",
     "nothing": "nothing to measure in this run",

@@ -9,9 +9,10 @@ agree cannot decide the claim: the beam is not the paper's model there. The clai
 claim not comparable with that reason (``Claim.not_adequate``), so its pinned status must say so too, or the
 row be pointed at the continuum.
 
-Where a comparison row over a claim's window exists (first-mode growth, the separation burst), the claim's
-reason also cites both models' values at dt and dt/2 (``Claim.model_values``); where none does, the reason
-says so (``unchecked``): the beam then decides unchecked over that window.
+A row the beam decides needs more: a comparison row over the claim's own window (the continuum run over the
+same 1 s, every scalar both models hold, at dt and dt/2) that agrees, for every beam operand; without one
+the beam's value is no evidence either (``inadequacy``). The claim's reason cites both models' values at dt
+and dt/2 from those rows (``Claim.model_values``).
 """
 
 from __future__ import annotations
@@ -66,24 +67,57 @@ def _num(text) -> float:
         return math.nan
 
 
-def inadequacy(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
-    """Why the beam may not decide ``claim`` ("" when it may): every beam operand whose (scene, quantity)
-    comparison row disagrees, with the row's numbers and note (whatever model the row names: a continuum
-    row may compare with a beam dataset)."""
-    beam_refs = beam_operands(claim)  # a continuum row may still read the beam on its other side
-    why = []
-    for path, variable in beam_refs:
-        scene, quantity = last_name(path), COMPARED_AS.get(variable)
-        row = comparison.get((scene, quantity)) if quantity else None
-        if row is None or _agrees(row):
-            continue
-        why.append(
-            f"{scene} {quantity}: beam {_num(row['beam']):.3g} vs continuum {_num(row['continuum']):.3g} "
-            f"({row.get('window', 'short')} window; {row['note']})"
-        )
+def _window_row(comparison: Mapping[tuple[str, str], Mapping], scene: str, variable: str) -> Mapping | None:
+    row = comparison.get((scene, variable))
+    return row if row is not None and row.get("window") == "claim" else None
+
+
+def _window_text(scene: str, variable: str, row: Mapping) -> str:
     return (
-        ("the beam is not adequate here: the model comparison disagrees on " + "; ".join(why)) if why else ""
+        f"{scene} {variable} over {_num(row['t_end']):g} s: beam {_num(row['beam']):.3g}/"
+        f"{_num(row['beam_half_step']):.3g} vs continuum {_num(row['continuum']):.3g}/"
+        f"{_num(row['continuum_half_step']):.3g} at dt/dt/2 ({row['note']})"
     )
+
+
+def inadequacy(
+    claim: ClaimRow,
+    comparison: Mapping[tuple[str, str], Mapping],
+    constituents: Mapping[str, list[tuple[str, str]]] | None = None,
+) -> str:
+    """Why the beam may not decide ``claim`` ("" when it may).
+
+    A row the beam decides (``model: beam``) needs, for every beam operand, a comparison row over the
+    claim's window (``window == "claim"``) for that scene and variable that agrees: one that disagrees, or
+    none, and the beam's value is no evidence. A cross-scene ratio is checked through its two scenes'
+    quantity (``constituents``: variable -> [(scene, variable), ...]). A beam operand of another row (the
+    other side of a continuum row) is held to the comparison rows there are (its window's, else the short
+    window's quantity)."""
+    disagree, missing = [], []
+    for path, variable in beam_operands(claim):
+        scene = last_name(path)
+        for sc, var in (constituents or {}).get(variable) or [(scene, variable)]:
+            row = _window_row(comparison, sc, var)
+            if row is not None:
+                if not _agrees(row):
+                    disagree.append(_window_text(sc, var, row))
+                continue
+            if claim.model == "beam":
+                missing.append(f"{sc} {var}")
+                continue
+            quantity = COMPARED_AS.get(var)
+            short = comparison.get((sc, quantity)) if quantity else None
+            if short is not None and not _agrees(short):
+                disagree.append(
+                    f"{sc} {quantity}: beam {_num(short['beam']):.3g} vs continuum "
+                    f"{_num(short['continuum']):.3g} ({short.get('window', 'short')} window; {short['note']})"
+                )
+    parts = []
+    if disagree:
+        parts.append("the model comparison disagrees on " + "; ".join(dict.fromkeys(disagree)))
+    if missing:
+        parts.append("no comparison over the claim's window checks " + ", ".join(dict.fromkeys(missing)))
+    return ("the beam is not adequate here: " + "; ".join(parts)) if parts else ""
 
 
 def model_values(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
@@ -91,12 +125,14 @@ def model_values(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping])
     operands (beam or continuum) read; "" when there is none."""
     out = []
     for _, ref in claim.dataset_refs():
-        scene, quantity = last_name(ref.dataset), COMPARED_AS.get(ref.variable or "")
-        row = comparison.get((scene, quantity)) if quantity else None
-        if row is None or row.get("window") != "claim":
+        scene, variable = last_name(ref.dataset), ref.variable or ""
+        row = _window_row(comparison, scene, variable) or _window_row(
+            comparison, scene, COMPARED_AS.get(variable, "")
+        )
+        if row is None:
             continue
         out.append(
-            f"model comparison over {_num(row['t_end']):g} s, {scene} {quantity} at dt/dt/2: beam "
+            f"model comparison over {_num(row['t_end']):g} s, {scene} {row['quantity']} at dt/dt/2: beam "
             f"{_num(row['beam']):.3g}/{_num(row['beam_half_step']):.3g}, continuum "
             f"{_num(row['continuum']):.3g}/{_num(row['continuum_half_step']):.3g} "
             f"({'agree' if _agrees(row) else 'disagree'})"
@@ -104,34 +140,19 @@ def model_values(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping])
     return "; ".join(dict.fromkeys(out))
 
 
-def unchecked(claim: ClaimRow, comparison: Mapping[tuple[str, str], Mapping]) -> str:
-    """The beam operands no comparison row over the claim's window covers, in words ("" when none): the
-    beam decides them unchecked against the continuum (the comparison covers 0.1 s, or nothing)."""
-    short, none = [], []
-    if claim.model != "beam":  # a closed form or the continuum decides it; a beam operand is then an input
-        return ""
-    for path, variable in beam_operands(claim):
-        scene, quantity = last_name(path), COMPARED_AS.get(variable)
-        row = comparison.get((scene, quantity)) if quantity else None
-        if row is None:
-            none.append(f"{scene} {variable}")
-        elif row.get("window", "short") != "claim":
-            short.append(f"{scene} {variable}")
-    parts = []
-    if none:
-        parts.append("no model comparison covers " + ", ".join(dict.fromkeys(none)))
-    if short:
-        parts.append("the comparison covers only its short window for " + ", ".join(dict.fromkeys(short)))
-    return ("beam value unchecked over the claim's window: " + "; ".join(parts)) if parts else ""
-
-
-def annotate(claims: Iterable[Claim], comparison: Mapping[tuple[str, str], Mapping]) -> list[Claim]:
+def annotate(
+    claims: Iterable[Claim],
+    comparison: Mapping[tuple[str, str], Mapping],
+    cross_scene: Mapping[str, list] | None = None,
+) -> list[Claim]:
     """Copies of the claims with ``not_adequate`` (why the comparison does not license a beam row) and
     ``model_values`` (the window comparison's values) set; both "" where they do not apply."""
+    constituents = {name: [(a, var), (b, var)] for name, (a, b, var) in (cross_scene or {}).items()}
     out = []
     for c in claims:
-        inadequate = inadequacy(c, comparison)  # not decided at all: no need to say what is unchecked
-        values = [model_values(c, comparison)] + ([] if inadequate else [unchecked(c, comparison)])
-        notes = {"not_adequate": inadequate, "model_values": "; ".join(filter(None, values))}
+        notes = {
+            "not_adequate": inadequacy(c, comparison, constituents),
+            "model_values": model_values(c, comparison),
+        }
         out.append(c.model_copy(update=notes))
     return out

@@ -731,15 +731,7 @@ class PageBuilder:
         alt = [c["v"]["alternative"] for c in mine if c["v"].get("alternative")]
         alt_readings = {a["reading"] for a in alt} - {""}
         searched = max((int(c["v"]["searched"] or 0) for c in mine), default=0)
-        # the beam's decided rows that no model comparison over the claim's window checks (claims.models)
-        decided = [
-            r for r in self.fe_rows
-            if half == "fe" and r["reading"] == self.fe_default and r["status"] in ("reproduced", "deviates")
-        ]  # fmt: skip
-        unchecked = sum("beam value unchecked over the claim's window" in r["reason"] for r in decided)
         return {
-            "unchecked": unchecked,
-            "decided_rows": len(decided),
             "half": half,
             "title": self.paper["halves"][half],
             "figures": len(mine),
