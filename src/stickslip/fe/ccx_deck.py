@@ -34,7 +34,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .abaqus_deck import LINEAR_ELEMENT, _id_lines, _material, _nset, _num, brick_strip
+from .abaqus_deck import LINEAR_ELEMENT, _material, _nset, _num, brick_strip
 from .params import BeamParams, ContactParams, DiscParams
 
 #: penalty stiffness [N mm-1 at the contact node] standing in for ABAQUS's kinematic contact (ccx has none):
@@ -48,6 +48,13 @@ BLOCK_HALF_LENGTH = 2.0
 BLOCK_DEPTH = 1.0
 #: the strip's nodes out of plane reach z = 0 and z = b; the block overhangs both by this fraction of b
 BLOCK_OVERHANG = 0.5
+#: the window and largest increment of the ccx variants rule ``fe_decks`` writes: a few milliseconds of the
+#: drop start (ccx 2.20 takes ~100 s of CPU per simulated millisecond on the 100 x 1 strip: its implicit
+#: contact dynamics cuts the increment to ~0.3 us by its energy and impact checks)
+CCX_T_END = 2.0e-3
+CCX_MAX_INCREMENT = 1.0e-6
+#: the file-name suffix of a scene's ccx variant (results/fe/inp/<scene>_ccx.inp)
+CCX_SUFFIX = "_ccx"  # = stickslip.catalogue.FE_CCX_SUFFIX
 #: HHT alpha of ccx's *DYNAMIC (0: trapezoidal rule, no numerical damping; ccx's default is -0.05)
 DEFAULT_ALPHA = -0.05
 
@@ -63,8 +70,9 @@ def contact_frame(beam: BeamParams, contact: ContactParams, direction: str) -> t
 
 
 def block_nodes(beam: BeamParams, contact: ContactParams, direction: str) -> np.ndarray:
-    """(8, 3) nodes of the block brick in C3D8 order: bottom face (depth below the tangent plane) then top
-    face (the tangent plane), each counter-clockwise seen from +z... ordered so the volume is positive."""
+    """(8, 3) nodes of the block brick in C3D8 order: at z0 the two bottom corners (``BLOCK_DEPTH`` below
+    the tangent plane) then the two top corners (on it), counter-clockwise seen from +z; then the same at
+    z1. Its face S5 (nodes 3-7-8-4) is the top face."""
     p, n, _ = contact_frame(beam, contact, "clockwise")
     along = np.array([n[1], -n[0]])  # along the tangent plane, +x at angle 0
     h = BLOCK_HALF_LENGTH
@@ -208,6 +216,3 @@ def ccx_scene_deck(
         "*END STEP",
     ]
     return "\n".join(out) + "\n"
-
-
-__all__ = ["ccx_scene_deck", "block_nodes", "contact_frame", "KINEMATIC_STAND_IN", "DEFAULT_MU", "_id_lines"]
