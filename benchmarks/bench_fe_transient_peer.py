@@ -13,16 +13,19 @@ velocity-weakening mechanism.
 Compared over the window, on ccx's increments (continuum interpolated): the contact normal force and the
 tip (free-end lower corner) horizontal displacement, each as rms(ccx - continuum) / max|continuum| in %.
 
-Tolerances (reasoned, not fitted): the continuum's own discretisation error is measured here too (its
-mesh 200 x 2 and step dt/2 against 100 x 1 at dt; printed). The peer differs from the continuum in more
-than discretisation: consistent (C3D8I) vs lumped (QM6) mass, HHT-alpha implicit vs central-difference
-time stepping, an elastic stick spring vs exact stick, a flat block vs the disc. The contact force in the
-drop is a ringing dominated by the 12.9 kHz axial / tip modes, whose phase error grows with time under
-two different integrators; the tip displacement is the smooth stick-driven ramp. Tolerance 5 % of peak for
-the force, 2 % for the displacement; a 1 % stiffness error in either model shifts the tip ramp by ~1 % and
-the ringing phase by 0.5 % per period, which these tolerances still expose over the window.
+Tolerances: 5 % of peak for the force, 2 % for the displacement. The continuum's own refinement moves them
+by 0.8 % / 0.03 % (mesh 200 x 2) and 0.06 % / 0.001 % (step dt/2) over 0.5 ms (printed on every run); the
+rest of the difference is not discretisation of either side but model difference: consistent (C3D8I) vs
+lumped (QM6) mass, HHT-alpha implicit vs central-difference stepping of a ringing dominated by the axial and
+tip modes (whose phase error grows with time), an elastic stick spring vs exact stick, a flat block vs the
+disc. The bounds are those of a previous trial (C3D20R, 5 ms: 2.4 % / 0.4 %) with a margin; measured here
+(C3D8I, 0.5 ms): 4.0 % / 0.17 %.
 
-Usage: python benchmarks/bench_fe_transient_peer.py [--t-end 0.002] [--dt 1e-6] [--keep DIR]
+Window: 0.5 ms by default. ccx 2.20 stalls on this deck at 0.574 ms ("too many cutbacks": its implicit
+contact dynamics cuts the increment to 1e-10 s), so a 2 ms run does not finish; 0.5 ms takes ~30 s of ccx
+CPU.
+
+Usage: python benchmarks/bench_fe_transient_peer.py [--t-end 0.0005] [--dt 1e-6] [--keep DIR]
 Exit status 1 when either difference exceeds its tolerance, 2 when ccx fails or is missing.
 """
 
@@ -68,7 +71,7 @@ def sampled(res, times):
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--t-end", type=float, default=2e-3, help="simulated window [s]")
+    ap.add_argument("--t-end", type=float, default=5e-4, help="simulated window [s]")
     ap.add_argument("--dt", type=float, default=1e-6, help="ccx's largest increment [s]")
     ap.add_argument("--stick-slope", type=float, default=PENALTY, help="ccx stick slope [N/mm]")
     ap.add_argument("--keep", type=Path, default=None, help="keep ccx's files in this folder")
