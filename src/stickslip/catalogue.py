@@ -103,6 +103,8 @@ FE_SETUP_FITS = {
 }
 #: The CalculiX peer's two linear decks (rule ``fe_peer_calculix``).
 FE_PEER_DECKS = ("peer_free", "peer_propped")
+#: A scene's CalculiX variant deck is ``fe_deck(scene + FE_CCX_SUFFIX)`` (rule ``fe_decks``).
+FE_CCX_SUFFIX = "_ccx"
 
 
 def fe_scene(reading: str, scene: str) -> str:
@@ -147,7 +149,8 @@ def fe_peer_calculix(ext: str = "nc") -> str:
 
 
 def fe_deck(name: str) -> str:
-    """An input deck: a scene for ABAQUS/Explicit (rule ``fe_decks``) or a CalculiX peer deck."""
+    """An input deck: a scene for ABAQUS/Explicit or its CalculiX variant (``<scene>_ccx``, rule
+    ``fe_decks``), or a CalculiX peer deck."""
     return f"{RESULTS}/fe/inp/{name}.inp"
 
 
@@ -396,6 +399,8 @@ def _fe_entries(fe: Mapping) -> Iterator[Entry]:
             "fe_continuum", {"scene": scene}, fe_continuum(scene), "fe_model_comparison", shows.get(scene, ())
         )
         yield _entry("fe_deck", {"name": scene}, fe_deck(scene), "fe_decks")
+        ccx = scene + FE_CCX_SUFFIX
+        yield _entry("fe_deck", {"name": ccx}, fe_deck(ccx), "fe_decks")
         yield _entry(
             "figure", {"group": "fe", "name": scene}, figure("fe", scene), "fe_figures", shows.get(scene, ())
         )

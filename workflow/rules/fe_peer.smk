@@ -28,11 +28,13 @@ rule fe_peer_calculix:
 
 rule fe_decks:
     """Every Section 9-12 scene (default FE reading) as an ABAQUS/Explicit deck with the Fig. 17 friction
-    table as its mu(slip rate) data."""
+    table as its mu(slip rate) data, and as the CalculiX variant ccx runs (a translating block, penalty
+    contact, one mu; stickslip.fe.ccx_deck)."""
     input:
         friction=FE_FRICTION,
     output:
         decks=[paths.fe_deck(s) for s in FE_SCENES],
+        ccx_decks=[paths.fe_deck(s + paths.FE_CCX_SUFFIX) for s in FE_SCENES],
     log:
         paths.log("fe_decks", "decks"),
     benchmark:
@@ -49,4 +51,5 @@ rule fe_decks:
 ALL_TARGETS.extend(
     [paths.fe_peer_calculix("nc"), paths.fe_peer_calculix("csv")]
     + [paths.fe_deck(d) for d in FE_PEER_DECKS + FE_SCENES]
+    + [paths.fe_deck(s + paths.FE_CCX_SUFFIX) for s in FE_SCENES]
 )

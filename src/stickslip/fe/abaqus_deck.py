@@ -45,6 +45,18 @@ SCENE_ELEMENT_REASON = (
     "without locking or hourglassing at one element through the thickness"
 )
 SUPPORTS = ("free", "propped")
+#: ABAQUS/Explicit's default bulk viscosity (linear b1, quadratic b2), written out in every scene deck so the
+#: deck states it; the quadratic term does not act on CPS4R (Abaqus Getting Started, "Bulk viscosity")
+BULK_VISCOSITY = (0.06, 1.2)
+#: ``*CONTACT PAIR, MECHANICAL CONSTRAINT=`` per project contact method (the documented values are
+#: KINEMATIC, the default of contact pairs, and PENALTY; Abaqus Keywords Reference, *CONTACT PAIR)
+MECHANICAL_CONSTRAINT = {"kinematic": "KINEMATIC", "fixed_normal": "KINEMATIC", "penalty": "PENALTY"}
+#: whole-model energies requested as history (ABAQUS/Explicit output variable identifiers)
+ENERGY_VARIABLES = ("ALLKE", "ALLSE", "ALLIE", "ALLAE", "ALLVD", "ALLFD", "ALLWK", "ETOTAL")
+#: contact history of the pair: total normal and shear force over the slave surface
+CONTACT_TOTALS = ("CFN", "CFS")
+#: contact history at node 1: pressure and shear (CSTRESS), opening and slip (CDISP)
+CONTACT_NODE_VARIABLES = ("CSTRESS", "CDISP")
 #: the names of the node sets the linear decks print
 PRINT_SETS = ("TIPLOW", "TIPUP", "PROP")
 
@@ -180,6 +192,66 @@ def _disc_arcs(centre, r: float, start_angle: float, n_arcs: int = 4) -> list[st
     return lines
 
 
+def _damping_lines(beta: float) -> list[str]:
+    if beta <= 0:
+        return ["DAMPING: none added (stiffness_damping 0)."]
+    return [
+        f"DAMPING: *DAMPING, BETA = {beta:g} s (stiffness proportional), added on purpose: beta*omega/2",
+        "  = 2e-4 at the first axial mode (12.9 kHz) at beta 5e-9 s, 6e-6 at the propped bending mode",
+        "  (365 Hz), 6e-3 at 400 kHz (mesh modes); it keeps the falling friction law from driving mesh",
+        "  modes as fast as the physical ones (config/fe.yaml, fe.defaults.solver).",
+    ]
+
+
+def scene_header(name, beam, disc, contact, solver, friction, nx, ny, constant_mu) -> list[str]:
+    """The ``**`` comment block of a scene deck: every modelling choice the deck makes, with its reason."""
+    a, b = BULK_VISCOSITY
+    method = MECHANICAL_CONSTRAINT[contact.method]
+    lines = [
+        "Written by stickslip.fe.abaqus_deck.scene_deck for ABAQUS/Explicit (the paper ran 6.6-3).",
+        "UNITS: mm, s, N, t (tonne), MPa; density t mm-3, gravity 9810 mm s-2, slip rate mm s-1.",
+        f"MESH: {nx} x {ny} {SCENE_ELEMENT}, plane stress, thickness (out of plane) {beam.width:g} mm;",
+        f"  {SCENE_ELEMENT_REASON}.",
+        "MASS: ABAQUS/Explicit's lumped mass (the only one it has).",
+        "NLGEOM=YES: ABAQUS/Explicit's default, written out; displacements are micrometres, so the",
+        "  geometric nonlinearity is negligible (the project's models are small-displacement).",
+        f"BULK VISCOSITY: ABAQUS/Explicit's defaults written out, linear b1 = {a:g}, quadratic b2 = {b:g}",
+        "  (the quadratic term does not act on CPS4R; b1 damps the highest element frequency by 6 %).",
+        *_damping_lines(solver.stiffness_damping),
+        f"CONTACT: *CONTACT PAIR, MECHANICAL CONSTRAINT={method} ({contact.method}), node-to-surface",
+        "  (the default of a pair with an analytical rigid master), finite sliding, slave = the strip's",
+        "  lower face (the paper's slave surface), master = the analytical rigid disc DISC turned about",
+        f"  its reference node at {disc.surface_speed:.6g} mm/s surface speed ({disc.direction}), contact",
+        f"  angle {contact.angle_deg:g} deg at the free-end lower corner.",
+    ]
+    if contact.method == "penalty":
+        lines += [
+            f"  Penalty: linear pressure-overclosure from the project's {contact.penalty_stiffness:g} N/mm",
+            "  at the contact node divided by the node's face area (see *SURFACE BEHAVIOR).",
+        ]
+    if contact.method == "fixed_normal":
+        lines += ["  Section 10: the upper face held vertically (u_2 = 0), set UPPER."]
+    if constant_mu is None:
+        lines += [
+            f"FRICTION: *FRICTION mu(slip rate), {len(friction.mu)} rows (mu, slip rate [mm/s]) from the",
+            "  project's Fig. 17 table (results/onedof/friction_mu_vr.csv, rule friction_table: the 1-DOF",
+            f"  model's mu vs relative velocity); mu({_num(friction.speeds[0])}) = {friction.mu[0]:g} is",
+            "  ABAQUS's static value, linear between rows, constant beyond the last (as the project's law).",
+        ]
+    else:
+        lines += [f"FRICTION: one constant mu = {constant_mu:g} (not the Fig. 17 table)."]
+    lines += [
+        "START: undeformed, at rest, gravity from t = 0 (the drop start of ABAQUS/Explicit)"
+        + ("" if solver.initial_state != "static" else "; the scene's static start needs a prior step")
+        + ".",
+        f"OUTPUT: history every {solver.output_dt:g} s: node 1 (set NODE1, {contact.output_node}) U1 U2",
+        f"  V1 V2; the pair's {' '.join(CONTACT_TOTALS)} (total normal and shear contact force); node 1's",
+        f"  {' '.join(CONTACT_NODE_VARIABLES)} (pressure, shear, opening, slip: its stick/slip/open state);",
+        f"  energies {' '.join(ENERGY_VARIABLES)}; CSTATUS of node 1 as field output (a field variable).",
+    ]
+    return ["** " + line for line in lines]
+
+
 def scene_deck(
     name: str,
     mapping: Mapping,
@@ -203,7 +275,7 @@ def scene_deck(
         contact.output_node, [m.lower[-1], m.upper[-1]]
     )
     held = contact.method == "fixed_normal"
-    method = "KINEMATIC CONTACT" if contact.method in ("kinematic", "fixed_normal") else "PENALTY"
+    method = MECHANICAL_CONSTRAINT[contact.method]
     a = math.radians(contact.angle_deg)
     out = [
         "*HEADING",
@@ -211,12 +283,7 @@ def scene_deck(
         f"(width {beam.width:g} mm) "
         f"on a rigid disc D {disc.diameter:g} mm, {contact.method} contact at {contact.angle_deg:g} deg, "
         f"surface speed {disc.surface_speed:.6g} mm/s {disc.direction}",
-        f"** element {SCENE_ELEMENT}: {SCENE_ELEMENT_REASON}",
-        "** units: mm, s, N, t (tonne), MPa; written by stickslip.fe.abaqus_deck.scene_deck",
-        "** start: undeformed, gravity from t = 0 (the drop start of ABAQUS/Explicit)"
-        + (
-            "" if solver.initial_state != "static" else "; the scene's static start needs a prior static step"
-        ),
+        *scene_header(name, beam, disc, contact, solver, friction, nx, ny, constant_mu),
         "*NODE, NSET=BEAM",
     ]
     out += [f"{i + 1}, {_num(x)}, {_num(y)}" for i, (x, y) in enumerate(m.nodes)]
@@ -258,19 +325,31 @@ def scene_deck(
     out += ["*BOUNDARY", "CLAMP, 1, 2", "DISCREF, 1, 2"]
     if held:
         out += ["UPPER, 2, 2"]
+    interval = _num(solver.output_dt)
     out += [
-        "*STEP",
+        "*STEP, NLGEOM=YES",
         "*DYNAMIC, EXPLICIT",
         f", {_num(solver.t_end)}",
+        "*BULK VISCOSITY",
+        ", ".join(_num(b) for b in BULK_VISCOSITY),
         "*BOUNDARY, TYPE=VELOCITY",
         f"DISCREF, 6, 6, {_num(omega)}",
         "*DLOAD",
         f"STRIP, GRAV, {_num(beam.g)}, 0., -1.",
         f"*CONTACT PAIR, INTERACTION=FIG18, MECHANICAL CONSTRAINT={method}",
         "LOWER, DISC",
-        f"*OUTPUT, HISTORY, TIME INTERVAL={_num(solver.output_dt)}",
+        f"*OUTPUT, HISTORY, TIME INTERVAL={interval}",
         "*NODE OUTPUT, NSET=NODE1",
         "U1, U2, V1, V2",
+        "*CONTACT OUTPUT, SLAVE=LOWER, MASTER=DISC",
+        ", ".join(CONTACT_TOTALS),
+        "*CONTACT OUTPUT, SLAVE=LOWER, MASTER=DISC, NSET=NODE1",
+        ", ".join(CONTACT_NODE_VARIABLES),
+        "*ENERGY OUTPUT",
+        ", ".join(ENERGY_VARIABLES),
+        f"*OUTPUT, FIELD, TIME INTERVAL={interval}",
+        "*CONTACT OUTPUT, SLAVE=LOWER, MASTER=DISC, NSET=NODE1",
+        "CSTATUS",
         "*END STEP",
     ]
     return "\n".join(out) + "\n"

@@ -15,6 +15,8 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
+
 #: the Debian package that provides ccx (named in every "not found" error)
 CCX_PACKAGE = "calculix-ccx"
 
@@ -148,3 +150,50 @@ def mode_blocks(result: DatResult, nset: str) -> dict:
         for b in result.blocks
         if b.what == "displacements" and b.nset == nset.upper() and b.mode
     }
+
+
+# ---------------------------------------------------------------------------------------- time series
+_SERIES_HEAD = re.compile(
+    r"^\s*(displacements|forces|total force|total kinetic energy|total internal energy)"
+    r"(?: \(\w+,\w+,\w+\))? for set (\S+) and time\s+(\S+)"
+)
+
+
+def dat_time_series(text: str) -> dict:
+    """Every printed table of a transient ccx ``.dat`` as time series: ``(what, NSET) -> (times (n,),
+    values (n, k))``; node tables hold the mean over the set's nodes (k = 3), totals their k values."""
+    series: dict = {}
+    key, rows = None, []
+
+    def flush():
+        if key is not None and rows:
+            vals = np.array(rows, float)
+            if key[0] in ("displacements", "forces"):
+                vals = vals[:, 1:]  # drop the node number
+            series.setdefault(key[:2], []).append((key[2], vals.mean(axis=0)))
+
+    for line in text.splitlines():
+        m = _SERIES_HEAD.match(line)
+        if m:
+            flush()
+            key, rows = (m.group(1), m.group(2).upper(), float(m.group(3))), []
+            continue
+        fields = line.split()
+        if key is None or not fields:
+            continue
+        try:
+            rows.append([float(v) for v in fields])
+        except ValueError:
+            flush()
+            key, rows = None, []
+    flush()
+    out = {}
+    for k, pts in series.items():
+        t = np.array([p[0] for p in pts])
+        v = np.array([p[1] for p in pts])
+        # ccx prints a converged increment once; a reattempted increment is not printed twice, but keep
+        # the last value of any repeated time
+        _, last = np.unique(t[::-1], return_index=True)
+        idx = np.sort(len(t) - 1 - last)
+        out[k] = (t[idx], v[idx])
+    return out
