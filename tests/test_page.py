@@ -312,7 +312,8 @@ def check_page(chrome, run):
     )
 
     # nothing on a card is wider than the card at 1400 px: a copy of the page measures itself
-    probe = results / "index_probe.html"
+    # probes and the screenshot are hidden files: the shared build is compared by other tests meanwhile
+    probe = results / ".index_probe.html"
     probe.write_text(
         page.read_text().replace(
             "</body>",
@@ -331,7 +332,7 @@ def check_page(chrome, run):
     # the inverse notebook's answer is in view at 1400 px: the summary's verdict column needs no scrolling
     # (the small configuration renders that notebook for this check)
     notebook = results / "notebooks" / "inverse_study.html"
-    probe = notebook.with_name("inverse_probe.html")
+    probe = notebook.with_name(".inverse_probe.html")
     probe.write_text(
         notebook.read_text().replace(
             "</body>",
@@ -346,7 +347,7 @@ def check_page(chrome, run):
     assert found and found.group(1) != "missing", "no verdict column in the inverse notebook"
     assert int(found.group(1)) <= 1400, f"the verdict column ends at {found.group(1)} px, off-screen at 1400"
 
-    shot = results / "page_top.png"
+    shot = results / ".page_top.png"
     shot.unlink(missing_ok=True)
     proc = _headless(chrome, "--window-size=1400,1800", f"--screenshot={shot}", url)
     assert shot.is_file(), proc.stderr[-2000:]

@@ -157,7 +157,9 @@ def test_the_pipeline_writes_the_peer_and_one_deck_per_scene_with_the_fig17_tabl
     assert int(ds["peers_agree"]) == 1 and float(ds["max_abs_rel_diff"]) <= FE["peer"]["tolerance"]
     fig17 = FrictionTable.from_csv(work / "results" / "onedof" / "friction_mu_vr.csv")
     decks = sorted(p.stem for p in (work / "results" / "fe" / "inp").glob("*.inp"))
-    assert decks == sorted(list(FE["scenes"]) + ["peer_free", "peer_propped"])
+    # each scene's ABAQUS deck and its CalculiX variant (stickslip.fe.ccx_deck)
+    scenes = list(FE["scenes"])
+    assert decks == sorted(scenes + [f"{s}_ccx" for s in scenes] + ["peer_free", "peer_propped"])
     for scene in FE["scenes"]:
         deck = read_deck((work / "results" / "fe" / "inp" / f"{scene}.inp").read_text())
         assert friction_table_of(deck) == fig17, scene
