@@ -307,7 +307,7 @@ def check_page(chrome, run):
     assert "Configuration: <code>config/*.yaml + config/test/" in proc.stdout
     assert re.search(r"commit <code>[0-9a-f]{7,}|commit <code>unknown", proc.stdout)
     assert re.search(
-        r'id="outcome"><b>Under the primary reading: 1-DOF mass on a moving belt [a-z ]+ \(\d+ of \d+',
+        r'id="outcome"><b>Under the primary reading: 1-DOF mass on a moving belt: [a-z ]+ \(\d+ of \d+',
         proc.stdout,
     )
 
@@ -493,13 +493,13 @@ def test_an_unidentified_inverse_quantity_is_shown_as_a_range_never_a_point():
 
 @pytest.mark.parametrize(
     ("k", "n", "words"),
-    [(0, 0, "decides nothing"), (0, 5, "does not replicate"), (2, 5, "replicates in part"),
-     (3, 5, "replicates for the most part"), (5, 5, "replicates")],
+    [(0, 0, "not comparable"), (0, 5, "deviating"), (2, 5, "partly"), (3, 5, "partly"),
+     (4, 5, "mostly reproduced"), (5, 5, "reproduced")],
 )  # fmt: skip
 def test_the_outcome_line_states_each_halfs_share_of_decided_checks(k, n, words):
     halves = [{"title": "1-DOF mass on a moving belt (Sections 3-7)", "k": k, "n": n}]
     assert outcome_line(halves) == (
-        f"Under the primary reading: 1-DOF mass on a moving belt {words} "
+        f"Under the primary reading: 1-DOF mass on a moving belt: {words} "
         f"({k} of {n} decided claim checks reproduced)."
     )
 

@@ -43,6 +43,7 @@ from .verdicts import (
     speed_of,
     status_counts,
     tally,
+    verdict_label,
 )
 
 #: What a claim check's status means (the page's glossary).
@@ -828,22 +829,11 @@ class PageBuilder:
             write_atomically(out, text)
 
 
-def replication_extent(k: int, n: int) -> str:
-    """The share of decided claim checks reproduced, in words (the thresholds are the sentence's only
-    judgement: all, most, some, none)."""
-    if n == 0:
-        return "decides nothing"
-    if k == n:
-        return "replicates"
-    if 2 * k > n:
-        return "replicates for the most part"
-    return "replicates in part" if k else "does not replicate"
-
-
 def outcome_line(halves: list[dict]) -> str:
-    """One line under the primary reading: per half of the paper, the checks reproduced of those decided."""
+    """One line under the primary reading: per half of the paper, the label the figures' verdicts use
+    (:func:`verdict_label`, the glossary's rule) for the checks reproduced of those decided."""
     parts = [
-        f"{h['title'].split(' (')[0]} {replication_extent(h['k'], h['n'])} "
+        f"{h['title'].split(' (')[0]}: {verdict_label(h['k'], h['n'])} "
         f"({h['k']} of {h['n']} decided claim checks reproduced)"
         for h in halves
     ]
