@@ -7,6 +7,7 @@ import sys
 from contextlib import contextmanager
 from pathlib import Path
 
+import pytest
 from filelock import FileLock
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -150,3 +151,12 @@ def data_differences_in_subprocess(root_a: Path, root_b: Path, paths) -> dict[st
     if proc.returncode != 0:
         raise AssertionError(f"comparison failed ({proc.returncode}):\n{proc.stderr[-3000:]}")
     return json.loads(proc.stdout)
+
+
+def require_ccx():
+    """CalculiX's ``ccx`` for a test: a failure under CI (.ci/run installs it), a skip elsewhere."""
+    if shutil.which("ccx") is not None:
+        return
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail("ccx (Debian package calculix-ccx) is missing under CI=true: .ci/run installs it")
+    pytest.skip("ccx (CalculiX, Debian package calculix-ccx) is not installed (outside CI these tests skip)")

@@ -4,9 +4,6 @@ output parsed, and the failures (ccx missing, a deck ccx refuses) named.
 The tests that run ccx skip, naming why, only when ccx is missing outside CI; under CI=true a missing ccx
 fails them (.ci/run installs Debian's calculix-ccx)."""
 
-import os
-import shutil
-
 import numpy as np
 import pytest
 import yaml
@@ -18,17 +15,9 @@ from stickslip.studies.fe_config import scene_mapping
 from stickslip.studies.fe_peer import MODELS, PAIRS, QUANTITIES, closed_form_values, peer_study
 from stickslip.validation.calculix import CalculixError, parse_dat, run_ccx, static_block
 
-from project_run import ROOT
+from project_run import ROOT, require_ccx
 
 FE = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
-
-
-def require_ccx():
-    if shutil.which("ccx") is not None:
-        return
-    if os.environ.get("CI", "").lower() == "true":
-        pytest.fail("ccx (Debian package calculix-ccx) is missing under CI=true: .ci/run installs it")
-    pytest.skip("ccx (CalculiX, Debian package calculix-ccx) is not installed (outside CI these tests skip)")
 
 
 @pytest.fixture(scope="module")

@@ -7,9 +7,6 @@ as the deck rule ``fe_decks`` writes, 5 us instead of ``CCX_T_END`` (0.5 ms take
 take ~0.7 s: the contact closes and carries load, friction acts within mu N, every keyword is read and
 executed; 20 us took 3x the CPU for the same checks)."""
 
-import os
-import shutil
-
 import numpy as np
 import pytest
 import yaml
@@ -27,7 +24,7 @@ from stickslip.fe.params import BeamParams, ContactParams, FrictionTable
 from stickslip.studies.fe_config import scene_mapping
 from stickslip.validation.calculix import dat_time_series, run_ccx
 
-from project_run import ROOT
+from project_run import ROOT, require_ccx
 
 FE = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
 SCENES = list(FE["scenes"])
@@ -69,14 +66,6 @@ DOCUMENTED = {
     "*ENERGY OUTPUT": {},
     "*END STEP": {},
 }
-
-
-def require_ccx():
-    if shutil.which("ccx") is not None:
-        return
-    if os.environ.get("CI", "").lower() == "true":
-        pytest.fail("ccx (Debian package calculix-ccx) is missing under CI=true: .ci/run installs it")
-    pytest.skip("ccx (CalculiX, Debian package calculix-ccx) is not installed (outside CI these tests skip)")
 
 
 @pytest.mark.parametrize("scene", SCENES)
