@@ -243,6 +243,17 @@ def test_page_in_headless_chromium(run):
     check_page(chrome, run)
 
 
+def measured_at_1400px(chrome, page, script: str) -> str | None:
+    """What ``script`` leaves in ``document.body.dataset.probe`` when a copy of ``page`` (beside it, so its
+    links resolve; hidden, since other tests compare the shared build meanwhile) loads at 1400 px."""
+    probe = page.with_name(f".probe_{page.name}")
+    probe.write_text(page.read_text().replace("</body>", f"<script>{script}</script></body>"))
+    proc = _headless(chrome, "--window-size=1400,900", "--dump-dom", probe.resolve().as_uri())
+    probe.unlink()
+    found = re.search(r'data-probe="([^"]*)"', proc.stdout)
+    return found.group(1) if found else None
+
+
 def check_page(chrome, run):
     """The page of the run in ``run`` (a project folder with results/) loaded in ``chrome``."""
     results = run / "results"
@@ -312,42 +323,29 @@ def check_page(chrome, run):
     )
 
     # nothing on a card is wider than the card at 1400 px: a copy of the page measures itself
-    # probes and the screenshot are hidden files: the shared build is compared by other tests meanwhile
-    probe = results / ".index_probe.html"
-    probe.write_text(
-        page.read_text().replace(
-            "</body>",
-            "<script>const wide = [...document.querySelectorAll('section.card')].flatMap(c =>"
-            " [...c.querySelectorAll('table')].filter(t => t.getBoundingClientRect().right >"
-            " c.getBoundingClientRect().right + 1).map(t => c.id));"
-            " document.body.dataset.tooWide = wide.join(' ') || 'none';</script></body>",
-        )
+    wide = measured_at_1400px(
+        chrome,
+        page,
+        "const wide = [...document.querySelectorAll('section.card')].flatMap(c =>"
+        " [...c.querySelectorAll('table')].filter(t => t.getBoundingClientRect().right >"
+        " c.getBoundingClientRect().right + 1).map(t => c.id)); document.body.dataset.probe = wide.join(' ')"
+        " || 'none';",
     )
-    proc = _headless(chrome, "--window-size=1400,900", "--dump-dom", probe.resolve().as_uri())
-    probe.unlink()
-    found = re.search(r'data-too-wide="([^"]*)"', proc.stdout)
-    assert found, "the width probe did not run"
-    assert found.group(1) == "none", f"tables wider than their card at 1400 px: {found.group(1)}"
+    assert wide is not None, "the width probe did not run"
+    assert wide == "none", f"tables wider than their card at 1400 px: {wide}"
 
     # the inverse notebook's answer is in view at 1400 px: the summary's verdict column needs no scrolling
     # (the small configuration renders that notebook for this check)
-    notebook = results / "notebooks" / "inverse_study.html"
-    probe = notebook.with_name(".inverse_probe.html")
-    probe.write_text(
-        notebook.read_text().replace(
-            "</body>",
-            "<script>const th = [...document.querySelectorAll('th')].find(h => h.textContent.trim() === "
-            "'verdict'); document.body.dataset.verdictRight = th ?"
-            " Math.round(th.getBoundingClientRect().right) : 'missing';</script></body>",
-        )
+    right = measured_at_1400px(
+        chrome,
+        results / "notebooks" / "inverse_study.html",
+        "const th = [...document.querySelectorAll('th')].find(h => h.textContent.trim() === 'verdict');"
+        " document.body.dataset.probe = th ? Math.round(th.getBoundingClientRect().right) : 'missing';",
     )
-    proc = _headless(chrome, "--window-size=1400,900", "--dump-dom", probe.resolve().as_uri())
-    probe.unlink()
-    found = re.search(r'data-verdict-right="([^"]*)"', proc.stdout)
-    assert found and found.group(1) != "missing", "no verdict column in the inverse notebook"
-    assert int(found.group(1)) <= 1400, f"the verdict column ends at {found.group(1)} px, off-screen at 1400"
+    assert right not in (None, "missing"), "no verdict column in the inverse notebook"
+    assert int(right) <= 1400, f"the verdict column ends at {right} px, off-screen at 1400"
 
-    shot = results / ".page_top.png"
+    shot = results / ".page_top.png"  # hidden, as the probes
     shot.unlink(missing_ok=True)
     proc = _headless(chrome, "--window-size=1400,1800", f"--screenshot={shot}", url)
     assert shot.is_file(), proc.stderr[-2000:]
