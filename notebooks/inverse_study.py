@@ -63,7 +63,12 @@ ranking = pd.read_csv(paths.inverse_table("ranking"))
 FIGURES = list(dict.fromkeys(summary["figure"]))
 data = {name: read_dataset(paths.inverse_dataset(name)) for name in FIGURES}
 settings = json.loads(data["joint"].attrs["settings"])
-display(Markdown(f"Study run in **{settings['mode']}** mode: {settings}"))
+shown = ", ".join(
+    f"{k} = {', '.join(map(str, v)) if isinstance(v, list) else v}"
+    for k, v in settings.items()
+    if k != "mode"
+)
+display(Markdown(f"Study run in **{settings['mode']}** mode: {shown}."))
 
 # %% [markdown]
 # ## 1. Per figure: are the reported numbers consistent under some parameter set?
