@@ -36,18 +36,22 @@ def test_burst_time_is_nan_without_separation():
 
 
 @pytest.mark.parametrize(
-    "beam,continuum,expected",
+    "beam,continuum,quantity,expected",
     [
-        ((0.565, 0.536), (0.523, 0.570), True),  # ranges overlap
-        ((0.565, 0.560), (0.540, 0.545), True),  # no overlap, means within 5 %
-        ((0.565, 0.560), (0.40, 0.41), False),  # apart by 38 %
-        ((0.565, 0.536), (-0.1, 0.570), False),  # a sign differs
-        ((0.565, float("nan")), (0.523, 0.570), False),  # a value missing
-        ((float("nan"),) * 2, (float("nan"),) * 2, True),  # neither model separates: no burst in both
+        ((0.565, 0.560), (0.523, 0.570), "separation_burst_time", True),  # ranges overlap
+        ((0.565, 0.560), (0.540, 0.545), "separation_burst_time", True),  # no overlap, means within 5 %
+        ((0.565, 0.560), (0.40, 0.41), "separation_burst_time", False),  # apart by 38 %
+        ((0.565, 0.560), (-0.1, 0.570), "separation_burst_time", False),  # a sign differs
+        ((0.565, float("nan")), (0.523, 0.570), "separation_burst_time", False),  # a value missing
+        ((float("nan"),) * 2, (float("nan"),) * 2, "separation_burst_time", True),  # no burst in both
+        # the beam moves 2x under step halving: its wide range overlaps the continuum's but backs nothing
+        ((32.1, 68.7), (31.0, 32.4), "max_normal_force_ratio", False),
+        # a growth rate's claims read its sign: a sign converged under step halving may agree
+        ((0.565, 0.536), (0.523, 0.570), "first_mode_growth_rate", True),
     ],
 )
-def test_window_agreement_rule(beam, continuum, expected):
-    assert window_agrees(beam, continuum) is expected
+def test_window_agreement_rule(beam, continuum, quantity, expected):
+    assert window_agrees(beam, continuum, quantity=quantity) is expected
 
 
 def _scene(growth, burst, t_end=1.0, converged=True):
@@ -92,3 +96,15 @@ def test_every_scalar_both_models_hold_at_both_steps_is_compared_and_equal_value
     assert window_quantities(xr.Dataset(both), beam) == ["separation_burst_time", "a"]
     assert window_agrees((0.0, 0.0), (0.0, 0.0))  # no separation in either model at either step
     assert not window_agrees((0.0, 0.0), (0.1, 0.1))
+
+
+def test_a_window_row_whose_beam_value_moves_under_step_halving_says_so():
+    cont = {"s": _scene((0.52, 0.57), (0.42, 0.43))}
+    beam = {"s": _scene((0.56, 0.55), (0.30, 0.60))}  # the burst moves 0.30 -> 0.60 s when dt is halved
+    rows = {r["quantity"]: r for r in window_rows(cont, beam, {})}
+    burst = rows["separation_burst_time"]
+    assert burst["agreement"] is False  # although [0.30, 0.60] overlaps the continuum's [0.42, 0.43]
+    assert burst["note"].startswith("the beam's value moves under step halving (0.3 at dt, 0.6 at dt/2)")
+    # a note of the config's own takes precedence over the generic one
+    noted = {r["quantity"]: r for r in window_rows(cont, beam, {"s.separation_burst_time": "explained"})}
+    assert noted["separation_burst_time"]["note"] == "explained"
