@@ -45,11 +45,11 @@ from .params import (
     DiscParams,
     FrictionTable,
     check_run,
+    initial_state_of,
 )
 
 OUTPUT_NODES = ("free_end_lower", "free_end_upper", "free_end_axis", "contact")
 CONTINUUM_METHODS = ("kinematic", "penalty")
-CONTINUUM_INITIAL_STATES = ("drop", "undeformed", "static")
 _GAUSS = np.array([-1.0, 1.0]) / math.sqrt(3.0)
 _XI = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])  # natural coords of the 4 nodes
 
@@ -535,8 +535,7 @@ def integrate_continuum(
     steps done (``n_steps``).
     """
     check_run(duration, safety_factor)
-    if initial_state not in CONTINUUM_INITIAL_STATES:
-        raise ValueError(f"initial_state: must be one of {CONTINUUM_INITIAL_STATES}, got {initial_state!r}")
+    initial_state = initial_state_of(initial_state)
     dt_crit = stable_time_step(scene)
     if dt is None:
         dt = safety_factor * dt_crit

@@ -29,7 +29,7 @@ import scipy.sparse as sps
 
 from . import engine
 from .driver import SEPARATED, SLIP, STICK, ExplicitResult, drive, named_counts, pack_result
-from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, check_run
+from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, check_run, initial_state_of
 
 __all__ = ["SEPARATED", "SLIP", "STICK", "ExplicitResult", "integrate", "integrate_python"]
 
@@ -143,8 +143,7 @@ class _Prepared:
 
 
 def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0, alpha, beta):
-    if initial_state not in ("static", "drop", "undeformed"):
-        raise ValueError(f"initial_state: must be 'static' or 'drop', got {initial_state!r}")
+    initial_state = initial_state_of(initial_state)
     check_run(duration, safety_factor if dt is None else 1.0)  # a given dt makes the factor unused
     if alpha < 0 or beta < 0:
         raise ValueError("mass_damping: Rayleigh damping coefficients must be >= 0")

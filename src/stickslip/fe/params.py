@@ -223,6 +223,16 @@ DEFAULT_SAFETY_FACTOR = 0.9
 DEFAULT_INITIAL_STATE = "drop"
 
 
+def initial_state_of(state: str | None) -> str:
+    """An explicit run's start as every integrator and reader takes it: ``static`` or ``drop`` (its alias
+    ``undeformed`` kept for old configs and datasets; None: ``DEFAULT_INITIAL_STATE``). ValueError names
+    the key for anything else."""
+    state = DEFAULT_INITIAL_STATE if state is None else state
+    if state not in INITIAL_STATES:
+        raise ValueError(f"initial_state: must be 'static' or 'drop', got {state!r}")
+    return "drop" if state == "undeformed" else state
+
+
 def check_run(duration, safety_factor) -> None:
     """An explicit run's window and step factor, checked before any work (ValueError naming the key)."""
     if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):

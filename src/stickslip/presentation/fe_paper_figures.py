@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, Rectangle
 
 from .. import catalogue as paths
+from ..fe.params import initial_state_of
 from .fe_plots import band_columns, grouped, power_of_ten, scaled_ylabel, shade_states, state_legend_handles
 
 #: the running mean drawn over the band averages this many seconds (several periods of the 366 Hz mode)
@@ -579,7 +580,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
 def _absolute(ds, node_value_min, node_value_max, static_at_node):
     """Range of a binned displacement series as an absolute deflection: a drop start is undeformed, so the
     series already is the deflection; a static start measures from the static shape, which is added."""
-    start = json.loads(ds.attrs["parameters"])["solver"].get("initial_state", "static")
+    start = initial_state_of(json.loads(ds.attrs["parameters"])["solver"].get("initial_state"))
     offset = 0.0 if start == "drop" else static_at_node
     return node_value_min + offset, node_value_max + offset, start
 
