@@ -18,8 +18,9 @@ from ..io.typed_errors import typed_errors
 from ..io.yaml_files import YamlFileError, key_location, load_yaml
 from ..model.params import ParameterError
 
-if TYPE_CHECKING:  # annotations only: the claims package is imported when claims are checked
+if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
+    from .config_models import PipelineConfig
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -83,26 +84,27 @@ def validate_config(
     producible: Iterable[str] = (),
     sources: Sequence[str | Path] = (),
     claims: Sequence[Claim] | None = None,
-) -> None:
-    """Raise ConfigError naming the key of the first bad value (all typed errors at once).
+) -> PipelineConfig:
+    """The config as one typed ``PipelineConfig``; ConfigError naming the key of the first bad value (all
+    typed errors at once).
 
     ``producible`` lists files a rule writes (a friction table need not exist before the run); ``sources``
     the config files the config was loaded from, in order: each error line then starts with the file and
     line that set its key. ``claims``: the claim rows the caller has read already (``load_claims``), so
     the claims files are not read a second time; None reads the files ``inverse.claims_glob`` names."""
     try:
-        _validate(config, list(producible), claims)
+        return _validate(config, list(producible), claims)
     except ConfigError as exc:
         raise ConfigError(located(str(exc), sources)) from None
 
 
-def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | None = None) -> None:
+def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | None = None) -> PipelineConfig:
     from pydantic import ValidationError
 
     from .config_models import PipelineConfig
 
     try:
-        PipelineConfig.model_validate(config)
+        typed = PipelineConfig.model_validate(config)
     except ValidationError as exc:
         raise ConfigError(typed_errors(exc)) from None
     try:
@@ -121,6 +123,7 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
         _check_inverse_claims(config, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
+    return typed
 
 
 def _check_ensemble(config: dict) -> None:
