@@ -19,13 +19,12 @@ exp/sin/cos in the kernel, numpy's in the reference: an ulp apart). Tolerance, a
   both implementations evaluate v only to ~1e-10 of it;
 * per-sample phase identical except at a sample within ``T_TOL`` of a segment end.
 
-Known, shared by both (the algorithm's, not the port's): with a friction plateau, a slip that ends on the
-surface |v_r| = v_p with the state more than the side decision's 1e-12 band on the side it is leaving starts a
-zero-length segment on that side again, and the run fails after ``max_zero_length`` of them ('zero-length
-segments in a row') unless the rounding of the closed form at tau = 0 moves the state back into the band. That
-is decided by the last bits: over 3000 random runs in the hypothesis test's range (10 s) the reference fails
-so in 244, and the two solvers' statuses differ in 14 (9 one way, 5 the other). The property test accepts
-that one difference (a plateau run, the failing one failed so) and compares everything else.
+A slip that starts on the plateau surface |v_r| = v_p leaves it where the outer law's acceleration points; a
+state within ``PLATEAU_BAND`` (1e-9 of v_p) counts as on it. The band was 1e-12: an event on the surface
+leaves the state off it by the closed form's rounding, and 56 of 30000 random 10 s runs (both solvers) landed
+1-2e-12 on the side they were leaving and failed on 'zero-length segments in a row'. The band is wide against
+that rounding and narrow against any physical speed, so the outcome no longer depends on the last bits
+(``test_a_slip_that_ends_on_the_plateau_surface_goes_on``).
 """
 
 import numpy as np
@@ -283,13 +282,38 @@ def test_property_agrees_with_the_reference_over_physical_parameters(changes, va
         with pytest.raises(type(exc), match="NaN|signs"), np.errstate(all="ignore"):
             CompiledExactSolver().solve(model, 10.0, np.linspace(0.0, 10.0, 501))
         return
-    if got.stats.status != ref.stats.status:  # the plateau-surface loop (module docstring): either may hit it
-        failed = got if got.stats.status == "failed" else ref
-        assert np.isfinite(changes["plateau_speed"])
-        assert failed.stats.message.endswith("zero-length segments in a row")
-        return
+    assert got.stats.status == ref.stats.status, (got.stats.message, ref.stats.message)
     terms = (0.0, 0.0)
     if ref.ok:  # (a failed run has NaN samples: nothing to scale)
         with np.errstate(all="ignore"):
             terms = term_scales(python_reference(CompiledExactSolver()).segments(model, 10.0))
     assert_agree(ref, got, strict=False, terms=terms)
+
+
+#: random parameters whose runs ended a slip 1-2e-12 of v_p off the plateau surface, on the side they were
+#: leaving, and failed with the old 1e-12 band (module docstring)
+PLATEAU_SURFACE_RUNS = [
+    (dict(mass=0.7420393504480197, stiffness=47.46818331943917, damping=0.3692879000664945,
+          sigma=0.10029026400041796, mu_s=0.9543956839707648, normal_force=87.1582369492536,
+          belt_velocity=0.9218951093520944, x0=-0.6115271379625726, v0=-0.6070230895921651,
+          belt_deceleration=0.025, plateau_speed=0.6), "eq4_printed"),
+    (dict(mass=0.31978262691129555, stiffness=25.17598288235089, damping=0.8975887242653002,
+          sigma=0.41481189279570463, mu_s=1.3271754085443337, normal_force=68.41510034758764,
+          belt_velocity=0.5952166881218818, x0=-0.4594462689868577, v0=-0.7449150193841122,
+          belt_deceleration=0.025, plateau_speed=0.6), "eq4_printed"),
+    (dict(mass=0.5330889917186118, stiffness=27.91494322563895, damping=0.11298176754935885,
+          sigma=0.25170987422955937, mu_s=1.0921965033629364, normal_force=67.15674541661686,
+          belt_velocity=0.5070886123721777, x0=0.8870194293768852, v0=-0.3640227857039121,
+          belt_deceleration=0.2, plateau_speed=0.6), "eq3_printed"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("changes,variant", PLATEAU_SURFACE_RUNS)
+def test_a_slip_that_ends_on_the_plateau_surface_goes_on(changes, variant):
+    from stickslip.solvers import exact, exact_kernel
+
+    assert exact_kernel.PLATEAU_BAND == exact.PLATEAU_BAND  # one rule in both implementations
+    model = BeltModel.build(BeltParams(**changes), variant)
+    ref, got = solve_both(CompiledExactSolver(), model, 10.0, np.linspace(0.0, 10.0, 501))
+    assert ref.stats.status == got.stats.status == "ok", (ref.stats.message, got.stats.message)
+    assert_agree(ref, got, strict=False)

@@ -40,6 +40,7 @@ ROOT_SIGN = 4  # ValueError of scipy's brentq: f(a) and f(b) must have different
 ROOT_CONVERGENCE = 5  # RuntimeError of scipy's brentq: no convergence in 100 iterations
 
 BRENT_XTOL = 1e-15
+PLATEAU_BAND = 1e-9  # ExactSwitchSolver's PLATEAU_BAND (the reference's, and why)
 BRENT_RTOL = 4 * np.finfo(float).eps
 BRENT_MAXITER = 100
 
@@ -403,9 +404,9 @@ def slip(par, t0, x0, v0, s, t_limit, spp, graze, window0, window1):
     outside = False
     if plateau:
         rel = sf * (v0 - vb0)
-        if rel > vp * (1 + 1e-12):
+        if rel > vp * (1 + PLATEAU_BAND):
             outside = True
-        elif rel >= vp * (1 - 1e-12):
+        elif rel >= vp * (1 - PLATEAU_BAND):
             force = a * sf + b * sf * vp
             kv = b + kappa
             acc = (force + kv * vb0 - cd * v0 - k * x0) / m
