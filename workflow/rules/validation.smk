@@ -3,7 +3,6 @@
 from stickslip.validation.setup import ValidationSetup
 
 VALIDATION = ValidationSetup(config["validation"])
-VALIDATION_LAWS = VALIDATION.law_names()
 
 ALL_TARGETS.extend(products_of("validation_peer", "validation_methods", "validation_round_trip"))
 
