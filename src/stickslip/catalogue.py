@@ -308,6 +308,7 @@ def _inverse_corners(config: Mapping) -> list[str]:
 
 #: Every family of outputs, by section (names that depend on each other are listed whole: ``_per_reading``).
 PRODUCTS = (
+    # every run the config names; its rule writes those a figure, claim or notebook reads (onedof_runs)
     Products(onedof_dataset, "simulate_onedof_{scene}", "runs", figures="scene:{scene}",
              names={"scene": _in("onedof.scenes"), "reading": _in("onedof.readings"),
                     "method": _in("onedof.methods")}),
