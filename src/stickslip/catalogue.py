@@ -1,95 +1,82 @@
-"""Where every dataset, table, figure, notebook, log and benchmark of the pipeline lives, defined once.
+"""Where every dataset, table, figure, notebook, log and benchmark of the pipeline lives, declared once.
 
-One small function per family makes a path (``onedof_dataset``, ``fe_scene``, ``figure``, ``log``, ...):
-rules, claims, notebooks, the page and the inverse study call these, and nothing else builds, parses or
-rewrites a ``results/`` path (``tests/pipeline/test_catalogue.py`` greps). A rule with a wildcard passes it
-through as text: ``fe_scene("{fe_reading}", "{scene}")``.
+Each family of paths is a template (``onedof_dataset``, ``fe_scene``, ``figure``, ...), called as a function:
+``fe_scene(reading, scene)``; called with wildcards, ``fe_scene("{fe_reading}", "{scene}")``, it is a rule's
+output pattern. Rules, claims, notebooks, the page and the inverse study call these, and nothing else builds,
+parses or rewrites a ``results/`` path (``tests/pipeline/test_catalogue.py`` greps).
 
-``catalogue(config)`` lists every entry the config makes, built forward from the config names (every
-scene x reading x method, ...): a path is looked up, never parsed; a path that is not in it is no product of
-the pipeline, whatever it looks like. Each ``Entry`` says what it is (``kind``), the names that make it, the
-rule that writes it and the paper figures it shows (from the config's ``paper_figures`` maps).
+``PRODUCTS`` declares each family of outputs once: its template, the rule that writes it, the rule's output
+name, the config names it is expanded over and the key of the paper figures it shows. From it come both the
+rules' outputs (``outputs(config, rule)``) and ``catalogue(config)``, every entry the config makes: a path is
+looked up, never parsed; a path that is not in it is no product of the pipeline, whatever it looks like. The
+paper figures have one registry, the config's ``paper_figures`` maps (``paper_figures``).
 
 At the bottom of the package: it imports nothing from the project, so every layer may use it.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass
+import inspect
+import itertools
+import string
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
 
 RESULTS = "results"
 
+
+class PathTemplate:
+    """A path function made from its template below ``results/``: the arguments fill its fields in the order
+    they appear (or by name; ``defaults`` for the optional ones)."""
+
+    def __init__(self, template: str, **defaults: str):
+        self.template = template
+        fields = [name for _, name, _, _ in string.Formatter().parse(template) if name]
+        empty, kind = inspect.Parameter.empty, inspect.Parameter.POSITIONAL_OR_KEYWORD
+        parameters = [inspect.Parameter(f, kind, default=defaults.get(f, empty)) for f in fields]
+        self.__signature__ = inspect.Signature(parameters)
+        self.__name__ = ""  # the module name it is bound to, set below its definitions
+
+    def __call__(self, *args, **kwargs) -> str:
+        bound = self.__signature__.bind(*args, **kwargs)
+        bound.apply_defaults()
+        return f"{RESULTS}/{self.template.format(**bound.arguments)}"
+
+    def __repr__(self) -> str:
+        return f"{self.__name__}{self.__signature__}"
+
+
 # ------------------------------------------------------------------------------------------------- 1-DOF
 
-
-def onedof_dataset(scene: str, reading: str, method: str) -> str:
-    """The dataset of one 1-DOF run (rule ``simulate_onedof_<scene>``)."""
-    return f"{RESULTS}/onedof/{scene}/{reading}/{method}.nc"
+#: The dataset of one 1-DOF run.
+onedof_dataset = PathTemplate("onedof/{scene}/{reading}/{method}.nc")
 
 
 def sweep_dataset(sweep: str, reading: str, dense: bool = False) -> str:
-    """The dataset of one sweep for one reading, at the paper's values or dense (rule ``onedof_sweeps``)."""
+    """The dataset of one sweep for one reading, at the paper's values or dense."""
     return f"{RESULTS}/onedof/sweeps/{sweep}{'_dense' if dense else ''}/{reading}.nc"
 
 
-def eq6_curve() -> str:
-    """Fig. 4: Eq. 6 as printed and the dimensionally correct curve (rule ``eq6_curve``)."""
-    return f"{RESULTS}/onedof/fig04/eq6.nc"
-
-
-def friction_table(ext: str = "csv") -> str:
-    """Fig. 17: mu(v_r) along the baseline, ``csv`` (the FE scenes' friction law) or ``nc``."""
-    return f"{RESULTS}/onedof/friction_mu_vr.{ext}"
-
-
-def critical_speed(reading: str) -> str:
-    """The continuation over belt speed for one reading (rule ``critical_speed``)."""
-    return f"{RESULTS}/onedof/critical_speed/{reading}.nc"
-
-
-def critical_speed_summary(ext: str = "csv") -> str:
-    """The critical speed of every reading, ``csv`` or ``nc`` (rule ``critical_speed_summary``)."""
-    return f"{RESULTS}/onedof/critical_speed.{ext}"
-
-
-def dense_map(name: str) -> str:
-    """One dense parameter map, every chunk merged (rule ``dense_map_merge``)."""
-    return f"{RESULTS}/dense_map/{name}.nc"
-
-
-def dense_map_chunk(name: str, chunk) -> str:
-    """One chunk of a dense map (rule ``dense_map_chunk``; temporary)."""
-    return f"{RESULTS}/dense_map/chunks/{name}/{chunk}.nc"
-
-
-def methods_work_precision(scene: str) -> str:
-    """The work-precision study of the integration methods on one scene."""
-    return f"{RESULTS}/methods/{scene}_work_precision.nc"
-
-
-def methods_failure_map() -> str:
-    return f"{RESULTS}/methods/failure_map.nc"
-
-
-def validation_peer_table(law: str) -> str:
-    """Switch solver vs CVODE for one friction law (rule ``validation_peer``)."""
-    return f"{RESULTS}/validation/peer_{law}.csv"
-
-
-def validation_peer() -> str:
-    return f"{RESULTS}/validation/peer.nc"
-
-
-def validation_round_trip(ext: str = "nc") -> str:
-    """The 1-DOF model driven by the Fig. 17 table, ``nc`` or ``csv`` (rule ``validation_round_trip``)."""
-    return f"{RESULTS}/validation/round_trip.{ext}"
-
-
-def validation_methods(law: str) -> str:
-    """The methods study on one nonlinear friction law (rule ``validation_methods``)."""
-    return f"{RESULTS}/validation/methods_{law}.nc"
-
+#: Fig. 4: Eq. 6 as printed and the dimensionally correct curve.
+eq6_curve = PathTemplate("onedof/fig04/eq6.nc")
+#: Fig. 17: mu(v_r) along the baseline, ``csv`` (the FE scenes' friction law) or ``nc``.
+friction_table = PathTemplate("onedof/friction_mu_vr.{ext}", ext="csv")
+#: The continuation over belt speed for one reading, and every reading's critical speed (``csv`` or ``nc``).
+critical_speed = PathTemplate("onedof/critical_speed/{reading}.nc")
+critical_speed_summary = PathTemplate("onedof/critical_speed.{ext}", ext="csv")
+#: One dense parameter map, every chunk merged, and one chunk (temporary: how many is decided at parse time).
+dense_map = PathTemplate("dense_map/{name}.nc")
+dense_map_chunk = PathTemplate("dense_map/chunks/{name}/{chunk}.nc")
+#: The work-precision study of the integration methods on one scene, and the failure map.
+methods_work_precision = PathTemplate("methods/{scene}_work_precision.nc")
+methods_failure_map = PathTemplate("methods/failure_map.nc")
+#: Switch solver vs CVODE for one friction law, and every law's.
+validation_peer_table = PathTemplate("validation/peer_{law}.csv")
+validation_peer = PathTemplate("validation/peer.nc")
+#: The 1-DOF model driven by the Fig. 17 table, ``nc`` or ``csv``.
+validation_round_trip = PathTemplate("validation/round_trip.{ext}", ext="nc")
+#: The methods study on one nonlinear friction law.
+validation_methods = PathTemplate("validation/methods_{law}.nc")
 
 # ---------------------------------------------------------------------------------------- beam on disc (FE)
 
@@ -106,142 +93,71 @@ FE_PEER_DECKS = ("peer_free", "peer_propped")
 #: A scene's CalculiX variant deck is ``fe_deck(scene + FE_CCX_SUFFIX)`` (rule ``fe_decks``).
 FE_CCX_SUFFIX = "_ccx"
 
-
-def fe_scene(reading: str, scene: str) -> str:
-    """One paper scene under one FE reading (rule ``fe_reading``)."""
-    return f"{RESULTS}/fe/{reading}/{scene}.nc"
-
-
-def fe_cross_scene(reading: str) -> str:
-    """The cross-scene ratios of one FE reading (rule ``fe_reading``)."""
-    return f"{RESULTS}/fe/{reading}/cross_scene.nc"
-
-
-def fe_study(name: str) -> str:
-    """A dataset shared by every FE reading: a sweep, ``convergence``, ``stability``,
-    ``continuum_increments`` (rule ``fe_studies``) or a setup fit (rule ``fe_setup_fit``)."""
-    return f"{RESULTS}/fe/{name}.nc"
-
-
-def fe_continuum(scene: str) -> str:
-    """The continuum strip on one paper scene (rule ``fe_model_comparison``)."""
-    return f"{RESULTS}/fe/continuum/{scene}.nc"
+#: One paper scene under one FE reading, and the reading's cross-scene ratios.
+fe_scene = PathTemplate("fe/{reading}/{scene}.nc")
+fe_cross_scene = PathTemplate("fe/{reading}/cross_scene.nc")
+#: A dataset shared by every FE reading: a sweep, ``convergence``, ``stability``, ``continuum_increments`` or
+#: a setup fit.
+fe_study = PathTemplate("fe/{name}.nc")
+#: The continuum strip on one paper scene, and over a claim's window at dt and dt/2.
+fe_continuum = PathTemplate("fe/continuum/{scene}.nc")
+fe_continuum_window = PathTemplate("fe/continuum_window/{scene}.nc")
+#: Continuum vs beam on every scene, ``csv`` or ``nc``.
+fe_model_comparison = PathTemplate("fe/model_comparison.{ext}", ext="csv")
+#: Every FE claim under every FE reading.
+fe_readings_claims = PathTemplate("fe/readings_claims.csv")
+#: CalculiX as a peer of the continuum strip, ``nc`` or ``csv``.
+fe_peer_calculix = PathTemplate("fe/peer_calculix.{ext}", ext="nc")
+#: An input deck: a scene for ABAQUS/Explicit or its CalculiX variant (``<scene>_ccx``), or a peer deck.
+fe_deck = PathTemplate("fe/inp/{name}.inp")
 
 
-def fe_continuum_window(scene: str) -> str:
-    """The continuum strip over a claim's window, at dt and dt/2 (rule ``fe_continuum_window``)."""
-    return f"{RESULTS}/fe/continuum_window/{scene}.nc"
-
-
-def fe_model_comparison(ext: str = "csv") -> str:
-    """Continuum vs beam on every scene, ``csv`` or ``nc`` (rule ``fe_model_comparison``)."""
-    return f"{RESULTS}/fe/model_comparison.{ext}"
-
-
-def fe_readings_claims() -> str:
-    """Every FE claim under every FE reading (rule ``fe_readings_claims``)."""
-    return f"{RESULTS}/fe/readings_claims.csv"
-
-
-def fe_peer_calculix(ext: str = "nc") -> str:
-    """CalculiX as a peer of the continuum strip, ``nc`` or ``csv`` (rule ``fe_peer_calculix``)."""
-    return f"{RESULTS}/fe/peer_calculix.{ext}"
-
-
-def fe_deck(name: str) -> str:
-    """An input deck: a scene for ABAQUS/Explicit or its CalculiX variant (``<scene>_ccx``, rule
-    ``fe_decks``), or a CalculiX peer deck."""
-    return f"{RESULTS}/fe/inp/{name}.inp"
+def fe_paper_figure_numbers() -> range:
+    """The paper's beam-on-disc figures: the ones the config's ``fe.paper_figures`` must map (the schema
+    checks it) and the FE plots draw; which scenes each shows is the config's map."""
+    return range(21, 37)
 
 
 # ------------------------------------------------------------------------------------------------ inverse
 
-
-def inverse_table(name: str) -> str:
-    """``summary``, ``hypotheses``, ``ranking``, ``numbers`` or ``conflicts`` (rule ``inverse_study``)."""
-    return f"{RESULTS}/inverse/{name}.csv"
-
-
-def inverse_dataset(figure: str) -> str:
-    """The inverse study's fit of one figure (or ``joint``)."""
-    return f"{RESULTS}/inverse/{figure}.nc"
-
-
-def inverse_corner(figure: str, family: str) -> str:
-    return f"{RESULTS}/inverse/corner/{figure}_{family}.png"
-
-
 INVERSE_TABLES = ("summary", "hypotheses", "ranking", "numbers", "conflicts")
+#: One of ``INVERSE_TABLES``; the fit of one figure (or ``joint``); a corner plot.
+inverse_table = PathTemplate("inverse/{name}.csv")
+inverse_dataset = PathTemplate("inverse/{figure}.nc")
+inverse_corner = PathTemplate("inverse/corner/{figure}_{family}.png")
 
 # ------------------------------------------------------------------------------------------------- claims
 
-
-def claims_table(ext: str = "csv") -> str:
-    """Every claim vs what the pipeline measures, ``csv`` or ``md`` (rule ``claims_table``)."""
-    return f"{RESULTS}/claims/deviations.{ext}"
-
-
-def claims_check() -> str:
-    """The flag rule ``claims_check`` touches when every status is its pin."""
-    return f"{RESULTS}/claims/check.ok"
-
-
-def figure_verdicts() -> str:
-    """Every paper figure's verdicts (rule ``figure_verdicts``)."""
-    return f"{RESULTS}/claims/figure_verdicts.csv"
-
-
-def reading_ranking(ext: str = "csv") -> str:
-    """The readings ranked by the claims they reproduce, ``csv`` or ``nc`` (rule ``reading_ranking``)."""
-    return f"{RESULTS}/claims/reading_ranking.{ext}"
-
-
-def unreproduced_claims() -> str:
-    return f"{RESULTS}/claims/unreproduced_claims.csv"
-
+#: Every claim vs what the pipeline measures, ``csv`` or ``md``, and the flag touched when every status is
+#: its pin.
+claims_table = PathTemplate("claims/deviations.{ext}", ext="csv")
+claims_check = PathTemplate("claims/check.ok")
+#: Every paper figure's verdicts.
+figure_verdicts = PathTemplate("claims/figure_verdicts.csv")
+#: The readings ranked by the claims they reproduce, ``csv`` or ``nc``, and the claims none reproduces.
+reading_ranking = PathTemplate("claims/reading_ranking.{ext}", ext="csv")
+unreproduced_claims = PathTemplate("claims/unreproduced_claims.csv")
 
 # ----------------------------------------------------------------------------- figures, notebooks, page
 
+#: A PNG: ``figure("fig02", reading)``, ``figure("fe", scene)``, ``figure("fe", "fig21")``,
+#: ``figure("methods", "failure_map")``, ``figure("dense_map", name)``, ``figure("critical_speed", "all")``.
+figure = PathTemplate("figures/{group}/{name}.png")
+notebook = PathTemplate("notebooks/{name}.html")
+report_captions = PathTemplate("report/captions.rst")
+#: The replication page and its folders: thumbnails, each linked dataset's ``stickslip show`` text as HTML
+#: (``<path below results>.html``), each linked source file with line anchors (``<file>.html#L<n>``).
+page = PathTemplate("index.html")
+page_thumbs = PathTemplate("page/thumbs")
+page_previews = PathTemplate("page/datasets")
+page_source_pages = PathTemplate("page/source")
+#: Wall time and peak memory of every job, per rule, ``csv`` or ``md``.
+benchmark_summary = PathTemplate("benchmarks/summary.{ext}", ext="csv")
 
-def figure(group: str, name: str) -> str:
-    """A PNG: ``figure("fig02", reading)``, ``figure("fe", scene)``, ``figure("fe", "fig21")``,
-    ``figure("methods", "failure_map")``, ``figure("dense_map", name)``, ``figure("critical_speed", "all")``.
-    """
-    return f"{RESULTS}/figures/{group}/{name}.png"
-
-
-def notebook(name: str) -> str:
-    """A rendered notebook (rule ``render_notebooks``, or ``methods_notebook``)."""
-    return f"{RESULTS}/notebooks/{name}.html"
-
-
-def report_captions() -> str:
-    return f"{RESULTS}/report/captions.rst"
-
-
-def page() -> str:
-    """The replication page (rule ``replication_page``)."""
-    return f"{RESULTS}/index.html"
-
-
-def page_thumbs() -> str:
-    """The page's thumbnails (a folder)."""
-    return f"{RESULTS}/page/thumbs"
-
-
-def page_previews() -> str:
-    """Each linked dataset's ``stickslip show`` text as HTML (a folder: ``<path below results>.html``)."""
-    return f"{RESULTS}/page/datasets"
-
-
-def page_source_pages() -> str:
-    """Each linked source file rendered with line anchors (a folder: ``<file>.html#L<n>``)."""
-    return f"{RESULTS}/page/source"
-
-
-def benchmark_summary(ext: str = "csv") -> str:
-    """Wall time and peak memory of every job, per rule, ``csv`` or ``md``."""
-    return f"{RESULTS}/benchmarks/summary.{ext}"
+for _name, _template in list(globals().items()):
+    if isinstance(_template, PathTemplate):
+        _template.__name__ = _name  # the family's name: an Entry's kind
+del _name, _template
 
 
 def log(rule: str, name: str | None = None) -> str:
@@ -303,8 +219,216 @@ class Entry:
         return dict(self.names)[key]
 
 
-def _entry(kind, names: Mapping[str, str], path, rule, figures=()) -> Entry:
-    return Entry(kind, tuple((k, str(v)) for k, v in names.items()), path, rule, tuple(sorted(figures)))
+def _in(key: str) -> Callable[[Mapping], Iterable]:
+    """Each name of the config value at dotted ``key`` (a mapping's keys, a list's items; none if missing)."""
+
+    def names(config: Mapping) -> Iterable:
+        value = config
+        for part in key.split("."):
+            value = value.get(part) if isinstance(value, Mapping) else None
+        return value or {}
+
+    return names
+
+
+@dataclass(frozen=True)
+class Products:
+    """One family of outputs: ``path`` filled with each of its ``names``, written by ``rule`` (a template over
+    the names: ``simulate_onedof_{scene}``) as its output ``output`` (one output per product when the name is
+    a template). A name is a constant, a tuple (each of them) or a function of the config (each it returns);
+    ``figures``: the key of the paper figures it shows (``paper_figures``); ``when``: the config section it
+    needs."""
+
+    path: Callable[..., str]
+    rule: str
+    output: str
+    #: key -> name(s), or a function of the config giving every product's names (names that depend on
+    #: each other: a figure's readings)
+    names: Mapping[str, object] | Callable[[Mapping], Iterable[dict]] = field(default_factory=dict)
+    figures: str = ""
+    when: str = ""
+
+    def expand(self, config: Mapping) -> Iterator[dict]:
+        """The names of every product the config makes, keyed in the path function's order."""
+        if self.when and not _in(self.when)(config):
+            return
+        if callable(self.names):
+            yield from self.names(config)
+            return
+        order = list(inspect.signature(self.path).parameters)
+        keys = sorted(self.names, key=order.index)
+        each = [self._each(self.names[k], config) for k in keys]
+        for values in itertools.product(*each):
+            yield dict(zip(keys, values))
+
+    @staticmethod
+    def _each(value, config) -> Iterable:
+        return value if isinstance(value, tuple) else value(config) if callable(value) else (value,)
+
+    def is_list(self, wildcards: Mapping) -> bool:
+        """Whether the rule's output is a list: names vary that the rule's wildcards do not stand for."""
+        if "{" in self.output:
+            return False
+        if callable(self.names):
+            return True
+        varying = {k for k, v in self.names.items() if isinstance(v, tuple) or callable(v)}
+        return not varying <= set(wildcards)
+
+
+def _per_reading(section: str) -> Callable[[Mapping], list[dict]]:
+    """group and name of each image of the 1-DOF config's figures ``section``: the figure, each reading."""
+    return lambda c: [{"group": g, "name": r} for g, fig in _in(section)(c).items() for r in fig["readings"]]
+
+
+_DENSE, _CSV_NC = (False, True), ("csv", "nc")
+_FE_SCENES, _FE_READINGS = _in("fe.scenes"), _in("fe.readings")
+_CRITICAL_READINGS, _METHODS_SCENES = _in("onedof.critical_speed.readings"), _in("methods_study.scenes")
+
+
+def _ccx_decks(config: Mapping) -> list[str]:
+    return [scene + FE_CCX_SUFFIX for scene in _FE_SCENES(config)]
+
+
+def _fe_paper_figures(config: Mapping) -> list[str]:
+    return [f"fig{number}" for number in sorted(_in("fe.paper_figures")(config))]
+
+
+def _work_precision_charts(config: Mapping) -> list[str]:
+    return [f"{scene}_work_precision" for scene in _METHODS_SCENES(config)]
+
+
+def _inverse_fits(config: Mapping) -> list[str]:
+    return [*_in("inverse.figures")(config), "joint"]
+
+
+def _inverse_corners(config: Mapping) -> list[str]:
+    mode = "long" if _in("inverse.long")(config) else "default"
+    return list(_in(f"inverse.settings.{mode}.corner")(config))
+
+
+#: Every family of outputs, by section (names that depend on each other are listed whole: ``_per_reading``).
+PRODUCTS = (
+    # every run the config names; its rule writes those a figure, claim or notebook reads (onedof_runs)
+    Products(onedof_dataset, "simulate_onedof_{scene}", "runs", figures="scene:{scene}",
+             names={"scene": _in("onedof.scenes"), "reading": _in("onedof.readings"),
+                    "method": _in("onedof.methods")}),
+    Products(sweep_dataset, "onedof_sweeps", "sweeps", figures="sweep:{sweep}",
+             names={"sweep": _in("onedof.sweeps"), "reading": _in("onedof.readings"), "dense": _DENSE}),
+    Products(eq6_curve, "eq6_curve", "nc", figures="eq6"),
+    Products(figure, "eq6_curve", "png", {"group": "fig04", "name": "eq6"}, figures="eq6"),
+    Products(friction_table, "friction_table", "{ext}", {"ext": _CSV_NC}),
+    Products(figure, "onedof_figure_{group}", "figures", _per_reading("onedof.figures"), "figure:{group}"),
+    Products(figure, "sweep_figure_{group}", "figures", _per_reading("onedof.sweep_figures"),
+             "figure:{group}"),
+    Products(critical_speed, "critical_speed", "datasets", {"reading": _CRITICAL_READINGS}),
+    Products(critical_speed_summary, "critical_speed_summary", "{ext}", {"ext": _CSV_NC},
+             when="onedof.critical_speed"),
+    Products(figure, "critical_speed_summary", "png", {"group": "critical_speed", "name": "all"},
+             when="onedof.critical_speed"),
+    # beam on disc
+    Products(fe_scene, "fe_reading", "scenes", {"reading": _FE_READINGS, "scene": _FE_SCENES}, "fe:{scene}"),
+    Products(fe_cross_scene, "fe_reading", "cross", {"reading": _FE_READINGS}),
+    Products(fe_study, "fe_studies", "sweeps", {"name": _in("fe.sweeps")}, when="fe"),
+    Products(fe_study, "fe_studies", "{name}", {"name": FE_STUDIES}, when="fe"),
+    Products(fe_study, "fe_studies", "increments", {"name": "continuum_increments"}, when="fe"),
+    Products(fe_study, "fe_setup_fit", "fit", {"name": tuple(FE_SETUP_FITS)}, "fe:{name}", when="fe"),
+    Products(fe_continuum_window, "fe_continuum_window", "window",
+             {"scene": _in("fe.comparison.claim_windows")}, "fe:{scene}"),
+    Products(fe_continuum, "fe_model_comparison", "continuum", {"scene": _FE_SCENES}, "fe:{scene}"),
+    Products(fe_model_comparison, "fe_model_comparison", "table", {"ext": "csv"}, when="fe"),
+    Products(fe_model_comparison, "fe_model_comparison", "dataset", {"ext": "nc"}, when="fe"),
+    Products(fe_readings_claims, "fe_readings_claims", "table", when="fe"),
+    Products(fe_deck, "fe_decks", "decks", {"name": _FE_SCENES}),
+    Products(fe_deck, "fe_decks", "ccx_decks", {"name": _ccx_decks}),
+    Products(fe_peer_calculix, "fe_peer_calculix", "dataset", {"ext": "nc"}, when="fe"),
+    Products(fe_peer_calculix, "fe_peer_calculix", "table", {"ext": "csv"}, when="fe"),
+    Products(fe_deck, "fe_peer_calculix", "decks", {"name": FE_PEER_DECKS}, when="fe"),
+    Products(figure, "fe_figures", "scenes", {"group": "fe", "name": _FE_SCENES}, "fe:{name}"),
+    Products(figure, "fe_figures", "paper", {"group": "fe", "name": _fe_paper_figures}, "fe:{name}"),
+    Products(figure, "fe_figures", "{name}", {"group": "fe", "name": ("readings", *FE_STUDIES)}, when="fe"),
+    # studies
+    Products(dense_map, "dense_map_merge", "map", {"name": _in("dense_map.maps")}),
+    Products(figure, "dense_map_figure", "png", {"group": "dense_map", "name": _in("dense_map.maps")}),
+    Products(methods_work_precision, "methods_work_precision", "dataset", {"scene": _METHODS_SCENES}),
+    Products(methods_failure_map, "methods_failure_map", "dataset", when="methods_study"),
+    Products(figure, "methods_figures", "work_precision",
+             {"group": "methods", "name": _work_precision_charts}),
+    Products(figure, "methods_figures", "failure_map", {"group": "methods", "name": "failure_map"},
+             when="methods_study"),
+    Products(notebook, "methods_notebook", "notebook", {"name": "methods_work_precision"},
+             when="methods_study"),
+    Products(validation_peer_table, "validation_peer", "csv", {"law": _in("validation.laws")}),
+    Products(validation_peer, "validation_peer", "nc", when="validation"),
+    Products(validation_round_trip, "validation_round_trip", "{ext}", {"ext": ("nc", "csv")},
+             when="validation"),
+    Products(validation_methods, "validation_methods", "datasets",
+             {"law": _in("validation.methods_per_law.laws")}),
+    Products(inverse_table, "inverse_study", "{name}", {"name": INVERSE_TABLES}, when="inverse"),
+    Products(inverse_dataset, "inverse_study", "datasets", {"figure": _inverse_fits}, when="inverse"),
+    Products(inverse_corner, "inverse_study", "corner",
+             {"figure": _inverse_corners, "family": _in("inverse.families")}),
+    # the products of the products
+    Products(claims_table, "claims_table", "{ext}", {"ext": ("csv", "md")}),
+    Products(claims_check, "claims_check", "flag"),
+    Products(figure_verdicts, "figure_verdicts", "table"),
+    Products(reading_ranking, "reading_ranking", "{ext}", {"ext": _CSV_NC}),
+    Products(unreproduced_claims, "reading_ranking", "unreproduced"),
+    Products(notebook, "render_notebooks", "notebooks", {"name": _in("notebooks")}),
+    Products(report_captions, "report_captions", "captions"),
+    Products(page, "replication_page", "html"),
+    Products(page_thumbs, "replication_page", "thumbs"),
+    Products(page_previews, "replication_page", "previews"),
+    Products(page_source_pages, "replication_page", "source_pages"),
+    Products(benchmark_summary, "benchmark_summary", "{ext}", {"ext": ("csv", "md")}),
+)  # fmt: skip
+
+
+def paper_figures(config: Mapping) -> dict[str, tuple[int, ...]]:
+    """The paper figures each product shows, from the config's ``paper_figures`` maps (the one registry):
+    ``figure:<1-DOF figure>``, the runs drawn in them (``scene:<scene>``, ``sweep:<sweep>``), ``eq6``, and
+    ``fe:<scene>`` and ``fe:fig<n>`` from ``fe.paper_figures`` (figure -> scenes)."""
+    out: dict[str, set[int]] = {"eq6": set(_in("onedof.eq6.paper_figures")(config))}
+    for section, run in (("figures", "scene"), ("sweep_figures", "sweep")):
+        for name, spec in _in(f"onedof.{section}")(config).items():
+            for key in (f"figure:{name}", f"{run}:{spec[run]}"):
+                out.setdefault(key, set()).update(spec.get("paper_figures") or ())
+    for number, scenes in _in("fe.paper_figures")(config).items():
+        for key in (f"fe:fig{number}", *(f"fe:{scene}" for scene in scenes)):
+            out.setdefault(key, set()).add(int(number))
+    return {key: tuple(sorted(numbers)) for key, numbers in out.items()}
+
+
+def catalogue(config: Mapping) -> dict[str, Entry]:
+    """path -> Entry for every product the config makes (logs and benchmarks aside: every job has its
+    own, named by ``log``/``benchmark``)."""
+    shows = paper_figures(config)
+    entries = {}
+    for products in PRODUCTS:
+        for names in products.expand(config):
+            path = products.path(**names)
+            figures = shows.get(products.figures.format(**names), ()) if products.figures else ()
+            pairs = tuple((key, str(value)) for key, value in names.items())
+            entries[path] = Entry(products.path.__name__, pairs, path, products.rule.format(**names), figures)
+    return entries
+
+
+def outputs(config: Mapping, rule: str, **wildcards: str) -> dict[str, str | list[str]]:
+    """A rule's outputs, named and ordered as its script reads them: every product ``rule`` writes, each name
+    in ``wildcards`` replaced by the rule's wildcard (``reading="{fe_reading}"``)."""
+    out: dict[str, str | list[str]] = {}
+    for products in PRODUCTS:
+        if not rule.startswith(products.rule.split("{")[0]):
+            continue  # not the rule's: skipped without expanding it
+        for names in products.expand(config):
+            if products.rule.format(**names) != rule:
+                continue
+            names.update((key, value) for key, value in wildcards.items() if key in names)
+            path, output = products.path(**names), products.output.format(**names)
+            if not products.is_list(wildcards):
+                out[output] = path
+            elif path not in out.setdefault(output, []):
+                out[output].append(path)
+    return out
 
 
 def same_entry(entries: Mapping[str, Entry], entry: Entry, **names: str) -> Entry | None:
@@ -314,236 +438,22 @@ def same_entry(entries: Mapping[str, Entry], entry: Entry, **names: str) -> Entr
     return next((e for e in entries.values() if e.kind == entry.kind and e.names == wanted), None)
 
 
-def figures_of(paper_figures: Mapping | None) -> dict[str, tuple[int, ...]]:
-    """name -> the paper figures it shows, from a ``{figure number: [names]}`` map."""
-    out: dict[str, list[int]] = {}
-    for number, names in (paper_figures or {}).items():
-        for name in names:
-            out.setdefault(name, []).append(int(number))
-    return {name: tuple(sorted(numbers)) for name, numbers in out.items()}
-
-
-def onedof_shows(onedof: Mapping) -> dict[str, tuple[int, ...]]:
-    """What each 1-DOF run shows of the paper, from the ``paper_figures`` of the figures drawn from it:
-    ``scene:<name>`` and ``sweep:<name>`` -> paper figures, and each figure's own name -> its figures."""
-    out: dict[str, set[int]] = {}
-    for name, fig in (onedof.get("figures") or {}).items():
-        for key in (name, f"scene:{fig['scene']}"):
-            out.setdefault(key, set()).update(fig.get("paper_figures") or ())
-    for name, fig in (onedof.get("sweep_figures") or {}).items():
-        for key in (name, f"sweep:{fig['sweep']}"):
-            out.setdefault(key, set()).update(fig.get("paper_figures") or ())
-    out["eq6"] = set((onedof.get("eq6") or {}).get("paper_figures") or ())
-    return {key: tuple(sorted(numbers)) for key, numbers in out.items()}
-
-
-def _onedof_entries(onedof: Mapping) -> Iterator[Entry]:
-    shows = onedof_shows(onedof)
-    for scene in onedof["scenes"]:
-        for reading in onedof["readings"]:
-            for method in onedof["methods"]:
-                names = {"scene": scene, "reading": reading, "method": method}
-                path = onedof_dataset(scene, reading, method)
-                rule = f"simulate_onedof_{scene}"
-                yield _entry("onedof_dataset", names, path, rule, shows.get(f"scene:{scene}", ()))
-    for sweep in onedof.get("sweeps") or {}:
-        for reading in onedof["readings"]:
-            for dense in (False, True):
-                names = {"sweep": sweep, "reading": reading, "dense": str(dense)}
-                path = sweep_dataset(sweep, reading, dense)
-                yield _entry("sweep_dataset", names, path, "onedof_sweeps", shows.get(f"sweep:{sweep}", ()))
-    yield _entry("eq6_curve", {}, eq6_curve(), "eq6_curve", shows["eq6"])
-    yield _entry(
-        "figure", {"group": "fig04", "name": "eq6"}, figure("fig04", "eq6"), "eq6_curve", shows["eq6"]
-    )
-    for ext in ("csv", "nc"):
-        yield _entry("friction_table", {"ext": ext}, friction_table(ext), "friction_table")
-    for kind, section in (("onedof_figure", "figures"), ("sweep_figure", "sweep_figures")):
-        for name, fig in (onedof.get(section) or {}).items():
-            for reading in fig["readings"]:
-                names = {"group": name, "name": reading}
-                yield _entry("figure", names, figure(name, reading), f"{kind}_{name}", shows.get(name, ()))
-    critical = onedof.get("critical_speed") or {}
-    for reading in critical.get("readings", []):
-        yield _entry("critical_speed", {"reading": reading}, critical_speed(reading), "critical_speed")
-    if critical:
-        for ext in ("csv", "nc"):
-            yield _entry(
-                "critical_speed_summary", {"ext": ext}, critical_speed_summary(ext), "critical_speed_summary"
-            )
-        yield _entry(
-            "figure",
-            {"group": "critical_speed", "name": "all"},
-            figure("critical_speed", "all"),
-            "critical_speed_summary",
-        )
-
-
-def _fe_entries(fe: Mapping) -> Iterator[Entry]:
-    shows = figures_of(fe.get("paper_figures"))
-    yield from fe_scene_entries(fe["scenes"], fe["readings"], shows)
-    for name in list(fe.get("sweeps") or {}) + list(FE_STUDIES) + ["continuum_increments"]:
-        yield _entry("fe_study", {"name": name}, fe_study(name), "fe_studies")
-    for name in FE_SETUP_FITS:
-        yield _entry("fe_study", {"name": name}, fe_study(name), "fe_setup_fit", shows.get(name, ()))
-    for scene in (fe.get("comparison") or {}).get("claim_windows") or {}:
-        yield _entry(
-            "fe_continuum_window",
-            {"scene": scene},
-            fe_continuum_window(scene),
-            "fe_continuum_window",
-            shows.get(scene, ()),
-        )
-    for scene in fe["scenes"]:
-        yield _entry(
-            "fe_continuum", {"scene": scene}, fe_continuum(scene), "fe_model_comparison", shows.get(scene, ())
-        )
-        yield _entry("fe_deck", {"name": scene}, fe_deck(scene), "fe_decks")
-        ccx = scene + FE_CCX_SUFFIX
-        yield _entry("fe_deck", {"name": ccx}, fe_deck(ccx), "fe_decks")
-        yield _entry(
-            "figure", {"group": "fe", "name": scene}, figure("fe", scene), "fe_figures", shows.get(scene, ())
-        )
-    for ext in ("csv", "nc"):
-        yield _entry("fe_model_comparison", {"ext": ext}, fe_model_comparison(ext), "fe_model_comparison")
-        yield _entry("fe_peer_calculix", {"ext": ext}, fe_peer_calculix(ext), "fe_peer_calculix")
-    for deck in FE_PEER_DECKS:
-        yield _entry("fe_deck", {"name": deck}, fe_deck(deck), "fe_peer_calculix")
-    yield _entry("fe_readings_claims", {}, fe_readings_claims(), "fe_readings_claims")
-    for number in fe_paper_figure_numbers():
-        yield _entry(
-            "figure",
-            {"group": "fe", "name": f"fig{number}"},
-            figure("fe", f"fig{number}"),
-            "fe_figures",
-            (number,),
-        )
-    for name in ("readings", *FE_STUDIES):
-        yield _entry("figure", {"group": "fe", "name": name}, figure("fe", name), "fe_figures")
-
-
-def fe_paper_figure_numbers() -> range:
-    """The paper's beam-on-disc figures, one PNG each (rule ``fe_figures``)."""
-    return range(21, 37)
-
-
-def fe_scene_entries(scenes: Iterable[str], readings: Iterable[str], shows=None) -> Iterator[Entry]:
-    """Every FE scene under every FE reading, with its cross-scene ratios: what a claim re-read under another
-    FE reading looks up (``claims.per_reading``) without the rest of the config."""
-    shows = shows or {}
-    for reading in readings:
-        for scene in scenes:
-            yield _entry(
-                "fe_scene",
-                {"reading": reading, "scene": scene},
-                fe_scene(reading, scene),
-                "fe_reading",
-                shows.get(scene, ()),
-            )
-        yield _entry("fe_cross_scene", {"reading": reading}, fe_cross_scene(reading), "fe_reading")
-
-
-def _study_entries(config: Mapping) -> Iterator[Entry]:
-    for name in (config.get("dense_map") or {}).get("maps") or {}:
-        yield _entry("dense_map", {"name": name}, dense_map(name), "dense_map_merge")
-        yield _entry(
-            "figure", {"group": "dense_map", "name": name}, figure("dense_map", name), "dense_map_figure"
-        )
-    methods = config.get("methods_study") or {}
-    for scene in methods.get("scenes") or {}:
-        yield _entry(
-            "methods_work_precision",
-            {"scene": scene},
-            methods_work_precision(scene),
-            "methods_work_precision",
-        )
-        yield _entry(
-            "figure",
-            {"group": "methods", "name": f"{scene}_work_precision"},
-            figure("methods", f"{scene}_work_precision"),
-            "methods_figures",
-        )
-    if methods:
-        yield _entry("methods_failure_map", {}, methods_failure_map(), "methods_failure_map")
-        yield _entry(
-            "figure",
-            {"group": "methods", "name": "failure_map"},
-            figure("methods", "failure_map"),
-            "methods_figures",
-        )
-        yield _entry(
-            "notebook",
-            {"name": "methods_work_precision"},
-            notebook("methods_work_precision"),
-            "methods_notebook",
-        )
-    validation = config.get("validation") or {}
-    for law in validation.get("laws") or {}:
-        yield _entry("validation_peer_table", {"law": law}, validation_peer_table(law), "validation_peer")
-    for law in (validation.get("methods_per_law") or {}).get("laws") or []:
-        yield _entry("validation_methods", {"law": law}, validation_methods(law), "validation_methods")
-    if validation:
-        yield _entry("validation_peer", {}, validation_peer(), "validation_peer")
-        for ext in ("nc", "csv"):
-            yield _entry(
-                "validation_round_trip", {"ext": ext}, validation_round_trip(ext), "validation_round_trip"
-            )
-    inverse = config.get("inverse") or {}
-    if inverse:
-        for name in INVERSE_TABLES:
-            yield _entry("inverse_table", {"name": name}, inverse_table(name), "inverse_study")
-        for fig in [*inverse["figures"], "joint"]:
-            yield _entry("inverse_dataset", {"figure": fig}, inverse_dataset(fig), "inverse_study")
-        mode = "long" if inverse.get("long", False) else "default"
-        for fig in inverse["settings"][mode].get("corner", []):
-            for family in inverse["families"]:
-                yield _entry(
-                    "inverse_corner",
-                    {"figure": fig, "family": family},
-                    inverse_corner(fig, family),
-                    "inverse_study",
-                )
-
-
-def _product_entries(config: Mapping) -> Iterator[Entry]:
-    for ext in ("csv", "md"):
-        yield _entry("claims_table", {"ext": ext}, claims_table(ext), "claims_table")
-        yield _entry("benchmark_summary", {"ext": ext}, benchmark_summary(ext), "benchmark_summary")
-    yield _entry("claims_check", {}, claims_check(), "claims_check")
-    yield _entry("figure_verdicts", {}, figure_verdicts(), "figure_verdicts")
-    for ext in ("csv", "nc"):
-        yield _entry("reading_ranking", {"ext": ext}, reading_ranking(ext), "reading_ranking")
-    yield _entry("unreproduced_claims", {}, unreproduced_claims(), "reading_ranking")
-    for name in config.get("notebooks") or {}:
-        yield _entry("notebook", {"name": name}, notebook(name), "render_notebooks")
-    yield _entry("report_captions", {}, report_captions(), "report_captions")
-    yield _entry("page", {}, page(), "replication_page")
-    # the page's folders: thumbnails, each linked dataset's text preview, each linked source with line anchors
-    for kind, folder in (
-        ("page_thumbs", page_thumbs()),
-        ("page_previews", page_previews()),
-        ("page_source_pages", page_source_pages()),
-    ):
-        yield _entry(kind, {}, folder, "replication_page")
-
-
-def catalogue(config: Mapping) -> dict[str, Entry]:
-    """path -> Entry for every product the config makes (logs and benchmarks aside: every job has its
-    own, named by ``log``/``benchmark``)."""
-    entries = [
-        *_onedof_entries(config["onedof"]),
-        *(_fe_entries(config["fe"]) if config.get("fe") else ()),
-        *_study_entries(config),
-        *_product_entries(config),
-    ]
-    return {e.path: e for e in entries}
-
-
 def showing(entries: Mapping[str, Entry], figure: int) -> list[Entry]:
     """The entries that show paper figure ``figure`` (their ``figures``), by path: its runs and images."""
     return sorted((e for e in entries.values() if figure in e.figures), key=lambda e: e.path)
 
 
+def _of_kinds(config: Mapping, *kinds: str) -> dict[str, Entry]:
+    return {path: e for path, e in catalogue(config).items() if e.kind in kinds}
+
+
 def onedof_catalogue(onedof: Mapping) -> dict[str, Entry]:
     """dataset path -> Entry of every 1-DOF run (scene x reading x method) of the ``onedof`` section."""
-    return {e.path: e for e in _onedof_entries(onedof) if e.kind == "onedof_dataset"}
+    return _of_kinds({"onedof": onedof}, "onedof_dataset")
+
+
+def fe_scene_entries(scenes: Iterable[str], readings: Iterable[str]) -> Iterator[Entry]:
+    """Every FE scene under every FE reading, with its cross-scene ratios: what a claim re-read under another
+    FE reading looks up (``claims.per_reading``) without the rest of the config."""
+    fe = {"scenes": list(scenes), "readings": list(readings)}
+    yield from _of_kinds({"fe": fe}, "fe_scene", "fe_cross_scene").values()

@@ -5,6 +5,7 @@ ones the pipeline has always written (a changed layout would orphan every built 
 from __future__ import annotations
 
 import ast
+import inspect
 import re
 import subprocess
 import sys
@@ -92,11 +93,7 @@ def test_the_scanners_find_what_they_look_for():
 
 def test_no_results_path_is_written_outside_the_catalogue():
     found = {
-        rel: hits
-        for rel in scanned_files()
-        if rel != THE_CATALOGUE
-        for hits in [literals_of(rel)]
-        if hits
+        rel: hits for rel in scanned_files() if rel != THE_CATALOGUE for hits in [literals_of(rel)] if hits
     }
     listing = "\n".join(f"{rel}:{line}: {text!r}" for rel, hits in found.items() for line, text in hits)
     assert not found, f"results/ paths written outside stickslip.catalogue (use its functions):\n{listing}"
@@ -246,6 +243,9 @@ def test_1dof_runs_show_the_paper_figures_drawn_from_them():
 #: Outputs of the DAG that are no catalogue entry: a dense map's chunks (temporary; how many is decided by
 #: studies.specs at parse time).
 NOT_CATALOGUED = (re.compile(r"results/dense_map/chunks/"),)
+#: Entries a configuration builds only where something reads them: the 1-DOF runs and sweeps a figure,
+#: claim or notebook reads, and the claims check where ``claims.check`` asks for it (the small one does not).
+BUILT_WHERE_READ = ("onedof_dataset", "sweep_dataset", "claims_check")
 
 
 def dry_run_jobs(text: str) -> list[tuple[str, list[str]]]:
@@ -260,14 +260,71 @@ def dry_run_jobs(text: str) -> list[tuple[str, list[str]]]:
     return jobs
 
 
+def test_the_scanner_reads_a_dry_run_listing():
+    text = (
+        "rule a:\n    input: x\n    output: results/p.nc, results/q.nc\nlocalrule b:\n    output: results/r\n"
+    )
+    assert dry_run_jobs(text) == [("a", ["results/p.nc", "results/q.nc"]), ("b", ["results/r"])]
+
+
 @pytest.mark.pipeline
-def test_every_output_of_the_dag_is_an_entry_naming_the_rule_that_writes_it():
-    """The catalogue is built from the config, the DAG from the rules: a dry run of the small configuration
-    shows they agree on every product and who makes it."""
-    text = run_snakemake(ROOT, "-n", "--nolock", *small_config_args(ROOT), timeout=300).stdout
-    jobs = dry_run_jobs(text)
+def test_the_dag_writes_the_catalogue_by_the_rules_it_names_and_nothing_else():
+    """The rules take their outputs from the catalogue's declarations (``outputs``): a forced dry run of the
+    small configuration shows that they do, every output an entry written by the rule the entry names, every
+    entry written (but where the configuration builds a family only where it is read)."""
+    text = run_snakemake(ROOT, "-n", "-F", "--nolock", *small_config_args(ROOT), timeout=300).stdout
     cat = paths.catalogue(project_config(small=True))
-    outputs = [(rule, o) for rule, outs in jobs for o in outs if not any(p.search(o) for p in NOT_CATALOGUED)]
-    assert len(jobs) > 20 and outputs
-    assert [o for _, o in outputs if o not in cat] == []
-    assert [(o, rule, cat[o].rule) for rule, o in outputs if cat[o].rule != rule] == []
+    made = {
+        o: rule
+        for rule, outs in dry_run_jobs(text)
+        for o in outs
+        if not any(p.search(o) for p in NOT_CATALOGUED)
+    }
+    assert len(made) > 100
+    assert [o for o in made if o not in cat] == []
+    assert [(o, rule, cat[o].rule) for o, rule in made.items() if cat[o].rule != rule] == []
+    assert [p for p, e in cat.items() if p not in made and e.kind not in BUILT_WHERE_READ] == []
+
+
+# -------------------------------------------------------------------------------- templates and outputs
+
+
+def test_a_path_template_is_called_as_the_function_it_stands_for():
+    assert str(inspect.signature(paths.fe_scene)) == "(reading, scene)"
+    assert paths.fe_scene(scene="s", reading="r") == paths.fe_scene("r", "s") == "results/fe/r/s.nc"
+    assert paths.friction_table() == paths.friction_table("csv") and paths.validation_round_trip().endswith(
+        ".nc"
+    )
+    with pytest.raises(TypeError, match="scene"):
+        paths.fe_scene("r")
+    templates = {name: t for name, t in vars(paths).items() if isinstance(t, paths.PathTemplate)}
+    assert len(templates) > 30 and all(t.__name__ == name for name, t in templates.items())
+
+
+def test_a_rules_outputs_are_named_and_ordered_as_its_script_reads_them():
+    config = project_config()
+    scenes, readings = list(config["fe"]["scenes"]), config["onedof"]["figures"]["fig02"]["readings"]
+    assert paths.outputs(config, "fe_reading", reading="{fe_reading}") == {
+        "scenes": [paths.fe_scene("{fe_reading}", s) for s in scenes],
+        "cross": paths.fe_cross_scene("{fe_reading}"),
+    }
+    assert paths.outputs(config, "fe_setup_fit", name="{fe_fit}") == {"fit": paths.fe_study("{fe_fit}")}
+    assert paths.outputs(config, "friction_table") == {
+        "csv": paths.friction_table("csv"),
+        "nc": paths.friction_table("nc"),
+    }
+    assert paths.outputs(config, "onedof_figure_fig02") == {
+        "figures": [paths.figure("fig02", r) for r in readings]
+    }
+    assert paths.outputs(config, "no_such_rule") == {}
+
+
+def test_the_fe_paper_figures_are_the_configs_registry():
+    """Which FE paper-figure images exist and what each shows: the config's ``fe.paper_figures`` alone."""
+    config = project_config()
+    config["fe"]["paper_figures"] = {22: ["section9_kinematic_0p5mm_s"]}
+    cat = paths.catalogue(config)
+    paper = [e for e in cat.values() if e.rule == "fe_figures" and e.name("name").startswith("fig")]
+    assert [(e.path, e.figures) for e in paper] == [(paths.figure("fe", "fig22"), (22,))]
+    assert cat[paths.fe_scene("lower_face_drop", "section9_kinematic_0p5mm_s")].figures == (22,)
+    assert cat[paths.fe_scene("lower_face_drop", "section9_kinematic_15p2rpm")].figures == ()

@@ -9,13 +9,7 @@ rule claims_table:
         # which beam-on-disc rows the beam may decide (stickslip.claims.models)
         comparison=paths.fe_model_comparison("csv"),
     output:
-        csv=report(
-            paths.claims_table("csv"),
-            caption=REPORT_CAPTION_FILE,
-            category="Claims",
-            labels={"table": "deviations"},
-        ),
-        md=paths.claims_table("md"),
+        **outputs("claims_table", flags={"csv": report_of("Claims", "table")}),
     log:
         paths.log("claims_table"),
     benchmark:
@@ -39,7 +33,7 @@ rule claims_check:
         datasets=sorted(CLAIMED_DATASETS),
         comparison=paths.fe_model_comparison("csv"),
     output:
-        touch(paths.claims_check()),
+        **outputs("claims_check", flags={"flag": touch}),
     log:
         paths.log("claims_check"),
     benchmark:

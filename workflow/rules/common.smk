@@ -48,6 +48,22 @@ check_claims(
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
 CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
 
+
+def outputs(rule, flags=None, **wildcards):
+    """The rule's outputs as the catalogue declares them (stickslip.catalogue.PRODUCTS), named as its script
+    reads them; ``flags``: output name -> Snakemake flag for each of its files (report, temp, directory)."""
+    flags = flags or {}
+    out = paths.outputs(config, rule, **wildcards)
+    for name, flag in flags.items():
+        out[name] = [flag(p) for p in out[name]] if isinstance(out[name], list) else flag(out[name])
+    return out
+
+
+def products_of(*rules):
+    """Every catalogue path the rules write, wildcards filled with each name of the config."""
+    return [path for path, entry in CATALOGUE.items() if entry.rule in rules]
+
+
 #: The software of every rule, for `--sdm conda` (the default run uses the project's venv: `make figures`).
 CONDA_ENV = "../envs/stickslip.yaml"
 
@@ -81,6 +97,13 @@ ONEDOF_CATALOGUE = onedof_catalogue(ONEDOF)
 #: absolute path under the working directory, since report() resolves captions against the rules folder.
 REPORT_CAPTIONS = paths.report_captions()
 REPORT_CAPTION_FILE = str(Path(REPORT_CAPTIONS).resolve())
+
+
+def report_of(category, label=None, **more):
+    """The report flag of each file of an output (``outputs(flags=...)``): the one caption template, the
+    category, and ``label`` (when given) the file's name."""
+    labels = (lambda p: {"labels": {label: Path(p).stem}}) if label else (lambda p: {})
+    return lambda p: report(p, caption=REPORT_CAPTION_FILE, category=category, **labels(p), **more)
 
 
 #: The paper's baseline run (`onedof.baseline`): the Eq. 6 curve, the critical-speed continuation and a sweep

@@ -33,7 +33,7 @@ rule dense_map_merge:
     input:
         dense_map_chunks,
     output:
-        paths.dense_map("{map}"),
+        **outputs("dense_map_merge", name="{map}"),
     log:
         paths.log("dense_map_merge", "{map}"),
     benchmark:
@@ -56,7 +56,7 @@ rule dense_map_figure:
     input:
         paths.dense_map("{map}"),
     output:
-        paths.figure("dense_map", "{map}"),
+        **outputs("dense_map_figure", name="{map}"),
     log:
         paths.log("dense_map_figure", "{map}"),
     benchmark:
@@ -75,5 +75,4 @@ rule dense_map_figure:
         "../scripts/dense_map_figure.py"
 
 
-ALL_TARGETS.extend(paths.dense_map(name) for name in DENSE_MAPS)
-ALL_TARGETS.extend(paths.figure("dense_map", name) for name in DENSE_MAPS)
+ALL_TARGETS.extend(products_of("dense_map_merge", "dense_map_figure"))

@@ -7,18 +7,13 @@ FE_READINGS = list(FE["readings"])
 FE_DEFAULT_READING = FE_READINGS[0]
 FE_SWEEPS = list(FE["sweeps"])
 FE_FRICTION = FE["friction_table"]
-FE_STUDIES = list(paths.FE_STUDIES)
 #: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
 #: resolved (stickslip.studies.fe_config.job_config): a value re-runs exactly the jobs that read it.
 FE_EFFECTIVE = effective_fe_config(config)
 #: The scenes the studies start from (sweeps, convergence, stability, increments).
 FE_STUDY_SECTIONS = ("sweeps", "convergence", "stability", "increments")
-#: Every scene under every reading, each reading's cross-scene ratios after its scenes.
-FE_SCENE_DATASETS = [paths.fe_scene(r, s) for r in FE_READINGS for s in FE_SCENES] + [
-    paths.fe_cross_scene(r) for r in FE_READINGS
-]
-#: One figure per paper figure of Sections 9-12.
-FE_PAPER_FIGURE_PNGS = [paths.figure("fe", f"fig{n}") for n in paths.fe_paper_figure_numbers()]
+#: The paper's beam-on-disc figures, one PNG each: the config's registry (fe.paper_figures: figure -> scenes).
+FE_PAPER_FIGURES = sorted(FE["paper_figures"])
 FE_STUDY_BASES = sorted(
     {sw["base"] for sw in FE["sweeps"].values()}
     | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
@@ -32,8 +27,7 @@ rule fe_reading:
     input:
         friction=FE_FRICTION,
     output:
-        scenes=[paths.fe_scene("{fe_reading}", s) for s in FE_SCENES],
-        cross=paths.fe_cross_scene("{fe_reading}"),
+        **outputs("fe_reading", reading="{fe_reading}"),
     log:
         paths.log("fe_reading", "{fe_reading}"),
     benchmark:
@@ -60,10 +54,7 @@ rule fe_studies:
     input:
         friction=FE_FRICTION,
     output:
-        sweeps=[paths.fe_study(s) for s in FE_SWEEPS],
-        convergence=paths.fe_study("convergence"),
-        stability=paths.fe_study("stability"),
-        increments=paths.fe_study("continuum_increments"),
+        **outputs("fe_studies"),
     log:
         paths.log("fe_studies", "studies"),
     benchmark:
@@ -90,7 +81,7 @@ rule fe_setup_fit:
     input:
         friction=FE_FRICTION,
     output:
-        paths.fe_study("{fe_fit}"),
+        **outputs("fe_setup_fit", name="{fe_fit}"),
     log:
         paths.log("fe_setup_fit", "{fe_fit}"),
     benchmark:
@@ -119,7 +110,7 @@ rule fe_continuum_window:
     input:
         friction=FE_FRICTION,
     output:
-        paths.fe_continuum_window("{scene}"),
+        **outputs("fe_continuum_window", scene="{scene}"),
     log:
         paths.log("fe_continuum_window", "{scene}"),
     benchmark:
@@ -145,9 +136,7 @@ rule fe_model_comparison:
         window=[paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES],
         beam=[paths.fe_scene(FE_DEFAULT_READING, s) for s in FE_WINDOW_SCENES],
     output:
-        continuum=[paths.fe_continuum(s) for s in FE_SCENES],
-        table=paths.fe_model_comparison("csv"),
-        dataset=paths.fe_model_comparison("nc"),
+        **outputs("fe_model_comparison"),
     log:
         paths.log("fe_model_comparison", "model_comparison"),
     benchmark:
@@ -169,14 +158,11 @@ rule fe_readings_claims:
     input:
         claims="config/claims/sections_09_12.yaml",
         comparison=paths.fe_model_comparison("csv"),
-        data=FE_SCENE_DATASETS
-        + [paths.fe_study(s) for s in FE_SWEEPS + FE_STUDIES]
-        + [paths.fe_study("continuum_increments"), paths.fe_peer_calculix("nc")]
-        + [paths.fe_study(f) for f in FE_SETUP_FITS]
-        # the continuum rows (one reading: never re-pointed per FE reading)
-        + [paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES],
+        # the continuum rows of the windows: one reading, never re-pointed per FE reading
+        data=products_of("fe_reading", "fe_studies", "fe_setup_fit", "fe_continuum_window")
+        + [paths.fe_peer_calculix("nc")],
     output:
-        paths.fe_readings_claims(),
+        **outputs("fe_readings_claims"),
     log:
         paths.log("fe_readings_claims", "readings_claims"),
     benchmark:
@@ -191,6 +177,9 @@ rule fe_readings_claims:
         "../scripts/fe_readings_claims.py"
 
 
+FE_CATEGORY = "Beam on rotating disc (Sections 9-12)"
+
+
 rule fe_figures:
     """Every FE figure in one job (a figure takes ~0.5 s, a job's start-up ~5 s): one per paper figure 21-36
     (default reading, both disc speeds side by side), the paper scenes (default reading, continuum overlaid
@@ -202,20 +191,13 @@ rule fe_figures:
         convergence=paths.fe_study("convergence"),
         stability=paths.fe_study("stability"),
     output:
-        scenes=report(
-            [paths.figure("fe", s) for s in FE_SCENES],
-            caption=REPORT_CAPTION_FILE,
-            category="Beam on rotating disc (Sections 9-12)",
+        **outputs(
+            "fe_figures",
+            flags={
+                "scenes": report_of(FE_CATEGORY),
+                "paper": report_of(FE_CATEGORY, subcategory="One per paper figure"),
+            },
         ),
-        paper=report(
-            FE_PAPER_FIGURE_PNGS,
-            caption=REPORT_CAPTION_FILE,
-            category="Beam on rotating disc (Sections 9-12)",
-            subcategory="One per paper figure",
-        ),
-        readings=paths.figure("fe", "readings"),
-        convergence=paths.figure("fe", "convergence"),
-        stability=paths.figure("fe", "stability"),
     log:
         paths.log("fe_figures", "figures"),
     benchmark:
@@ -227,7 +209,7 @@ rule fe_figures:
         readings=FE_READINGS,
         scenes=FE_SCENES,
         # the paper figures in the order of output.paper, and the scenes each draws (config fe.paper_figures)
-        paper_figure_numbers=list(paths.fe_paper_figure_numbers()),
+        paper_figure_numbers=FE_PAPER_FIGURES,
         paper_figures=FE["paper_figures"],
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
@@ -253,7 +235,7 @@ rule fe_figures:
                 for c in CLAIMS
                 if n in c.figures and c.unit in ("mm", "mm s-1", "s") and c.value is not None
             ]
-            for n in paths.fe_paper_figure_numbers()
+            for n in FE_PAPER_FIGURES
         },
         # Fig. 31: the "several times the initial normal force" the claims row compares with
         paper_normal_force_ratio=next(
@@ -263,22 +245,9 @@ rule fe_figures:
         "../scripts/fe_figures.py"
 
 
-FE_DATASETS = (
-    FE_SCENE_DATASETS
-    + [paths.fe_study(s) for s in FE_SWEEPS + FE_STUDIES]
-    + [paths.fe_study(f) for f in FE_SETUP_FITS]
-    + [paths.fe_continuum_window(s) for s in FE_WINDOW_SCENES]
-    + [
-        paths.fe_model_comparison("csv"),
-        paths.fe_study("continuum_increments"),
-        paths.fe_readings_claims(),
-    ]
+# every FE dataset but the continuum strip's and the model comparison's dataset, and every FE figure
+ALL_TARGETS.extend(
+    products_of("fe_reading", "fe_studies", "fe_setup_fit", "fe_continuum_window", "fe_readings_claims")
+    + [paths.fe_model_comparison("csv")]
+    + products_of("fe_figures")
 )
-FE_FIGURES = (
-    [paths.figure("fe", s) for s in FE_SCENES]
-    + FE_PAPER_FIGURE_PNGS
-    + [paths.figure("fe", name) for name in ("readings", *FE_STUDIES)]
-)
-
-ALL_TARGETS.extend(FE_DATASETS)
-ALL_TARGETS.extend(FE_FIGURES)

@@ -10,9 +10,7 @@ rule fe_peer_calculix:
     """Modes and self-weight states of the strip: closed form, continuum and CalculiX (C3D8I), with the
     relative differences and whether they agree; the two linear decks ccx ran."""
     output:
-        dataset=paths.fe_peer_calculix("nc"),
-        table=paths.fe_peer_calculix("csv"),
-        decks=[paths.fe_deck(d) for d in FE_PEER_DECKS],
+        **outputs("fe_peer_calculix"),
     log:
         paths.log("fe_peer_calculix", "peer"),
     benchmark:
@@ -33,8 +31,7 @@ rule fe_decks:
     input:
         friction=FE_FRICTION,
     output:
-        decks=[paths.fe_deck(s) for s in FE_SCENES],
-        ccx_decks=[paths.fe_deck(s + paths.FE_CCX_SUFFIX) for s in FE_SCENES],
+        **outputs("fe_decks"),
     log:
         paths.log("fe_decks", "decks"),
     benchmark:
@@ -48,8 +45,4 @@ rule fe_decks:
         "../scripts/fe_decks.py"
 
 
-ALL_TARGETS.extend(
-    [paths.fe_peer_calculix("nc"), paths.fe_peer_calculix("csv")]
-    + [paths.fe_deck(d) for d in FE_PEER_DECKS + FE_SCENES]
-    + [paths.fe_deck(s + paths.FE_CCX_SUFFIX) for s in FE_SCENES]
-)
+ALL_TARGETS.extend(products_of("fe_peer_calculix", "fe_decks"))

@@ -1,19 +1,12 @@
 # The inverse study (a fit beside the claims table; it changes no pinned claim).
 # `inverse.long: true` in config/inverse.yaml gives the long run (longer chains, exact leave-one-out refits).
 
-INVERSE_FIGURES = list(config["inverse"]["figures"]) + ["joint"]
-INVERSE_FAMILIES = list(config["inverse"]["families"])
-INVERSE_MODE = "long" if config["inverse"].get("long", False) else "default"
-INVERSE_CORNER = config["inverse"]["settings"][INVERSE_MODE].get("corner", [])
-
 
 rule inverse_study:
     input:
         claims=sorted(str(p) for p in Path(".").glob(config["inverse"]["claims_glob"])),
     output:
-        **{name: paths.inverse_table(name) for name in paths.INVERSE_TABLES},
-        datasets=[paths.inverse_dataset(f) for f in INVERSE_FIGURES],
-        corner=[paths.inverse_corner(f, fam) for f in INVERSE_CORNER for fam in INVERSE_FAMILIES],
+        **outputs("inverse_study"),
     log:
         paths.log("inverse_study"),
     benchmark:

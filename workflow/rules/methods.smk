@@ -1,18 +1,19 @@
 # Issue 3: exact reference vs integration methods (work-precision charts, failure map, notebook).
 
 METHODS_SCENES = list(config["methods_study"]["scenes"])
+METHODS_NC = products_of("methods_work_precision")
+METHODS_PNG = products_of("methods_figures")
 
-METHODS_NC = [paths.methods_work_precision(s) for s in METHODS_SCENES]
-METHODS_PNG = [paths.figure("methods", f"{s}_work_precision") for s in METHODS_SCENES]
-METHODS_FAILURE_PNG = paths.figure("methods", "failure_map")
-METHODS_NOTEBOOK = paths.notebook("methods_work_precision")
-
-ALL_TARGETS.extend(METHODS_NC + [paths.methods_failure_map(), METHODS_FAILURE_PNG, METHODS_NOTEBOOK])
+ALL_TARGETS.extend(
+    METHODS_NC
+    + products_of("methods_failure_map", "methods_notebook")
+    + [paths.figure("methods", "failure_map")]
+)
 
 
 rule methods_work_precision:
     output:
-        paths.methods_work_precision("{scene}"),
+        **outputs("methods_work_precision", scene="{scene}"),
     log:
         paths.log("methods_work_precision", "{scene}"),
     benchmark:
@@ -30,7 +31,7 @@ rule methods_work_precision:
 
 rule methods_failure_map:
     output:
-        paths.methods_failure_map(),
+        **outputs("methods_failure_map"),
     log:
         paths.log("methods_failure_map", "all"),
     benchmark:
@@ -49,20 +50,11 @@ rule methods_figures:
         work_precision=METHODS_NC,
         failure_map=paths.methods_failure_map(),
     output:
-        work_precision=[
-            report(
-                p,
-                caption=REPORT_CAPTION_FILE,
-                category="Integration methods",
-                labels={"chart": Path(p).stem},
-            )
-            for p in METHODS_PNG
-        ],
-        failure_map=report(
-            METHODS_FAILURE_PNG,
-            caption=REPORT_CAPTION_FILE,
-            category="Integration methods",
-            labels={"chart": "failure_map"},
+        **outputs(
+            "methods_figures",
+            flags={
+                name: report_of("Integration methods", "chart") for name in ("work_precision", "failure_map")
+            },
         ),
     log:
         paths.log("methods_figures", "all"),
@@ -77,15 +69,10 @@ rule methods_figures:
 rule methods_notebook:
     input:
         notebook="notebooks/methods_work_precision.py",
-        data=METHODS_NC + [paths.methods_failure_map()],
-        figures=METHODS_PNG + [METHODS_FAILURE_PNG],
+        data=METHODS_NC + products_of("methods_failure_map"),
+        figures=METHODS_PNG,
     output:
-        report(
-            METHODS_NOTEBOOK,
-            caption=REPORT_CAPTION_FILE,
-            category="Notebooks",
-            labels={"notebook": "methods_work_precision"},
-        ),
+        **outputs("methods_notebook", flags={"notebook": report_of("Notebooks", "notebook")}),
     log:
         paths.log("methods_notebook", "all"),
     benchmark:

@@ -9,15 +9,7 @@ rule render_notebooks:
         notebooks=expand("notebooks/{name}.py", name=NOTEBOOKS),
         data=list(dict.fromkeys(f for name in NOTEBOOKS for f in notebook_inputs(name))),
     output:
-        [
-            report(
-                paths.notebook(name),
-                caption=REPORT_CAPTION_FILE,
-                category="Notebooks",
-                labels={"notebook": name},
-            )
-            for name in NOTEBOOKS
-        ],
+        **outputs("render_notebooks", flags={"notebooks": report_of("Notebooks", "notebook")}),
     log:
         [paths.log("render_notebooks", name) for name in NOTEBOOKS],
     benchmark:
@@ -31,4 +23,4 @@ rule render_notebooks:
         "../scripts/render_notebooks.py"
 
 
-ALL_TARGETS.extend(paths.notebook(name) for name in NOTEBOOKS)
+ALL_TARGETS.extend(products_of("render_notebooks"))

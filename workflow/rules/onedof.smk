@@ -34,7 +34,7 @@ for _figure, _spec in ONEDOF["figures"].items():
         input:
             figure_datasets(_figure),
         output:
-            [paths.figure(_figure, r) for r in _spec["readings"]],
+            **outputs(f"onedof_figure_{_figure}"),
         log:
             paths.log("onedof_figure", _figure),
         benchmark:
@@ -51,16 +51,13 @@ for _figure, _spec in ONEDOF["figures"].items():
             "../scripts/plot_onedof_figure.py"
 
 
-ALL_TARGETS.extend(
-    paths.figure(fig, reading) for fig, spec in ONEDOF["figures"].items() for reading in spec["readings"]
-)
+ALL_TARGETS.extend(products_of(*(f"onedof_figure_{fig}" for fig in ONEDOF["figures"])))
 
 
 rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
     output:
-        csv=paths.friction_table("csv"),
-        nc=paths.friction_table("nc"),
+        **outputs("friction_table"),
     log:
         paths.log("friction_table", "all"),
     benchmark:

@@ -11,8 +11,7 @@ CRITICAL_READINGS = CRITICAL["readings"] if CRITICAL else []
 rule eq6_curve:
     """Fig. 4: Eq. 6 as printed and the dimensionally correct amplitude curve, with their peaks."""
     output:
-        nc=paths.eq6_curve(),
-        png=paths.figure("fig04", "eq6"),
+        **outputs("eq6_curve"),
     log:
         paths.log("eq6_curve", "all"),
     benchmark:
@@ -29,7 +28,7 @@ rule eq6_curve:
 rule onedof_sweeps:
     """Every sweep for one reading, in one job (each run takes milliseconds; jobs cost seconds)."""
     output:
-        [sweep_dataset(s, "{reading}", d) for s in SWEEPS for d in (False, True)],
+        **outputs("onedof_sweeps", reading="{reading}"),
     log:
         paths.log("onedof_sweeps", "{reading}"),
     benchmark:
@@ -60,7 +59,7 @@ for _figure, _spec in SWEEP_FIGURES.items():
         input:
             [sweep_dataset(_spec["sweep"], r, d) for r in _spec["readings"] for d in (False, True)],
         output:
-            [paths.figure(_figure, r) for r in _spec["readings"]],
+            **outputs(f"sweep_figure_{_figure}"),
         log:
             paths.log("sweep_figure", _figure),
         benchmark:
@@ -80,7 +79,7 @@ for _figure, _spec in SWEEP_FIGURES.items():
 rule critical_speed:
     """Continuation over belt speed with the exact solver, every reading in one job."""
     output:
-        [paths.critical_speed(r) for r in CRITICAL_READINGS],
+        **outputs("critical_speed"),
     log:
         paths.log("critical_speed", "all"),
     benchmark:
@@ -89,25 +88,23 @@ rule critical_speed:
         CONDA_ENV
     params:
         config=onedof_subconfig(
-            CRITICAL["readings"] if CRITICAL else [],
+            CRITICAL_READINGS,
             BASELINE["scene"],
             BASELINE["method"],
             study="critical_speed",
         ),
-        readings=CRITICAL["readings"] if CRITICAL else [],
+        readings=CRITICAL_READINGS,
         ensemble=ENSEMBLE,
-        ensemble_outputs=sorted(CLAIMED_DATASETS & {paths.critical_speed(r) for r in CRITICAL_READINGS}),
+        ensemble_outputs=sorted(CLAIMED_DATASETS & set(products_of("critical_speed"))),
     script:
         "../scripts/critical_speed.py"
 
 
 rule critical_speed_summary:
     input:
-        [paths.critical_speed(r) for r in CRITICAL_READINGS],
+        products_of("critical_speed"),
     output:
-        csv=paths.critical_speed_summary("csv"),
-        nc=paths.critical_speed_summary("nc"),
-        png=paths.figure("critical_speed", "all"),
+        **outputs("critical_speed_summary"),
     log:
         paths.log("critical_speed_summary", "all"),
     benchmark:
@@ -115,7 +112,7 @@ rule critical_speed_summary:
     conda:
         CONDA_ENV
     params:
-        readings=CRITICAL["readings"] if CRITICAL else [],
+        readings=CRITICAL_READINGS,
     script:
         "../scripts/critical_speed_summary.py"
 
@@ -125,9 +122,7 @@ rule reading_ranking:
     input:
         paths.claims_table(),
     output:
-        csv=paths.reading_ranking("csv"),
-        nc=paths.reading_ranking("nc"),
-        unreproduced=paths.unreproduced_claims(),
+        **outputs("reading_ranking"),
     log:
         paths.log("reading_ranking", "all"),
     benchmark:
@@ -144,7 +139,7 @@ ALL_TARGETS.append(paths.eq6_curve())
 ALL_TARGETS.extend(
     sweep_dataset(s, r, d) for s in SWEEPS for r in config["claims"]["readings"] for d in (False, True)
 )
-ALL_TARGETS.extend(paths.figure(f, r) for f, spec in SWEEP_FIGURES.items() for r in spec["readings"])
+ALL_TARGETS.extend(products_of(*(f"sweep_figure_{fig}" for fig in SWEEP_FIGURES)))
 if CRITICAL:
     ALL_TARGETS.append(paths.critical_speed_summary("csv"))
 ALL_TARGETS.append(paths.reading_ranking("csv"))

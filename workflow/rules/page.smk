@@ -22,7 +22,7 @@ rule figure_verdicts:
         claims=CLAIM_FILES,
         paper="src/stickslip/presentation/paper.yaml",
     output:
-        paths.figure_verdicts(),
+        **outputs("figure_verdicts"),
     log:
         paths.log("figure_verdicts", "all"),
     benchmark:
@@ -54,11 +54,9 @@ rule replication_page:
         ),
         code=PAGE_FILES,
     output:
-        html=PAGE,
-        thumbs=directory(paths.page_thumbs()),
-        # each linked dataset's `stickslip show` text and each linked source file with line anchors (#L<n>)
-        previews=directory(paths.page_previews()),
-        source_pages=directory(paths.page_source_pages()),
+        # thumbnails, each linked dataset's `stickslip show` text and each linked source file with line
+        # anchors (#L<n>): folders
+        **outputs("replication_page", flags=dict.fromkeys(("thumbs", "previews", "source_pages"), directory)),
     log:
         paths.log("replication_page", "all"),
     benchmark:

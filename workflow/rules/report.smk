@@ -7,7 +7,7 @@ rule report_captions:
         table=paths.claims_table(),
         figures="workflow/report/figures.yaml",
     output:
-        REPORT_CAPTIONS,
+        **outputs("report_captions"),
     log:
         paths.log("report_captions", "all"),
     benchmark:

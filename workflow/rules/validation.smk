@@ -3,17 +3,8 @@
 from stickslip.validation.setup import ValidationSetup
 
 VALIDATION = ValidationSetup(config["validation"])
-VALIDATION_LAWS = VALIDATION.law_names()
 
-VALIDATION_METHODS = [
-    paths.validation_methods(law) for law in config["validation"]["methods_per_law"]["laws"]
-]
-
-ALL_TARGETS.extend(
-    [paths.validation_peer_table(law) for law in VALIDATION_LAWS]
-    + VALIDATION_METHODS
-    + [paths.validation_peer(), paths.validation_round_trip("nc"), paths.validation_round_trip("csv")]
-)
+ALL_TARGETS.extend(products_of("validation_peer", "validation_methods", "validation_round_trip"))
 
 
 rule validation_peer:
@@ -21,8 +12,7 @@ rule validation_peer:
     input:
         VALIDATION.table_paths(),
     output:
-        csv=[paths.validation_peer_table(law) for law in VALIDATION_LAWS],
-        nc=paths.validation_peer(),
+        **outputs("validation_peer"),
     log:
         paths.log("validation_peer", "all"),
     benchmark:
@@ -45,8 +35,7 @@ rule validation_round_trip:
             ONEDOF["friction_table"]["method"],
         ),
     output:
-        nc=paths.validation_round_trip("nc"),
-        csv=paths.validation_round_trip("csv"),
+        **outputs("validation_round_trip"),
     log:
         paths.log("validation_round_trip", "all"),
     benchmark:
@@ -68,7 +57,7 @@ rule validation_round_trip:
 rule validation_methods:
     """Issue 13 item 5: the methods study on nonlinear laws, so the ranking is not an artefact of the affine one."""
     output:
-        VALIDATION_METHODS,
+        **outputs("validation_methods"),
     log:
         paths.log("validation_methods", "all"),
     benchmark:

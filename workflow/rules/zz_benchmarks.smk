@@ -9,8 +9,7 @@ rule benchmark_summary:
     input:
         [t for t in ALL_TARGETS if not t.startswith(BENCHMARKS)],
     output:
-        csv=paths.benchmark_summary("csv"),
-        md=paths.benchmark_summary("md"),
+        **outputs("benchmark_summary"),
     log:
         paths.log("benchmark_summary"),
     conda:
