@@ -150,12 +150,7 @@ def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None
     """Widen (in place) the range of every free parameter and combination the equations leave free to its
     extent over the fit's fibre (``structure.fibre_extent``): where no profile traced it (the joint problem,
     a figure the settings do not profile), the straight-line ridges see only the fibre's straight part."""
-    runs, p = r.structure or (), r.problem
-    if not runs:
-        return
-    free = tuple(p.free)
-    rows = {**{q: row for q, row in zip(free, np.eye(len(free)))}, **combination_rows(p)}
-    loose = {n: row for n, row in rows.items() if not identifiable_in_structure(runs, free, tuple(row))}
+    p, free, loose = r.problem, tuple(r.problem.free), _loose_rows(r)
     if not loose:
         return
     u0 = np.log10(v)
@@ -163,7 +158,7 @@ def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None
     pair = None
     if p.nonnegative_plateau and "plateau_speed" in free:
         pair = (free.index("sigma"), free.index("plateau_speed"))
-    ext = 10.0 ** fibre_extent(runs, free, u0, np.array(list(loose.values())), lo, hi, pair)
+    ext = 10.0 ** fibre_extent(r.structure, free, u0, np.array(list(loose.values())), lo, hi, pair)
     for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
         if n in free:
             i = free.index(n)
@@ -175,22 +170,18 @@ def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None
 def _structural_ridges(r: FamilyFit, ridge, c_ridge: dict):
     """Parameters and combinations the equations leave free (``identifiable_in_structure``) are ranges,
     whatever the profiles found: exact, so the same on every CPU."""
-    runs, p = r.structure or (), r.problem
-    if not runs:
-        return ridge, c_ridge
-    free = tuple(p.free)
-    ridge = np.array(
-        [
-            bool(flag) or not identifiable_in_structure(runs, free, tuple(np.eye(len(free))[i]))
-            for i, flag in enumerate(ridge)
-        ]
-    )
-    rows = combination_rows(p)
-    c_ridge = {
-        n: flag or (n in rows and not identifiable_in_structure(runs, free, tuple(rows[n])))
-        for n, flag in c_ridge.items()
+    loose = _loose_rows(r)
+    ridge = np.array([bool(flag) or q in loose for q, flag in zip(r.problem.free, ridge)])
+    return ridge, {n: flag or n in loose for n, flag in c_ridge.items()}
+
+
+def _loose_rows(r: FamilyFit) -> dict:
+    """Name -> log10 row of each free parameter and combination the equations leave free (sigma: both)."""
+    runs, free = r.structure or (), tuple(r.problem.free)
+    rows = {**dict(zip(free, np.eye(len(free)))), **combination_rows(r.problem)}
+    return {
+        n: row for n, row in rows.items() if runs and not identifiable_in_structure(runs, free, tuple(row))
     }
-    return ridge, c_ridge
 
 
 #: A quantity whose interval spans more than this ratio is never called identifiable.
@@ -214,9 +205,11 @@ def _cf(long_name: str, units: str = "1", **extra) -> dict:
     return {"units": units, "long_name": long_name, **extra}
 
 
-FLAG01 = np.array([0, 1], dtype=np.int8)
-OPEN_FLAGS = {"flag_values": np.array([0, 1, 2, 3], dtype=np.int8)}
-OPEN_FLAGS["flag_meanings"] = "bounded open_below open_above open_both"
+def _flags(meanings: str, values=(0, 1)) -> dict:
+    return {"flag_values": np.array(values, dtype=np.int8), "flag_meanings": meanings}
+
+
+OPEN_FLAGS = _flags("bounded open_below open_above open_both", (0, 1, 2, 3))
 #: Combinations of several parameters: their ranges have open flags of their own (sigma, v_p are parameters).
 COMPOUND = [c for c, params in COMBINATIONS.items() if len(params) > 1]
 
@@ -271,8 +264,7 @@ VARIABLES = {
     },
     "on_ridge": _cf(
         "parameter not identifiable (1): reported as the range flat_lower..flat_upper, never a point",
-        flag_values=FLAG01,
-        flag_meanings="pinned on_ridge",
+        **_flags("pinned on_ridge"),
     ),
     "posterior_sd_log10": _cf(
         "posterior spread of log10 parameter",
@@ -305,9 +297,7 @@ VARIABLES = {
         confidence="0.95 pointwise, one parameter",
     ),
     "likelihood_profile_fixed": _cf(
-        "quantity fixed at its best fit to count a flat dimension (1)",
-        flag_values=FLAG01,
-        flag_meanings="profiled fixed",
+        "quantity fixed at its best fit to count a flat dimension (1)", **_flags("profiled fixed")
     ),
     "direction_vector": _cf("unit direction in log10 of the free parameters"),
     "direction_singular_value": _cf(
@@ -339,12 +329,8 @@ VARIABLES = {
     "conflict_count": _cf("minimal conflicting subsets found"),
     "worst_residual": _cf("largest |residual| at the best fit"),
     "chi_square": _cf("sum of squared residuals at the best fit"),
-    "consistent": _cf("verdict", flag_values=FLAG01, flag_meanings="inconsistent consistent"),
-    "fit_source": _cf(
-        "where the best fit comes from",
-        flag_values=FLAG01,
-        flag_meanings="least_squares conflict_search_witness",
-    ),
+    "consistent": _cf("verdict", **_flags("inconsistent consistent")),
+    "fit_source": _cf("where the best fit comes from", **_flags("least_squares conflict_search_witness")),
     "identifiable_dimensions": _cf(
         "identifiable parameter directions: the structural dimension, at most the number of reported numbers",
         comment=IDENTIFIABILITY_METHOD,
