@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from stickslip.inverse.conflicts import minimal_conflicts
-from stickslip.inverse.dataset import analyse
 from stickslip.inverse.forward import Forward
 from stickslip.inverse.identify import PROFILE_THRESHOLD, identify, on_ridge, parameter_ranges
 from stickslip.inverse.problem import build_problem
@@ -43,8 +42,8 @@ def test_fig02_straight_line_profiles_see_the_structural_ridges_only(fig02):
       chi-square is constant to round-off, an exact ridge. It is one of the two ridges the profiles find, and
       C is reported as a range covering 0.5-5, not as a point.
     """
-    p, forward, fit = fig02["problem"], Forward(fig02["problem"]), fig02["fit"]
-    ident = fig02["identification"]
+    p, forward, fit = fig02.problem, Forward(fig02.problem), fig02.fit
+    ident = fig02.identification
     assert ident.dimensions == 4 and ident.ridges == 2  # this analysis alone
     assert all(r.structural for r in ident.ridge_directions)
 
@@ -103,7 +102,7 @@ def test_fig02_exact_curved_ridge_makes_sigma_damping_and_mu_s_n_ranges(fig02):
     not a straight line in log10 (sigma and mu_s N bend against C), so the straight-line profiles miss it;
     the profile likelihood finds it: 3 identifiable dimensions, and sigma, C/M and mu_s N/M reported as
     ranges (no point) that contain the whole curve, as do the ranges of C, mu_s and N."""
-    p, forward, fit = fig02["problem"], Forward(fig02["problem"]), fig02["fit"]
+    p, forward, fit = fig02.problem, Forward(fig02.problem), fig02.fit
     best = fit.free_values
     damping = [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0]
     curve = _fig02_ridge(p, best, damping)
@@ -118,12 +117,12 @@ def test_fig02_exact_curved_ridge_makes_sigma_damping_and_mu_s_n_ranges(fig02):
     off_line = [np.linalg.norm((u - logs[0]) - ((u - logs[0]) @ chord) * chord) for u in logs]
     assert max(off_line) > 0.05  # curved: 0.05 decades off the chord of its ends
 
-    pid, a = fig02["profile"], analyse(fig02)
+    pid, a = fig02.profile, fig02.analysis
     # the dimension is derived from the equations (stickslip.inverse.structure), so it is 3 on every CPU; the
     # profile likelihood runs over the quantities the structure leaves identifiable (K/M) and reports what
     # the data bound there
-    assert fig02["structural_dimensions"] == 3 and a.dims == 3 and pid.dimensions == 3
-    assert fig02["phases"] == (("stick", "slip_backward"),)
+    assert fig02.structural_dimensions == 3 and a.dims == 3 and pid.dimensions == 3
+    assert fig02.phases == (("stick", "slip_backward"),)
     assert set(pid.profiles) == {"K/M"}
     summary = summary_rows("fig02", {"consistent": fig02})[0]
     assert summary["identifiable_dimensions"] == 3 and summary["structural_dimensions"] == 3
@@ -260,7 +259,7 @@ def test_fig02_fit_ends_at_its_minimum_and_no_wide_interval_is_identifiable(fig0
     minimum), and every quantity called identifiable spans at most a decade."""
     from stickslip.inverse.study import MINIMUM_TOL
 
-    assert fig02["profile"].floor >= fig02["fit"].chi2 - MINIMUM_TOL
+    assert fig02.profile.floor >= fig02.fit.chi2 - MINIMUM_TOL
     summary = summary_rows("fig02", {"consistent": fig02})[0]
     for key in [k[len("identifiable_") :] for k in summary if k.startswith("identifiable_")]:
         if key != "dimensions" and summary[f"identifiable_{key}"] == 1:
@@ -274,7 +273,7 @@ def test_an_unprofiled_fig02_still_gives_the_fibre_as_ranges(config, claims):
     problem = build_problem(config, claims, "fig02", "consistent")
     settings = {**settings_of(config), "profile": ["no_figure"]}
     r = fit_problem(problem, settings, steps=0, conflicts=False)
-    assert r["profile"] is None and r["structural_dimensions"] == 3
+    assert r.profile is None and r.structural_dimensions == 3
     row = summary_rows("fig02", {"consistent": r})[0]
     for key in ("sigma", "C_over_M", "mu_s_N_over_M"):
         assert row[f"identifiable_{key}"] == 0 and row[f"best_{key}"] == "", key

@@ -11,9 +11,10 @@ import pytest
 import xarray as xr
 import yaml
 
+from stickslip.inverse.dataset import ABSENT, RAGGED, figure_dataset
 from stickslip.inverse.outputs import write_study
-from stickslip.inverse.problem import PARAMS, load_claim_rows
-from stickslip.inverse.study import run_study
+from stickslip.inverse.problem import PARAMS, build_problem, load_claim_rows
+from stickslip.inverse.study import fit_problem, run_study, settings_of
 from stickslip.io.netcdf import read_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -39,9 +40,8 @@ def unitless_variables(path: Path) -> list[str]:
     return bad
 
 
-@pytest.fixture(scope="module")
-def study(tmp_path_factory):
-    """Figs. 12-13 and the joint problem at CI size (config/test/inverse.yaml), written as the rule writes."""
+def ci_config_and_claims() -> tuple[dict, list]:
+    """The study's configuration at CI size (config/test/inverse.yaml, no corner plots) and the claims."""
     from stickslip.pipeline.config import merge
 
     config = {}
@@ -50,7 +50,13 @@ def study(tmp_path_factory):
     test = yaml.safe_load((ROOT / "config" / "test" / "inverse.yaml").read_text())
     config["inverse"] = merge(config["inverse"], test["inverse"])
     config["inverse"]["settings"]["default"]["corner"] = []
-    claims = load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+    return config, load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    """Figs. 12-13 and the joint problem at CI size, written as the rule writes."""
+    config, claims = ci_config_and_claims()
     out = run_study(config, claims, figures=["fig12"], families=["consistent"])
     target = tmp_path_factory.mktemp("inverse")
     write_study(out, target)
@@ -111,6 +117,39 @@ def test_conflicts_csv_equals_the_datasets(study):
     assert from_csv == sorted(from_ds)
     numbers = list(csv.DictReader((study / "numbers.csv").open()))
     assert {r["unit"] for r in numbers if r["figure"] == "fig12"} == {"Hz"}
+
+
+def test_each_family_keeps_its_own_values_in_a_figure_dataset_and_is_padded_beyond_them():
+    """Figs. 2-3 at CI size, unsampled: the families profile different quantities over different numbers of
+    points and find different numbers of conflicts; concatenated, each keeps exactly its own values, and
+    where another family has more entries it reads as none (flags 0, no conflict, NaN)."""
+    config, claims = ci_config_and_claims()
+    settings = settings_of(config)
+    results = {
+        fam: fit_problem(build_problem(config, claims, "fig02", fam), settings, steps=0)
+        for fam in ("consistent", "plateau")
+    }
+    ds = figure_dataset("fig02", results, settings)
+    own = {fam: r.to_dataset() for fam, r in results.items()}
+    ragged = [d for d in RAGGED if own["consistent"].sizes[d] != own["plateau"].sizes[d]]
+    assert {"profile_point", "conflict"} <= set(ragged) and ds.sizes["sample"] == 1
+    padded = 0
+    for fam, part in own.items():
+        for name in part.data_vars:
+            got = ds[name].sel(family=fam)
+            if "quantity" in part[name].dims:
+                got = got.sel(quantity=part.quantity.values)
+            inside = got.isel({d: slice(0, part.sizes[d]) for d in part[name].dims if d in RAGGED})
+            np.testing.assert_array_equal(inside.values, part[name].values, err_msg=f"{fam} {name}")
+            attrs = part[name].attrs
+            assert got.dtype == part[name].dtype and list(got.attrs) == list(attrs)
+            assert all(np.array_equal(got.attrs[k], attrs[k]) for k in attrs), name
+            if inside.ndim != 1 or inside.size == got.size:
+                continue
+            beyond = got.values[inside.size :]
+            assert np.all(beyond == ABSENT[name]) if name in ABSENT else np.all(np.isnan(beyond)), name
+            padded += 1
+    assert padded > 0
 
 
 @pytest.mark.pipeline

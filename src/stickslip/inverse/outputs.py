@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..catalogue import INVERSE_TABLES
 from ..io.netcdf import publish, write_dataset
 from .dataset import INTERPRETATION
 
@@ -108,9 +109,4 @@ def write_study(out: dict, outdir) -> list[Path]:
         if name in out["settings"].get("corner", []):
             for family in ds.family.values:
                 written.append(corner_plot(ds, str(family), outdir / "corner" / f"{name}_{family}.png"))
-    written.append(write_csv(out["summary"], outdir / "summary.csv"))
-    written.append(write_csv(out["hypotheses"], outdir / "hypotheses.csv"))
-    written.append(write_csv(out["ranking"], outdir / "ranking.csv"))
-    written.append(write_csv(out["numbers"], outdir / "numbers.csv"))
-    written.append(write_csv(out["conflicts"], outdir / "conflicts.csv"))
-    return written
+    return written + [write_csv(out[table], outdir / f"{table}.csv") for table in INVERSE_TABLES]

@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
-from .dataset import COMBINATION_KEYS, analyse, figure_dataset
+from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
@@ -32,7 +32,7 @@ def settings_of(config: dict) -> dict:
 
 def fit_problem(
     problem: Problem, settings: dict, steps: int, loo: bool = False, candidates=(), conflicts: bool = True
-) -> dict:
+) -> FamilyFit:
     """Best fit, region, minimal conflicting subsets (if inconsistent and ``conflicts``), identifiable
     dimensions and (optionally) leave-one-out residuals of one problem.
 
@@ -96,23 +96,24 @@ def fit_problem(
         loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
     noise = residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan
-    return {
-        "problem": problem,
-        "fit": fit,
-        "region": region,
-        "loo": loo_r,
-        "stated_residuals": stated_r,
-        "residual_noise": noise,
-        "conflicts": search,
-        "identification": ident,
-        "profile": profile,
-        "structural_dimensions": structure[0],
-        "phases": structure[1],
-        "structure": structure[2],
-        "fit_source": source,
-        "forward": forward,
-        "cpu": time.process_time() - t0,
-    }
+    return FamilyFit(
+        problem=problem,
+        fit=fit,
+        region=region,
+        loo=loo_r,
+        loo_method=settings["loo"] if loo else "linear",
+        stated_residuals=stated_r,
+        residual_noise=noise,
+        conflicts=search,
+        identification=ident,
+        profile=profile,
+        structural_dimensions=structure[0],
+        phases=structure[1],
+        structure=structure[2],
+        fit_source=source,
+        forward=forward,
+        cpu=time.process_time() - t0,
+    )
 
 
 #: Restarts of a fit from a profile point deeper than it (each then profiled again).
@@ -156,14 +157,14 @@ def residual_noise(problem: Problem, free_values) -> float:
     return float(np.max(d[np.isfinite(d)])) if np.any(np.isfinite(d)) else np.nan
 
 
-def number_rows(name: str, results: dict[str, dict]) -> list[dict]:
+def number_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     """Each reported number with its unit, precision and the measured value at the best fit, per family."""
     rows = []
     for fam, r in results.items():
-        p, fit = r["problem"], r["fit"]
+        p, fit = r.problem, r.fit
         members = set()
-        if r["conflicts"] is not None:
-            members = {i for c in r["conflicts"].conflicts for i in c.members}
+        if r.conflicts is not None:
+            members = {i for c in r.conflicts.conflicts for i in c.members}
         for i, o in enumerate(p.observations):
             rows.append(
                 {
@@ -176,21 +177,21 @@ def number_rows(name: str, results: dict[str, dict]) -> list[dict]:
                     "reading_precision": o.sd,
                     "measured_best": float(f"{o.value + fit.residuals[i] * o.sd:.6g}"),
                     "residual": round(float(fit.residuals[i]), 3),
-                    "residual_stated": round(float(r["stated_residuals"][i]), 3),
+                    "residual_stated": round(float(r.stated_residuals[i]), 3),
                     "in_a_conflict": int(i in members),
                 }
             )
     return rows
 
 
-def conflict_rows(name: str, results: dict[str, dict]) -> list[dict]:
+def conflict_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     """One row per minimal conflicting subset (and one row saying so where none was found)."""
     rows = []
     for fam, r in results.items():
-        search = r["conflicts"]
+        search = r.conflicts
         if search is None:
             continue
-        p, noise = r["problem"], r["residual_noise"]
+        p, noise = r.problem, r.residual_noise
         base = {
             "figure": name,
             "family": fam,
@@ -214,21 +215,21 @@ def conflict_rows(name: str, results: dict[str, dict]) -> list[dict]:
     return rows
 
 
-def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
+def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     rows = []
     for fam, r in results.items():
-        p, fit = r["problem"], r["fit"]
-        a = analyse(r)
+        p, fit = r.problem, r.fit
+        a = r.analysis
         k = int(np.argmax(np.abs(np.nan_to_num(fit.residuals, nan=np.inf))))
         row = {
             "figure": name,
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
-            "structural_dimensions": int(r["structural_dimensions"])
-            if np.isfinite(r["structural_dimensions"])
+            "structural_dimensions": int(r.structural_dimensions)
+            if np.isfinite(r.structural_dimensions)
             else "",
-            "phases_visited": " ".join(sorted({ph for run in r["phases"] for ph in run})),
+            "phases_visited": " ".join(sorted({ph for run in r.phases for ph in run})),
             "dimensions_note": a.note,
             "profiles_bounded": profiles_bounded(r, a),
             "free_parameters": len(p.free),
@@ -247,28 +248,28 @@ def summary_rows(name: str, results: dict[str, dict]) -> list[dict]:
             point, lo, hi = a.combo_point[combo], a.combo_lower[combo], a.combo_upper[combo]
             row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], a.opens.get(combo)))
             row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
-        search = r["conflicts"]
+        search = r.conflicts
         row.update(
             worst_residual=round(fit.worst, 3) if math.isfinite(fit.worst) else "inf",
             worst_claim=p.observations[k].claim,
             chi_square=round(fit.chi2, 3) if math.isfinite(fit.chi2) else "inf",
             verdict="consistent" if fit.consistent else "inconsistent",
-            residual_noise=round(r["residual_noise"], 3) if math.isfinite(r["residual_noise"]) else "",
-            verdict_above_noise=int(abs(fit.worst - 1.0) > r["residual_noise"])
-            if math.isfinite(r["residual_noise"]) and math.isfinite(fit.worst)
+            residual_noise=round(r.residual_noise, 3) if math.isfinite(r.residual_noise) else "",
+            verdict_above_noise=int(abs(fit.worst - 1.0) > r.residual_noise)
+            if math.isfinite(r.residual_noise) and math.isfinite(fit.worst)
             else "",
-            fit_source=r["fit_source"],
+            fit_source=r.fit_source,
             minimal_conflicts=len(search.conflicts) if search is not None else "",
         )
         rows.append(row)
     return rows
 
 
-def profiles_bounded(r: dict, a) -> str:
+def profiles_bounded(r: FamilyFit, a) -> str:
     """'k of n': of the n quantities profiled (those the structure fixes), how many the data bound, i.e. are
     reported as identifiable (profile above the threshold on both sides, at most a decade wide); '' where
     nothing was profiled. The structural count says what the equations allow, this what the numbers give."""
-    pid, free = r.get("profile"), tuple(r["problem"].free)
+    pid, free = r.profile, tuple(r.problem.free)
     if pid is None or not pid.profiles:
         return ""
     bounded = sum(
@@ -293,18 +294,20 @@ def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
     }
 
 
-def misprint_tables(config: dict, claims: dict, joint: dict[str, dict], settings: dict) -> tuple[list, list]:
+def misprint_tables(
+    config: dict, claims: dict, joint: dict[str, FamilyFit], settings: dict
+) -> tuple[list, list]:
     """(hypothesis rows, ranking rows) on the joint problem of each family."""
     hyp_rows, rank_rows = [], []
     for fam, r in joint.items():
-        p = r["problem"]
+        p = r.problem
         rows = [stated_score(p)] + named_hypotheses(
             p, config["inverse"]["hypotheses"], settings["scan_points"]
         )
         rows += single_changes(p, settings["scan_points"])
         hyp_rows += [s.row(fam) for s in rows]
-        sd = r["region"].sd_log10 if r["region"] is not None else laplace_sd(p, r["fit"].jacobian)
-        rank_rows += [{"family": fam, **row} for row in ranking(p, r["fit"].free_values, sd)]
+        sd = r.region.sd_log10 if r.region is not None else laplace_sd(p, r.fit.jacobian)
+        rank_rows += [{"family": fam, **row} for row in ranking(p, r.fit.free_values, sd)]
     return hyp_rows, rank_rows
 
 
@@ -335,12 +338,12 @@ def run_study(config: dict, claims: dict, figures=None, families=None) -> dict:
                 candidates=candidates,
                 conflicts=name != "joint",
             )
-            fitted[fam].append(dict(zip(problem.free, results[fam]["fit"].free_values)))
+            fitted[fam].append(dict(zip(problem.free, results[fam].fit.free_values)))
         out["datasets"][name] = figure_dataset(name, results, settings)
         out["summary"] += summary_rows(name, results)
         out["numbers"] += number_rows(name, results)
         out["conflicts"] += conflict_rows(name, results)
-        out["cpu"][name] = sum(r["cpu"] for r in results.values())
+        out["cpu"][name] = sum(r.cpu for r in results.values())
         if name == "joint":
             t0 = time.process_time()
             out["hypotheses"], out["ranking"] = misprint_tables(config, claims, results, settings)
