@@ -13,7 +13,7 @@ import pytest
 from stickslip.claims.load import load_claims
 from stickslip.claims.table import read_table
 from stickslip.presentation.page import outcome_line, paper_spec
-from stickslip.presentation.verdicts import (
+from stickslip.claims.verdicts import (
     SUCCESS,
     VERDICTS,
     best_reading,
@@ -297,6 +297,7 @@ def check_page(chrome, run):
     recomputed = figure_table(
         paper_spec(), rows, claims, table["2"]["primary_reading"], table["2"]["printed_reading"],
         table["21"]["primary_reading"], read_table(results / "fe" / "readings_claims.csv"),
+        [r["reading"] for r in read_table(results / "claims" / "reading_ranking.csv")],
     )  # fmt: skip
     assert {r["figure"]: str(r["primary_verdict"]) for r in recomputed} == {
         k: v["primary_verdict"] for k, v in table.items()
@@ -382,7 +383,7 @@ def _tiny_table(tmp_path):
         {"claim": "f", "reading": "r2", "status": "reproduced", "evidence": "fit"},
     ]
     paper = {"figures": [{"number": 2, "half": "onedof"}, {"number": 3, "half": "onedof"}], "text": []}
-    table = figure_table(paper, rows, claims, "r1", "r2", "", [])
+    table = figure_table(paper, rows, claims, "r1", "r2", "", [], ["r1", "r2"])
     path = tmp_path / "figure_verdicts.csv"
     with path.open("w", newline="") as fh:
         writer = csv.DictWriter(fh, fieldnames=list(table[0]))

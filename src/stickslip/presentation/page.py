@@ -33,7 +33,7 @@ from ..claims.table import read_table
 from .report import paper_figures
 from .show import show_text
 from .sources import definition_lines, imported_names, rule_line
-from .verdicts import (
+from ..claims.verdicts import (
     SPEEDS,
     VERDICT_RULE,
     VERDICTS,
@@ -363,7 +363,7 @@ class PageBuilder:
         self.figures_of = claim_figures(self.claims)
         self.claim = {c.id: c for c in self.claims}
         self.rows = read_table(self.results / "claims" / "deviations.csv")
-        #: every figure's verdicts, the table the notebooks read too (stickslip.presentation.verdicts)
+        #: every figure's verdicts, the table the notebooks read too (stickslip.claims.verdicts)
         self.verdicts = {r["figure"]: r for r in read_csv(self.results / "claims" / "figure_verdicts.csv")}
         self.descriptions = dict(reading_descriptions or {})
         self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
