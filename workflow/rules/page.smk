@@ -56,9 +56,8 @@ rule replication_page:
     output:
         html=PAGE,
         thumbs=directory(paths.page_thumbs()),
-        # each linked dataset's `stickslip show` text and each linked source file with line anchors (#L<n>)
+        # each linked dataset's `stickslip show` text
         previews=directory(paths.page_previews()),
-        source_pages=directory(paths.page_source_pages()),
     log:
         paths.log("replication_page", "all"),
     benchmark:

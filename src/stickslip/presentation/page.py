@@ -7,8 +7,8 @@ list and captions ship with this package (``paper.yaml``). The page is static: C
 network; every link is relative, so it opens from the file system.
 
 Beside it, under ``results/page/``: ``datasets/<path>.html``, each linked dataset's ``stickslip show`` text (a
-netCDF file has no preview in a browser), and ``source/<path>.html``, each linked source file with an anchor
-per line (``#L<n>``), so a link can open a rule or a function at its definition.
+netCDF file has no preview in a browser). A link to a rule or a function opens its file in the repository and
+names the line of its definition (``workflow/rules/fe.smk, line 253``).
 """
 
 from __future__ import annotations
@@ -30,9 +30,6 @@ from .. import catalogue as paths
 from ..claims.load import load_claims
 from ..claims.rows import EVIDENCE_CLASSES, Claim
 from ..claims.table import read_table
-from .report import paper_figures
-from .show import show_text
-from .sources import definition_lines, imported_names, rule_line
 from ..claims.verdicts import (
     SPEEDS,
     VERDICT_RULE,
@@ -45,6 +42,9 @@ from ..claims.verdicts import (
     tally,
     verdict_label,
 )
+from .report import paper_figures
+from .show import show_text
+from .sources import definition_lines, imported_names, rule_line
 
 #: What a claim check's status means (the page's glossary).
 STATUS_MEANING = {
@@ -377,8 +377,7 @@ class PageBuilder:
         self.thumbs = self.results / "page" / "thumbs"
         self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
         self.previews = self.results / "page" / "datasets"
-        self.source_pages = self.results / "page" / "source"
-        #: file -> its text page (a dataset's ``stickslip show`` text, a source file by line), for ``context``
+        #: dataset -> its text page (its ``stickslip show`` text), for ``context`` to write
         self.text_jobs: dict[Path, Path] = {}
         self.workers = workers
         self.configuration = configuration
@@ -400,29 +399,29 @@ class PageBuilder:
     def link(self, path, text=None) -> dict:
         return {"href": self.href(path), "text": text or str(path)}
 
-    def text_page_of(self, path, folder: Path, base: Path) -> Path | None:
-        """Where the text page of ``path`` (relative to the working directory) goes: its path below ``base``
-        under ``folder``, registered for ``context`` to write; None when the file does not exist."""
+    def preview_of(self, path) -> Path | None:
+        """Where the ``stickslip show`` page of dataset ``path`` (relative to the working directory) goes,
+        registered for ``context`` to write; None when the file does not exist or lies outside results/."""
         full = self.workdir / path
         if not full.is_file():
             return None
-        rel = Path(os.path.relpath(full, base))
-        if rel.parts[0] == "..":  # outside ``base``: no page of its own
+        rel = Path(os.path.relpath(full, self.results))
+        if rel.parts[0] == "..":
             return None
-        out = folder / f"{rel.as_posix()}.html"
+        out = self.previews / f"{rel.as_posix()}.html"
         self.text_jobs.setdefault(full, out)
         return out
 
-    def source_link(self, path, line: int | None = None, text=None) -> dict:
-        """A link to the rendered source file ``path`` (at ``line`` when given), or the file itself when
-        it cannot be rendered; ``href`` None when the file does not exist."""
-        out = self.text_page_of(path, self.source_pages, self.workdir)
-        href = self.page_path(out) + (f"#L{line}" if line else "") if out else self.href(path)
-        return {"href": href, "text": text or str(path)}
+    def source_link(self, path, line: int | None = None, name: str = "") -> dict:
+        """A link to the repository file ``path``; ``line``, where known, is the line of the definition the
+        link is about (stated in its text: a browser opens a plain file at its top). ``href`` None when the
+        file does not exist."""
+        label = name or str(path)
+        return {"href": self.href(path), "text": f"{label}, line {line}" if line else label, "line": line}
 
     def dataset_link(self, path) -> dict:
         """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""
-        out = self.text_page_of(path, self.previews, self.results) if str(path).endswith(".nc") else None
+        out = self.preview_of(path) if str(path).endswith(".nc") else None
         file = self.href(path)
         if out is None:
             return {"href": file, "text": str(path), "file": None}
@@ -811,21 +810,19 @@ class PageBuilder:
         }
 
     def write_text_pages(self) -> None:
-        """Every registered text page: a dataset's ``stickslip show`` text, a source file by line. The
-        folders exist even when empty (they are the page rule's outputs)."""
+        """Every registered dataset's ``stickslip show`` page. The folder exists even when empty (it is an
+        output of the page rule)."""
         index = self.results / "index.html"
-        for folder in (self.previews, self.source_pages):
-            folder.mkdir(parents=True, exist_ok=True)
+        self.previews.mkdir(parents=True, exist_ok=True)
         for path, out in self.text_jobs.items():
-            label = os.path.relpath(path, self.workdir)
             out.parent.mkdir(parents=True, exist_ok=True)
-            page = dict(title=label, index_href=relative_href(index, out), file_href=relative_href(path, out))
-            if out.is_relative_to(self.previews):
-                text = render_text_page(**page, file_label=f"download {path.name}", text=show_text(path))
-            else:
-                text = render_text_page(
-                    **page, file_label="plain text", lines=path.read_text(errors="replace").splitlines()
-                )
+            text = render_text_page(
+                title=os.path.relpath(path, self.workdir),
+                index_href=relative_href(index, out),
+                file_href=relative_href(path, out),
+                file_label=f"download {path.name}",
+                text=show_text(path),
+            )
             write_atomically(out, text)
 
 
@@ -869,15 +866,13 @@ def render(context: dict) -> str:
     return _templates().get_template("page.html.j2").render(css=css, **context)
 
 
-def render_text_page(
-    title: str, index_href: str, file_href: str = "", file_label: str = "", text: str = "", lines=()
-) -> str:
-    """A file as a page of its own (escaped): ``text`` as one block (a dataset's summary), or ``lines``
-    numbered with an anchor each (``id="L<n>"``, counted from 1, as an editor counts)."""
-    return _templates().get_template("text_page.html.j2").render(
-        title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text,
-        lines=list(lines),
-    )  # fmt: skip
+def render_text_page(title: str, index_href: str, file_href: str, file_label: str, text: str) -> str:
+    """A dataset's summary ``text`` as a page of its own (escaped), linking back to the page and the file."""
+    return (
+        _templates()
+        .get_template("text_page.html.j2")
+        .render(title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text)
+    )
 
 
 def build_page(out: Path, builder: PageBuilder) -> Path:
