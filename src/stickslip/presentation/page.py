@@ -351,32 +351,32 @@ class PageBuilder:
         reading_descriptions: dict[str, str] | None = None,
         friction_table: str = paths.friction_table(),
         claims_glob: str = "config/claims/*.yaml",
-        results: str = paths.RESULTS,
         workers: int = 1,
         configuration: str = "config/*.yaml",
     ):
         self.workdir = Path(workdir)
-        self.results = self.workdir / results
+        self.results = self.workdir / paths.RESULTS
         self.sources = sources
         self.paper = paper_spec()
         self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
         self.figures_of = claim_figures(self.claims)
         self.claim = {c.id: c for c in self.claims}
-        self.rows = read_table(self.results / "claims" / "deviations.csv")
+        self.rows = read_table(self.workdir / paths.claims_table())
         #: every figure's verdicts, the table the notebooks read too (stickslip.claims.verdicts)
-        self.verdicts = {r["figure"]: r for r in read_csv(self.results / "claims" / "figure_verdicts.csv")}
+        self.verdicts = {r["figure"]: r for r in read_csv(self.workdir / paths.figure_verdicts())}
         self.descriptions = dict(reading_descriptions or {})
-        self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
+        self.ranking = read_csv(self.workdir / paths.reading_ranking())
         self.order = [r["reading"] for r in self.ranking]
-        self.fe_rows = [r for r in read_csv(self.results / "fe" / "readings_claims.csv") if is_evidence(r)]
+        self.fe_rows = [r for r in read_csv(self.workdir / paths.fe_readings_claims()) if is_evidence(r)]
         self.fe_default = fe_default_reading
         self.friction_table = friction_table
         self.inverse_figures = inverse_figures
-        self.inverse = {name: read_csv(p) for name, p in self._inverse_tables().items()}
-        self.notebooks = {n: notebook_sections(self.results / "notebooks" / f"{n}.html") for n in notebooks}
-        self.thumbs = self.results / "page" / "thumbs"
+        self.inverse_paths = self._inverse_tables()
+        self.inverse = {name: read_csv(self.workdir / p) for name, p in self.inverse_paths.items()}
+        self.notebooks = {n: notebook_sections(self.workdir / paths.notebook(n)) for n in notebooks}
+        self.thumbs = self.workdir / paths.page_thumbs()
         self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
-        self.previews = self.results / "page" / "datasets"
+        self.previews = self.workdir / paths.page_previews()
         #: dataset -> its text page (its ``stickslip show`` text), for ``context`` to write
         self.text_jobs: dict[Path, Path] = {}
         self.workers = workers
@@ -429,12 +429,12 @@ class PageBuilder:
 
     # -- inverse --------------------------------------------------------------------------------------
 
-    def _inverse_tables(self) -> dict[str, Path]:
-        """Every table of the inverse study with a ``figure`` column (the per-figure verdicts first)."""
-        folder = self.results / "inverse"
-        tables = sorted(folder.glob("*.csv")) if folder.is_dir() else []
-        tables.sort(key=lambda p: (p.name != "summary.csv", p.name))
-        return {p.name: p for p in tables if "figure" in (read_csv(p)[:1] or [{}])[0]}
+    def _inverse_tables(self) -> dict[str, str]:
+        """Every table of the inverse study with a ``figure`` column (the per-figure verdicts first), by
+        file name."""
+        tables = sorted(paths.inverse_table(name) for name in paths.INVERSE_TABLES)
+        tables.sort(key=lambda p: p != paths.inverse_table("summary"))
+        return {Path(p).name: p for p in tables if "figure" in (read_csv(self.workdir / p)[:1] or [{}])[0]}
 
     def inverse_for(self, number: int) -> list[dict]:
         """The inverse study's rows about paper figure ``number`` (an inverse figure covers the paper figures
@@ -460,7 +460,7 @@ class PageBuilder:
             out.append(
                 {
                     "table": table,
-                    "href": self.href(self.results / "inverse" / table),
+                    "href": self.href(self.inverse_paths[table]),
                     "columns": columns,
                     "rows": rows,
                     "verdicts": sorted(
@@ -812,7 +812,7 @@ class PageBuilder:
     def write_text_pages(self) -> None:
         """Every registered dataset's ``stickslip show`` page. The folder exists even when empty (it is an
         output of the page rule)."""
-        index = self.results / "index.html"
+        index = self.workdir / paths.page()
         self.previews.mkdir(parents=True, exist_ok=True)
         for path, out in self.text_jobs.items():
             out.parent.mkdir(parents=True, exist_ok=True)
