@@ -42,6 +42,9 @@ VERDICT_RULE = {
 #: The disc speeds of the beam-on-disc scenes, as their dataset names spell them.
 SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
 
+#: The column of :func:`figure_row` that holds a beam-on-disc figure's ``k of n`` at each disc speed.
+SPEED_COLUMNS = {"15p2rpm": "stated_speed", "0p5mm_s": "implied_speed"}
+
 
 def verdict_label(reproduced: int, decided: int) -> str:
     """The label of ``reproduced`` of ``decided`` claims (:data:`VERDICT_RULE`)."""
@@ -180,7 +183,7 @@ def figure_row(
         out |= _columns("alternative", alt, alternative)
         out |= _columns("best", tally(rows_in_reading(rows, best)) if best else None, best)
         out["readings_searched"] = len(readings)
-        out |= {"stated_speed": "", "implied_speed": ""}
+        out |= dict.fromkeys(SPEED_COLUMNS.values(), "")
     else:
         by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"])) in ("", s)] for s in SPEEDS}
         out |= _columns("primary", tally(rows), primary)
@@ -197,8 +200,7 @@ def figure_row(
         )
         out |= _columns("best", tally([r for r in mine if r["reading"] == best]) if best else None, best)
         out["readings_searched"] = len(readings)
-        out["stated_speed"] = tally(by_speed["15p2rpm"]).text
-        out["implied_speed"] = tally(by_speed["0p5mm_s"]).text
+        out |= {column: tally(by_speed[speed]).text for speed, column in SPEED_COLUMNS.items()}
     out["not_evidence"] = ", ".join(f"{n} {cls.replace('_', ' ')}" for cls, n in sorted(apart.items()))
     return out
 

@@ -31,6 +31,7 @@ from ..claims.load import load_claims
 from ..claims.rows import EVIDENCE_CLASSES, Claim
 from ..claims.table import read_table
 from ..claims.verdicts import (
+    SPEED_COLUMNS,
     SPEEDS,
     VERDICT_RULE,
     VERDICTS,
@@ -565,8 +566,7 @@ class PageBuilder:
             "alternative": cell("alternative"),
             "best": cell("best"),
             "searched": row.get("readings_searched", ""),
-            "stated_speed": row.get("stated_speed", ""),
-            "implied_speed": row.get("implied_speed", ""),
+            **{column: row.get(column, "") for column in SPEED_COLUMNS.values()},
             "not_evidence": row.get("not_evidence", ""),
         }  # fmt: skip
 
@@ -653,12 +653,7 @@ class PageBuilder:
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
-        speeds = []
-        if fe:
-            for speed, label in SPEEDS.items():
-                mine = [r for r in evidence if speed_of(self.claim.get(r["claim"])) in ("", speed)]
-                t = tally(mine)
-                speeds.append({"label": label, "text": t.text, "verdict": t.label})
+        speeds = [{"label": SPEEDS[s], "text": v[col]} for s, col in SPEED_COLUMNS.items()] if fe else []
         verdict = v["primary"]["label"]
         return {
             "key": key,
@@ -673,7 +668,6 @@ class PageBuilder:
             "primary_reading": v["primary"]["reading"],
             "speeds": speeds,
             "best_drawn": best_drawn,
-            "counts": status_counts(r["status"] for r in evidence),
             "n_rows": len(evidence),
             "headline": self.headline(evidence, fe),
             "claims": [self.claim_row(r) for r in evidence],
