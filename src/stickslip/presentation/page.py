@@ -20,7 +20,7 @@ import math
 import os
 import re
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 
@@ -88,7 +88,6 @@ class Source:
     rule: str
     rule_file: str = ""  #: relative to the working directory
     script: str = ""
-    inputs: list[str] = field(default_factory=list)
 
 
 def paper_spec(path: Path | None = None) -> dict:
@@ -366,8 +365,7 @@ class PageBuilder:
         #: every figure's verdicts, the table the notebooks read too (stickslip.claims.verdicts)
         self.verdicts = {r["figure"]: r for r in read_csv(self.workdir / paths.figure_verdicts())}
         self.descriptions = dict(reading_descriptions or {})
-        self.ranking = read_csv(self.workdir / paths.reading_ranking())
-        self.order = [r["reading"] for r in self.ranking]
+        self.order = [r["reading"] for r in read_csv(self.workdir / paths.reading_ranking())]
         self.fe_rows = [r for r in read_csv(self.workdir / paths.fe_readings_claims()) if is_evidence(r)]
         self.fe_default = fe_default_reading
         self.friction_table = friction_table
@@ -396,9 +394,6 @@ class PageBuilder:
     def page_path(self, path: Path) -> str:
         """The link to a file under the results folder that this page writes (it may not exist yet)."""
         return Path(os.path.relpath(path, self.results)).as_posix()
-
-    def link(self, path, text=None) -> dict:
-        return {"href": self.href(path), "text": text or str(path)}
 
     def preview_of(self, path) -> Path | None:
         """Where the ``stickslip show`` page of dataset ``path`` (relative to the working directory) goes,
