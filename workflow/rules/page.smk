@@ -30,6 +30,7 @@ rule figure_verdicts:
     conda:
         CONDA_ENV
     params:
+        claims=CLAIMS,  # the claim rows as the parse read them (common.smk): no job reads the files again
         primary=config["claims"]["primary_reading"],
         printed=config["claims"]["as_printed_reading"],
         alternative=config["claims"].get("alternative_reading") or "",
@@ -66,6 +67,7 @@ rule replication_page:
         CONDA_ENV
     threads: 2  # thumbnails two at a time (the last job: both cores are free)
     params:
+        claims=CLAIMS,
         sources=PAGE_SOURCES,
         notebooks=list(config["notebooks"]),
         inverse_figures={k: v["claims"] for k, v in config["inverse"]["figures"].items()},

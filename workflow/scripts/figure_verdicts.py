@@ -5,7 +5,6 @@ import os
 
 import yaml
 
-from stickslip.claims.load import load_claims
 from stickslip.claims.table import read_table
 from stickslip.claims.verdicts import figure_table
 from stickslip.io.progress import log_to_file
@@ -19,7 +18,7 @@ order = [t["reading"] for t in rank_readings(deviations, sorted({r["reading"] fo
 rows = figure_table(
     yaml.safe_load(open(snakemake.input.paper)),  # noqa: F821
     deviations,
-    load_claims(snakemake.input.claims),  # noqa: F821
+    params.claims,
     params.primary,
     params.printed,
     params.fe_primary,

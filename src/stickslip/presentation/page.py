@@ -353,12 +353,14 @@ class PageBuilder:
         claims_glob: str = "config/claims/*.yaml",
         workers: int = 1,
         configuration: str = "config/*.yaml",
+        claims: list[Claim] | None = None,
     ):
         self.workdir = Path(workdir)
         self.results = self.workdir / paths.RESULTS
         self.sources = sources
         self.paper = paper_spec()
-        self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
+        #: the claim rows (the pipeline passes those its parse read; otherwise read from ``claims_glob``)
+        self.claims = load_claims(sorted(self.workdir.glob(claims_glob))) if claims is None else claims
         self.figures_of = claim_figures(self.claims)
         self.claim = {c.id: c for c in self.claims}
         self.rows = read_table(self.workdir / paths.claims_table())
