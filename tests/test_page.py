@@ -1,6 +1,5 @@
 """The replication page: the verdict rule, and the page of a real run loaded in a headless browser."""
 
-import html
 import re
 import shutil
 import subprocess
@@ -12,8 +11,7 @@ import pytest
 
 from stickslip.claims.load import load_claims
 from stickslip.claims.table import read_table
-from stickslip.presentation.page import outcome_line, paper_spec
-from stickslip.presentation.verdicts import (
+from stickslip.claims.verdicts import (
     SUCCESS,
     VERDICTS,
     best_reading,
@@ -23,6 +21,7 @@ from stickslip.presentation.verdicts import (
     tally,
     verdict_label,
 )
+from stickslip.presentation.page import outcome_line, paper_spec
 
 from project_run import shared_small_run
 
@@ -197,28 +196,27 @@ class _Dom(HTMLParser):
 
     def __init__(self):
         super().__init__()
-        self.urls, self.cards = [], {}
+        self.urls, self.cards, self.lines = [], {}, []
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
         for key in ("href", "src"):
             if a.get(key):
                 self.urls.append(a[key])
+        if tag == "a" and a.get("data-line"):
+            self.lines.append((a["href"], int(a["data-line"])))
         if tag == "section" and "card" in a.get("class", "").split():
             self.cards[a["id"]] = (a.get("data-figure", ""), a.get("data-verdict"))
 
 
-def check_line_anchors(results: Path, urls: list[str]) -> None:
-    """Every source link with a line (``page/source/<file>.html#L<n>``) lands on a rule's or a function's
-    definition, and every dataset link on that dataset's ``stickslip show`` text."""
-    anchored = [urlsplit(u) for u in urls if u.startswith("page/source/") and "#L" in u]
-    assert anchored, "no source link carries a line anchor"
-    for u in anchored:
-        page = (results / unquote(u.path)).read_text()
-        m = re.search(rf'<span class="line" id="{u.fragment}"><a [^>]*>\d+</a>(.*?)</span>', page)
-        assert m, f"{u.path} has no line {u.fragment}"
-        line = html.unescape(m[1]).strip()
-        assert re.match(r"(def |class |rule\b|checkpoint\b)", line), f"{u.path}#{u.fragment} opens {line!r}"
+def check_source_lines_and_previews(results: Path, urls: list[str], lines: list[tuple[str, int]]) -> None:
+    """Every source link with a line (``data-line``) names the line of a rule's or a
+    function's definition in the file it opens, and every dataset link opens that dataset's ``stickslip
+    show`` text."""
+    assert lines, "no source link names a line"
+    for href, n in lines:
+        line = (results / unquote(href)).read_text().splitlines()[n - 1].strip()
+        assert re.match(r"(def |class |rule\b|checkpoint\b)", line), f"{href}, line {n} is {line!r}"
     previews = [u for u in urls if u.startswith("page/datasets/")]
     assert previews, "no dataset link opens a preview"
     for u in previews:
@@ -279,7 +277,7 @@ def check_page(chrome, run):
         if not (results / unquote(parts.path)).exists():
             missing.append(u)
     assert not missing, f"links to files that do not exist: {missing}"
-    check_line_anchors(results, dom.urls)
+    check_source_lines_and_previews(results, dom.urls, dom.lines)
 
     figures = {int(n): v for n, v in dom.cards.values() if n}
     assert sorted(set(PAPER_FIGURES) - set(figures)) == []
@@ -297,6 +295,7 @@ def check_page(chrome, run):
     recomputed = figure_table(
         paper_spec(), rows, claims, table["2"]["primary_reading"], table["2"]["printed_reading"],
         table["21"]["primary_reading"], read_table(results / "fe" / "readings_claims.csv"),
+        [r["reading"] for r in read_table(results / "claims" / "reading_ranking.csv")],
     )  # fmt: skip
     assert {r["figure"]: str(r["primary_verdict"]) for r in recomputed} == {
         k: v["primary_verdict"] for k, v in table.items()
@@ -382,7 +381,7 @@ def _tiny_table(tmp_path):
         {"claim": "f", "reading": "r2", "status": "reproduced", "evidence": "fit"},
     ]
     paper = {"figures": [{"number": 2, "half": "onedof"}, {"number": 3, "half": "onedof"}], "text": []}
-    table = figure_table(paper, rows, claims, "r1", "r2", "", [])
+    table = figure_table(paper, rows, claims, "r1", "r2", "", [], ["r1", "r2"])
     path = tmp_path / "figure_verdicts.csv"
     with path.open("w", newline="") as fh:
         writer = csv.DictWriter(fh, fieldnames=list(table[0]))

@@ -1,5 +1,5 @@
-"""The replication page's links open something readable: a dataset's ``stickslip show`` text, a source file
-at the line that defines the rule or function the link names."""
+"""The replication page's links open something readable: a dataset's ``stickslip show`` text, the repository
+file of a rule or function, with the line of its definition in the link text."""
 
 import html
 import re
@@ -84,40 +84,34 @@ def _builder(project: Path) -> PageBuilder:
     return PageBuilder(workdir=project, sources=[source], notebooks=[], inverse_figures={})
 
 
-def _anchored_line(page: Path, anchor: str) -> str:
-    """The text of the line with id ``anchor`` on a rendered source page (its number and markup removed)."""
-    m = re.search(rf'<span class="line" id="{anchor}"><a [^>]*>\d+</a>(.*?)</span>', page.read_text())
-    assert m, f"no line {anchor} on {page}"
-    return html.unescape(m[1])
+def _opened_line(builder: PageBuilder, link: dict) -> str:
+    """The line a source link names (``..., line <n>``) of the file it opens (its href is relative to
+    results/index.html)."""
+    text, _, number = link["text"].rpartition(", line ")
+    assert text and int(number) == link["line"], link
+    return (builder.results / link["href"]).read_text().splitlines()[link["line"] - 1]
 
 
-def _open(builder: PageBuilder, href: str) -> tuple[Path, str]:
-    """The file a link of results/index.html opens, and its anchor."""
-    path, _, anchor = href.partition("#")
-    return builder.results / path, anchor
-
-
-def test_a_source_link_opens_the_rendered_file_at_the_def_of_the_function_it_names(tmp_path):
+def test_a_source_link_opens_the_repository_file_and_names_the_line_of_the_def_it_is_about(tmp_path):
     builder = _builder(_project(tmp_path))
     image = builder.images(3, "a", [])[0]
-    builder.write_text_pages()
 
     drawing = next(m for m in image["modules"] if m["text"].endswith("drawing.py"))
-    names = {n["text"]: n["href"] for n in drawing["names"]}
+    assert drawing["href"] == "../src/stickslip/presentation/drawing.py"
+    names = {n["text"].partition(",")[0]: n for n in drawing["names"]}
     assert list(names) == ["draw_figure", "Styler"]  # the constant has no definition line of its own
-    page, anchor = _open(builder, names["draw_figure"])
-    assert _anchored_line(page, anchor).startswith("def draw_figure(ds):")
-    page, anchor = _open(builder, names["Styler"])
-    assert _anchored_line(page, anchor) == "class Styler:"
+    assert _opened_line(builder, names["draw_figure"]).startswith("def draw_figure(ds):")
+    assert _opened_line(builder, names["Styler"]) == "class Styler:"
 
-    # the rules file opens at the loop's `rule:` that makes draw_fig03 (its name is an f-string)
-    page, anchor = _open(builder, image["rule_file"]["href"])
-    assert _anchored_line(page, anchor).strip() == "rule:"
-    assert anchor == "L3"
-    # every line of the file is on its page, escaped, in order
-    text = (tmp_path / "workflow/rules/draw.smk").read_text().splitlines()
-    for n, line in enumerate(text, 1):
-        assert _anchored_line(page, f"L{n}") == line
+    # the rules file, at the loop's `rule:` that makes draw_fig03 (its name is an f-string)
+    rule_file = image["rule_file"]
+    assert rule_file["text"] == "workflow/rules/draw.smk, line 3"
+    assert _opened_line(builder, rule_file).strip() == "rule:"
+    # the script is linked as a whole; nothing is copied beside the page
+    script = {"href": "../workflow/scripts/draw.py", "text": "workflow/scripts/draw.py", "line": None}
+    assert image["script"] == script
+    builder.write_text_pages()
+    assert not (builder.results / "page" / "source").exists()
 
 
 def test_rule_and_definition_lines_of_the_pipelines_own_files():

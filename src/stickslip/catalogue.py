@@ -146,11 +146,10 @@ figure = PathTemplate("figures/{group}/{name}.png")
 notebook = PathTemplate("notebooks/{name}.html")
 report_captions = PathTemplate("report/captions.rst")
 #: The replication page and its folders: thumbnails, each linked dataset's ``stickslip show`` text as HTML
-#: (``<path below results>.html``), each linked source file with line anchors (``<file>.html#L<n>``).
+#: (``<path below results>.html``).
 page = PathTemplate("index.html")
 page_thumbs = PathTemplate("page/thumbs")
 page_previews = PathTemplate("page/datasets")
-page_source_pages = PathTemplate("page/source")
 #: Wall time and peak memory of every job, per rule, ``csv`` or ``md``.
 benchmark_summary = PathTemplate("benchmarks/summary.{ext}", ext="csv")
 
@@ -378,7 +377,6 @@ PRODUCTS = (
     Products(page, "replication_page", "html"),
     Products(page_thumbs, "replication_page", "thumbs"),
     Products(page_previews, "replication_page", "previews"),
-    Products(page_source_pages, "replication_page", "source_pages"),
     Products(benchmark_summary, "benchmark_summary", "{ext}", {"ext": ("csv", "md")}),
 )  # fmt: skip
 

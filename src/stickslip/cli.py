@@ -634,7 +634,7 @@ def cmd_claims(args) -> int:
     from . import api
     from .claims.load import load_claims
     from .claims.table import read_table
-    from .presentation.verdicts import VERDICT_RULE, is_evidence, rows_in_reading, tally
+    from .claims.verdicts import VERDICT_RULE, is_evidence, rows_in_reading, tally
 
     root = api.project_root(args.root)
     table = root / paths.claims_table()

@@ -30,6 +30,7 @@ rule figure_verdicts:
     conda:
         CONDA_ENV
     params:
+        claims=CLAIMS,  # the claim rows as the parse read them (common.smk): no job reads the files again
         primary=config["claims"]["primary_reading"],
         printed=config["claims"]["as_printed_reading"],
         alternative=config["claims"].get("alternative_reading") or "",
@@ -54,9 +55,8 @@ rule replication_page:
         ),
         code=PAGE_FILES,
     output:
-        # thumbnails, each linked dataset's `stickslip show` text and each linked source file with line
-        # anchors (#L<n>): folders
-        **outputs("replication_page", flags=dict.fromkeys(("thumbs", "previews", "source_pages"), directory)),
+        # thumbnails and each linked dataset's `stickslip show` text: folders
+        **outputs("replication_page", flags=dict.fromkeys(("thumbs", "previews"), directory)),
     log:
         paths.log("replication_page", "all"),
     benchmark:
@@ -65,6 +65,7 @@ rule replication_page:
         CONDA_ENV
     threads: 2  # thumbnails two at a time (the last job: both cores are free)
     params:
+        claims=CLAIMS,
         sources=PAGE_SOURCES,
         notebooks=list(config["notebooks"]),
         inverse_figures={k: v["claims"] for k, v in config["inverse"]["figures"].items()},

@@ -10,6 +10,7 @@ log_to_file(snakemake.log[0], capture_output=True)
 params = snakemake.params
 builder = PageBuilder(
     workdir=Path.cwd(),
+    claims=list(params.claims),
     sources=[Source(**s) for s in params.sources],
     notebooks=list(params.notebooks),
     inverse_figures=dict(params.inverse_figures),

@@ -219,7 +219,7 @@ VERDICTS_CSV = figure_verdicts_path()
 
 def figure_verdicts(figures, csv_path=VERDICTS_CSV):
     """Each paper figure's verdicts as the replication page (``results/index.html``) shows them, read from
-    the one table both take them from (``stickslip.presentation.verdicts.figure_table``): under the primary
+    the one table both take them from (``stickslip.claims.verdicts.figure_table``): under the primary
     reading, as printed, and the best of the readings (a search). A DataFrame, one row per figure."""
     import pandas as pd
 
@@ -271,7 +271,7 @@ def _verdict_colour(cell: str) -> str:
 
 def verdicts_html(figures, csv_path=VERDICTS_CSV) -> str:
     """The figures' verdicts as a small coloured table, with the rule that derives them in one line."""
-    from stickslip.presentation.verdicts import VERDICT_RULE
+    from stickslip.claims.verdicts import VERDICT_RULE
 
     frame = figure_verdicts(figures, csv_path)
     coloured = [c for c in frame.columns if c.startswith(("verdict", "as printed", "best of"))]

@@ -7,8 +7,8 @@ list and captions ship with this package (``paper.yaml``). The page is static: C
 network; every link is relative, so it opens from the file system.
 
 Beside it, under ``results/page/``: ``datasets/<path>.html``, each linked dataset's ``stickslip show`` text (a
-netCDF file has no preview in a browser), and ``source/<path>.html``, each linked source file with an anchor
-per line (``#L<n>``), so a link can open a rule or a function at its definition.
+netCDF file has no preview in a browser). A link to a rule or a function opens its file in the repository and
+names the line of its definition (``workflow/rules/fe.smk, line 253``).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import math
 import os
 import re
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 
@@ -30,10 +30,8 @@ from .. import catalogue as paths
 from ..claims.load import load_claims
 from ..claims.rows import EVIDENCE_CLASSES, Claim
 from ..claims.table import read_table
-from .report import paper_figures
-from .show import show_text
-from .sources import definition_lines, imported_names, rule_line
-from .verdicts import (
+from ..claims.verdicts import (
+    SPEED_COLUMNS,
     SPEEDS,
     VERDICT_RULE,
     VERDICTS,
@@ -45,6 +43,9 @@ from .verdicts import (
     tally,
     verdict_label,
 )
+from .report import paper_figures
+from .show import show_text
+from .sources import definition_lines, imported_names, rule_line
 
 #: What a claim check's status means (the page's glossary).
 STATUS_MEANING = {
@@ -87,7 +88,6 @@ class Source:
     rule: str
     rule_file: str = ""  #: relative to the working directory
     script: str = ""
-    inputs: list[str] = field(default_factory=list)
 
 
 def paper_spec(path: Path | None = None) -> dict:
@@ -351,34 +351,34 @@ class PageBuilder:
         reading_descriptions: dict[str, str] | None = None,
         friction_table: str = paths.friction_table(),
         claims_glob: str = "config/claims/*.yaml",
-        results: str = paths.RESULTS,
         workers: int = 1,
         configuration: str = "config/*.yaml",
+        claims: list[Claim] | None = None,
     ):
         self.workdir = Path(workdir)
-        self.results = self.workdir / results
+        self.results = self.workdir / paths.RESULTS
         self.sources = sources
         self.paper = paper_spec()
-        self.claims = load_claims(sorted(self.workdir.glob(claims_glob)))
+        #: the claim rows (the pipeline passes those its parse read; otherwise read from ``claims_glob``)
+        self.claims = load_claims(sorted(self.workdir.glob(claims_glob))) if claims is None else claims
         self.figures_of = claim_figures(self.claims)
         self.claim = {c.id: c for c in self.claims}
-        self.rows = read_table(self.results / "claims" / "deviations.csv")
-        #: every figure's verdicts, the table the notebooks read too (stickslip.presentation.verdicts)
-        self.verdicts = {r["figure"]: r for r in read_csv(self.results / "claims" / "figure_verdicts.csv")}
+        self.rows = read_table(self.workdir / paths.claims_table())
+        #: every figure's verdicts, the table the notebooks read too (stickslip.claims.verdicts)
+        self.verdicts = {r["figure"]: r for r in read_csv(self.workdir / paths.figure_verdicts())}
         self.descriptions = dict(reading_descriptions or {})
-        self.ranking = read_csv(self.results / "claims" / "reading_ranking.csv")
-        self.order = [r["reading"] for r in self.ranking]
-        self.fe_rows = [r for r in read_csv(self.results / "fe" / "readings_claims.csv") if is_evidence(r)]
+        self.order = [r["reading"] for r in read_csv(self.workdir / paths.reading_ranking())]
+        self.fe_rows = [r for r in read_csv(self.workdir / paths.fe_readings_claims()) if is_evidence(r)]
         self.fe_default = fe_default_reading
         self.friction_table = friction_table
         self.inverse_figures = inverse_figures
-        self.inverse = {name: read_csv(p) for name, p in self._inverse_tables().items()}
-        self.notebooks = {n: notebook_sections(self.results / "notebooks" / f"{n}.html") for n in notebooks}
-        self.thumbs = self.results / "page" / "thumbs"
+        self.inverse_paths = self._inverse_tables()
+        self.inverse = {name: read_csv(self.workdir / p) for name, p in self.inverse_paths.items()}
+        self.notebooks = {n: notebook_sections(self.workdir / paths.notebook(n)) for n in notebooks}
+        self.thumbs = self.workdir / paths.page_thumbs()
         self.thumb_jobs: list[tuple[Path, Path]] = []  #: (image, thumbnail), made by ``context``
-        self.previews = self.results / "page" / "datasets"
-        self.source_pages = self.results / "page" / "source"
-        #: file -> its text page (a dataset's ``stickslip show`` text, a source file by line), for ``context``
+        self.previews = self.workdir / paths.page_previews()
+        #: dataset -> its text page (its ``stickslip show`` text), for ``context`` to write
         self.text_jobs: dict[Path, Path] = {}
         self.workers = workers
         self.configuration = configuration
@@ -397,32 +397,29 @@ class PageBuilder:
         """The link to a file under the results folder that this page writes (it may not exist yet)."""
         return Path(os.path.relpath(path, self.results)).as_posix()
 
-    def link(self, path, text=None) -> dict:
-        return {"href": self.href(path), "text": text or str(path)}
-
-    def text_page_of(self, path, folder: Path, base: Path) -> Path | None:
-        """Where the text page of ``path`` (relative to the working directory) goes: its path below ``base``
-        under ``folder``, registered for ``context`` to write; None when the file does not exist."""
+    def preview_of(self, path) -> Path | None:
+        """Where the ``stickslip show`` page of dataset ``path`` (relative to the working directory) goes,
+        registered for ``context`` to write; None when the file does not exist or lies outside results/."""
         full = self.workdir / path
         if not full.is_file():
             return None
-        rel = Path(os.path.relpath(full, base))
-        if rel.parts[0] == "..":  # outside ``base``: no page of its own
+        rel = Path(os.path.relpath(full, self.results))
+        if rel.parts[0] == "..":
             return None
-        out = folder / f"{rel.as_posix()}.html"
+        out = self.previews / f"{rel.as_posix()}.html"
         self.text_jobs.setdefault(full, out)
         return out
 
-    def source_link(self, path, line: int | None = None, text=None) -> dict:
-        """A link to the rendered source file ``path`` (at ``line`` when given), or the file itself when
-        it cannot be rendered; ``href`` None when the file does not exist."""
-        out = self.text_page_of(path, self.source_pages, self.workdir)
-        href = self.page_path(out) + (f"#L{line}" if line else "") if out else self.href(path)
-        return {"href": href, "text": text or str(path)}
+    def source_link(self, path, line: int | None = None, name: str = "") -> dict:
+        """A link to the repository file ``path``; ``line``, where known, is the line of the definition the
+        link is about (stated in its text: a browser opens a plain file at its top). ``href`` None when the
+        file does not exist."""
+        label = name or str(path)
+        return {"href": self.href(path), "text": f"{label}, line {line}" if line else label, "line": line}
 
     def dataset_link(self, path) -> dict:
         """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""
-        out = self.text_page_of(path, self.previews, self.results) if str(path).endswith(".nc") else None
+        out = self.preview_of(path) if str(path).endswith(".nc") else None
         file = self.href(path)
         if out is None:
             return {"href": file, "text": str(path), "file": None}
@@ -430,12 +427,12 @@ class PageBuilder:
 
     # -- inverse --------------------------------------------------------------------------------------
 
-    def _inverse_tables(self) -> dict[str, Path]:
-        """Every table of the inverse study with a ``figure`` column (the per-figure verdicts first)."""
-        folder = self.results / "inverse"
-        tables = sorted(folder.glob("*.csv")) if folder.is_dir() else []
-        tables.sort(key=lambda p: (p.name != "summary.csv", p.name))
-        return {p.name: p for p in tables if "figure" in (read_csv(p)[:1] or [{}])[0]}
+    def _inverse_tables(self) -> dict[str, str]:
+        """Every table of the inverse study with a ``figure`` column (the per-figure verdicts first), by
+        file name."""
+        tables = sorted(paths.inverse_table(name) for name in paths.INVERSE_TABLES)
+        tables.sort(key=lambda p: p != paths.inverse_table("summary"))
+        return {Path(p).name: p for p in tables if "figure" in (read_csv(self.workdir / p)[:1] or [{}])[0]}
 
     def inverse_for(self, number: int) -> list[dict]:
         """The inverse study's rows about paper figure ``number`` (an inverse figure covers the paper figures
@@ -461,7 +458,7 @@ class PageBuilder:
             out.append(
                 {
                     "table": table,
-                    "href": self.href(self.results / "inverse" / table),
+                    "href": self.href(self.inverse_paths[table]),
                     "columns": columns,
                     "rows": rows,
                     "verdicts": sorted(
@@ -566,8 +563,7 @@ class PageBuilder:
             "alternative": cell("alternative"),
             "best": cell("best"),
             "searched": row.get("readings_searched", ""),
-            "stated_speed": row.get("stated_speed", ""),
-            "implied_speed": row.get("implied_speed", ""),
+            **{column: row.get(column, "") for column in SPEED_COLUMNS.values()},
             "not_evidence": row.get("not_evidence", ""),
         }  # fmt: skip
 
@@ -654,12 +650,7 @@ class PageBuilder:
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
-        speeds = []
-        if fe:
-            for speed, label in SPEEDS.items():
-                mine = [r for r in evidence if speed_of(self.claim.get(r["claim"])) in ("", speed)]
-                t = tally(mine)
-                speeds.append({"label": label, "text": t.text, "verdict": t.label})
+        speeds = [{"label": SPEEDS[s], "text": v[col]} for s, col in SPEED_COLUMNS.items()] if fe else []
         verdict = v["primary"]["label"]
         return {
             "key": key,
@@ -674,7 +665,6 @@ class PageBuilder:
             "primary_reading": v["primary"]["reading"],
             "speeds": speeds,
             "best_drawn": best_drawn,
-            "counts": status_counts(r["status"] for r in evidence),
             "n_rows": len(evidence),
             "headline": self.headline(evidence, fe),
             "claims": [self.claim_row(r) for r in evidence],
@@ -811,21 +801,19 @@ class PageBuilder:
         }
 
     def write_text_pages(self) -> None:
-        """Every registered text page: a dataset's ``stickslip show`` text, a source file by line. The
-        folders exist even when empty (they are the page rule's outputs)."""
-        index = self.results / "index.html"
-        for folder in (self.previews, self.source_pages):
-            folder.mkdir(parents=True, exist_ok=True)
+        """Every registered dataset's ``stickslip show`` page. The folder exists even when empty (it is an
+        output of the page rule)."""
+        index = self.workdir / paths.page()
+        self.previews.mkdir(parents=True, exist_ok=True)
         for path, out in self.text_jobs.items():
-            label = os.path.relpath(path, self.workdir)
             out.parent.mkdir(parents=True, exist_ok=True)
-            page = dict(title=label, index_href=relative_href(index, out), file_href=relative_href(path, out))
-            if out.is_relative_to(self.previews):
-                text = render_text_page(**page, file_label=f"download {path.name}", text=show_text(path))
-            else:
-                text = render_text_page(
-                    **page, file_label="plain text", lines=path.read_text(errors="replace").splitlines()
-                )
+            text = render_text_page(
+                title=os.path.relpath(path, self.workdir),
+                index_href=relative_href(index, out),
+                file_href=relative_href(path, out),
+                file_label=f"download {path.name}",
+                text=show_text(path),
+            )
             write_atomically(out, text)
 
 
@@ -869,15 +857,13 @@ def render(context: dict) -> str:
     return _templates().get_template("page.html.j2").render(css=css, **context)
 
 
-def render_text_page(
-    title: str, index_href: str, file_href: str = "", file_label: str = "", text: str = "", lines=()
-) -> str:
-    """A file as a page of its own (escaped): ``text`` as one block (a dataset's summary), or ``lines``
-    numbered with an anchor each (``id="L<n>"``, counted from 1, as an editor counts)."""
-    return _templates().get_template("text_page.html.j2").render(
-        title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text,
-        lines=list(lines),
-    )  # fmt: skip
+def render_text_page(title: str, index_href: str, file_href: str, file_label: str, text: str) -> str:
+    """A dataset's summary ``text`` as a page of its own (escaped), linking back to the page and the file."""
+    return (
+        _templates()
+        .get_template("text_page.html.j2")
+        .render(title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text)
+    )
 
 
 def build_page(out: Path, builder: PageBuilder) -> Path:

@@ -4,8 +4,8 @@ Called by ``workflow/rules/page.smk`` at parse time with Snakemake's rules: an i
 its catalogue entry carries (``Entry.figures``, from the config's ``paper_figures`` maps of both halves), or,
 drawn by a rule no map names (an equation's curve), those its rule's docstring names ("Fig. 4: ...").
 
-Also the line a source link points to: a rule's definition in its rules file, a function's ``def`` in a module
-(the page renders those files with an anchor per line, ``#L<n>``).
+Also the line a source link names: a rule's definition in its rules file, a function's ``def`` in a module
+(the page links the repository file and states that line).
 """
 
 from __future__ import annotations

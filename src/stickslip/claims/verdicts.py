@@ -17,10 +17,9 @@ Every consumer (the page, the notebooks) reads the one table :func:`figure_table
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # annotations only: like speed_of, the module imports the claims package when it runs
-    from ..claims.rows import Claim
+from .load import disc_speed
+from .rows import STATUSES, Claim
 
 #: Figure verdicts, best first.
 VERDICTS = ("reproduced", "mostly reproduced", "partly", "deviating", "not comparable")
@@ -42,6 +41,9 @@ VERDICT_RULE = {
 
 #: The disc speeds of the beam-on-disc scenes, as their dataset names spell them.
 SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
+
+#: The column of :func:`figure_row` that holds a beam-on-disc figure's ``k of n`` at each disc speed.
+SPEED_COLUMNS = {"15p2rpm": "stated_speed", "0p5mm_s": "implied_speed"}
 
 
 def verdict_label(reproduced: int, decided: int) -> str:
@@ -125,8 +127,6 @@ def best_reading(rows: list[dict], order: list[str]) -> str:
 
 def status_counts(statuses) -> dict[str, int]:
     """Count of each claim status (every status of the claims table, zeros included)."""
-    from ..claims.rows import STATUSES
-
     statuses = list(statuses)
     return {s: statuses.count(s) for s in STATUSES}
 
@@ -134,8 +134,6 @@ def status_counts(statuses) -> dict[str, int]:
 def speed_of(claim: Claim | None) -> str:
     """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both (or no
     claim: a table row whose id is in no claims file)."""
-    from ..claims.load import disc_speed
-
     return "" if claim is None else disc_speed(claim)
 
 
@@ -185,7 +183,7 @@ def figure_row(
         out |= _columns("alternative", alt, alternative)
         out |= _columns("best", tally(rows_in_reading(rows, best)) if best else None, best)
         out["readings_searched"] = len(readings)
-        out |= {"stated_speed": "", "implied_speed": ""}
+        out |= dict.fromkeys(SPEED_COLUMNS.values(), "")
     else:
         by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"])) in ("", s)] for s in SPEEDS}
         out |= _columns("primary", tally(rows), primary)
@@ -202,8 +200,7 @@ def figure_row(
         )
         out |= _columns("best", tally([r for r in mine if r["reading"] == best]) if best else None, best)
         out["readings_searched"] = len(readings)
-        out["stated_speed"] = tally(by_speed["15p2rpm"]).text
-        out["implied_speed"] = tally(by_speed["0p5mm_s"]).text
+        out |= {column: tally(by_speed[speed]).text for speed, column in SPEED_COLUMNS.items()}
     out["not_evidence"] = ", ".join(f"{n} {cls.replace('_', ' ')}" for cls, n in sorted(apart.items()))
     return out
 
@@ -216,15 +213,15 @@ def figure_table(
     printed: str,
     fe_primary: str,
     fe_rows: list[dict],
+    order: list[str],
     alternative: str = "",
 ) -> list[dict]:
     """Every entry of the paper's figure list (``paper.yaml``: figures, then text-only sections) with its
-    verdicts (:func:`figure_row`). ``rows``: the claims table; ``fe_rows``: the FE readings table."""
-    from ..studies.ranking import rank_readings
-
+    verdicts (:func:`figure_row`). ``rows``: the claims table; ``fe_rows``: the FE readings table;
+    ``order``: the readings as the interpretation study ranks them (``studies.ranking``), which breaks ties
+    between equally good readings."""
     by_id = {c.id: c for c in claims}
     figs_of = {c.id: sorted(c.figures) for c in claims}
-    order = [t["reading"] for t in rank_readings(rows, sorted({r["reading"] for r in rows} - {""}))]
     out = []
     for entry in paper["figures"] + paper.get("text", []):
         number = entry.get("number")
