@@ -16,7 +16,7 @@ from stickslip.inverse.problem import PARAMS, load_claim_rows
 from stickslip.inverse.study import run_study
 from stickslip.io.netcdf import read_dataset
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def unitless_variables(path: Path) -> list[str]:
