@@ -67,6 +67,47 @@ CASES = {
     "ensemble_relative_at_the_jobs_limit": ({"ensemble": {"relative": 1.0e-3}}, ["ensemble", "relative"]),
     "ensemble_seeds_empty": ({"ensemble": {"seeds": []}}, ["ensemble.seeds"]),
     "ensemble_step_factor_above_one": ({"ensemble": {"step_factor": 1.5}}, ["ensemble.step_factor"]),
+    "ensemble_step_factor_one": ({"ensemble": {"step_factor": 1.0}}, ["ensemble.step_factor"]),
+    # a scene's own parameters, named with their full key
+    "scene_mass_nan": (
+        {"onedof": {"scenes": {"fig02": {"params": {"mass": float("nan")}}}}},
+        ["onedof.scenes.fig02.params.mass"],
+    ),
+    # strict: no string for a number, even one that reads as a number
+    "scene_mass_numeric_string": (
+        {"onedof": {"scenes": {"fig02": {"params": {"mass": "1.0"}}}}},
+        ["onedof.scenes.fig02.params.mass"],
+    ),
+    "scene_params_typo": (
+        {"onedof": {"scenes": {"fig02": {"params": {"masss": 1.0}}}}},
+        ["onedof.scenes.fig02.params.masss"],
+    ),
+    "reading_variant_unknown": (
+        {"onedof": {"readings": {"consistent_caption": {"variant": "eq5"}}}},
+        ["variant"],
+    ),
+    "ode45_option_typo": ({"onedof": {"methods": {"ode45": {"rtoll": 1.0e-3}}}}, ["rtoll"]),
+    "sweep_parameter_typo": (
+        {"onedof": {"sweeps": {"fig12": {"parameter": "dampening"}}}},
+        ["fig12.parameter"],
+    ),
+    "sweep_dense_start_past_the_values": (
+        {"onedof": {"sweeps": {"fig12": {"dense": {"start": 9.0}}}}},
+        ["fig12.dense"],
+    ),
+    "sweep_linked_typo": (
+        {"onedof": {"sweeps": {"fig14": {"linked": {"normal_farce": 10.0}}}}},
+        ["fig14.linked"],
+    ),
+    "sweep_values_negative": ({"onedof": {"sweeps": {"fig12": {"values": [-1.0, 1.0]}}}}, ["fig12.values"]),
+    "dense_map_no_axes": (
+        {"dense_map": {"maps": {"speed_damping": {"axes": []}}}},
+        ["dense_map.maps.speed_damping.axes"],
+    ),
+    "failure_map_unknown_solver": (
+        {"methods_study": {"failure_map": {"methods": [{"solver": "rk99"}]}}},
+        ["methods_study.failure_map.methods", "rk99"],
+    ),
     # unknown or misspelt keys, in every config file's sections
     "top_level_typo": ({"onedoff": {}}, ["onedoff"]),
     "baseline_unknown_scene": (
@@ -560,9 +601,10 @@ BAD_CLAIMS_IN_CONTEXT = {
 END_TO_END = ("mass_negative", "ode45_negative_rtol", "missing_friction_table", "friction_table_not_a_table")
 
 
-def base_config() -> dict:
-    files = sorted((ROOT / "config").glob("*.yaml")) + sorted((ROOT / "config" / "test").glob("*.yaml"))
-    return load_config(files)
+def base_config(small: bool = True) -> dict:
+    """The repository's config, with the small CI config over it unless ``small`` is False."""
+    files = sorted((ROOT / "config").glob("*.yaml"))
+    return load_config(files + (sorted((ROOT / "config" / "test").glob("*.yaml")) if small else []))
 
 
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]

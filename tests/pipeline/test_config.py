@@ -24,31 +24,6 @@ def test_every_figure_run_resolves(config):
                 assert spec.t_eval[-1] == pytest.approx(spec.t_end)
 
 
-@pytest.mark.parametrize(
-    "mutate,key",
-    [
-        (lambda c: c["onedof"]["scenes"]["fig02"]["params"].update(mass=float("nan")), "mass"),
-        (lambda c: c["onedof"]["readings"]["consistent_caption"].update(variant="eq5"), "variant"),
-        (lambda c: c["onedof"]["methods"]["ode45"].update(rtoll=1e-3), "rtoll"),
-        (lambda c: c["onedof"]["methods"]["ode45"].update(solver="euler"), "solver"),
-        (lambda c: c["onedof"]["sweeps"]["fig12"].update(parameter="dampening"), "fig12.parameter"),
-        (lambda c: c["onedof"]["sweeps"]["fig12"]["dense"].update(start=9.0), "fig12.dense"),
-        (lambda c: c["onedof"]["sweeps"]["fig14"].update(linked={"normal_farce": 10.0}), "fig14.linked"),
-        (lambda c: c["onedof"]["sweeps"]["fig12"].update(values=[-1.0, 1.0]), "fig12.values"),
-    ],
-)
-def test_config_errors_name_the_key(repo_root, mutate, key):
-    """One entry point validates: the typed models, then every run resolved (physics at construction)."""
-    from glob import glob
-
-    from stickslip.pipeline.config import ConfigError, load_config, validate_config
-
-    bad = load_config(sorted(glob(str(repo_root / "config" / "*.yaml"))))
-    mutate(bad)
-    with pytest.raises(ConfigError, match=key):
-        validate_config(bad, producible=["results/onedof/friction_mu_vr.csv"])
-
-
 def _no_claims_file_read(monkeypatch):
     """Make reading a claims file an error (the claims loader imports load_yaml when it reads)."""
 

@@ -62,8 +62,9 @@ def test_a_config_error_names_the_file_and_line_of_its_key(tmp_path):
     assert str(info.value).startswith(f"{override}:5: fe.sweeps.angle_sweep.parameter"), info
 
 
-def test_the_repository_config_passes():
-    validate_config(base_config(), producible=PRODUCIBLE)
+@pytest.mark.parametrize("small", [False, True], ids=["default", "small"])
+def test_the_repository_config_passes(small):
+    validate_config(base_config(small), producible=PRODUCIBLE)
 
 
 @pytest.mark.parametrize("case", sorted(BAD_FILES))
