@@ -1,11 +1,14 @@
-"""Broken claims rows are rejected naming the file, the row and the key (stickslip.claims): alone, against
-the config, and against the pinned claim ids."""
+"""The repository's claims rows pass every check (stickslip.claims), and broken rows are rejected naming the
+file, the row and the key: alone, against the config, and against the pinned claim ids."""
+
+import math
 
 import pytest
 import yaml
 from bad_inputs import BAD_CLAIMS, BAD_CLAIMS_IN_CONTEXT, VALUE_ROW, _with, base_config
 
 from stickslip.claims.load import ClaimsError, check_claims, load_claims
+from stickslip.claims.rows import Claim
 
 from project_run import ROOT
 
@@ -69,6 +72,9 @@ def test_the_repository_claims_pass_every_check():
     config = base_config()
     readings = list(config["onedof"]["readings"]) + list(config["fe"]["readings"])
     claims = load_claims(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+    assert len(claims) >= 10
+    assert all(isinstance(c, Claim) and c.file.endswith(".yaml") for c in claims)
+    assert all(math.isfinite(c.value) for c in claims if c.kind == "value")
     check_claims(claims, config["claims"]["readings"], known_readings=readings, pinned_ids=_pinned_ids())
 
 
