@@ -71,7 +71,7 @@ def start_snakemake(workdir: Path, *args, log: Path):
 
 
 _SMALL_RUNS: dict[str, Path] = {}
-#: The hash seed of the shared small run (tests/test_determinism.py builds again under another).
+#: The hash seed of the shared small run (tests/end_to_end/test_determinism.py builds again under another).
 SHARED_RUN_HASH_SEED = 0
 
 

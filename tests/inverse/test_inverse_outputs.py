@@ -17,7 +17,7 @@ from stickslip.inverse.problem import PARAMS, build_problem, load_claim_rows
 from stickslip.inverse.study import fit_problem, run_study, settings_of
 from stickslip.io.netcdf import read_dataset
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def unitless_variables(path: Path) -> list[str]:

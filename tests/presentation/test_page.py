@@ -450,7 +450,7 @@ def test_notebook_link_prefers_the_most_specific_section(tmp_path):
 
 
 def test_readme_opens_with_the_two_commands_and_stays_short():
-    lines = (Path(__file__).resolve().parents[1] / "README.md").read_text().splitlines()
+    lines = (Path(__file__).resolve().parents[2] / "README.md").read_text().splitlines()
     assert len(lines) <= 120
     code = lines[lines.index("```bash") + 1 :][:2]
     assert lines.index("```bash") <= 3

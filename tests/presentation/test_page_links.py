@@ -14,7 +14,7 @@ from stickslip.presentation.page import PageBuilder, Source, source_modules
 from stickslip.presentation.show import show_text
 from stickslip.presentation.sources import definition_lines, rule_line
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 MODULE = '''\
 """A plotting module."""

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 import yaml
-from test_bad_input import VALUE_ROW
+from bad_inputs import VALUE_ROW
 
 from project_run import copy_project, run_snakemake, shared_small_run, small_config_args, snakemake_command
 

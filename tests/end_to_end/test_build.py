@@ -81,7 +81,7 @@ def test_a_deleted_intermediate_and_a_flipped_byte_with_mtime_kept_are_rebuilt_i
 
 SCENE = "section9_kinematic_0p5mm_s"
 TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"
-#: one FE scene integrating long enough to be killed mid-way (as tests/test_faults.py)
+#: one FE scene integrating long enough to be killed mid-way (as tests/end_to_end/test_faults.py)
 SLOW = {"fe": {"scenes": {SCENE: {"solver": {"t_end": 3.0, "output_dt": 1.0e-3}}}}}
 
 

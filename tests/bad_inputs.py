@@ -1,25 +1,16 @@
-"""Broken inputs are rejected before any job runs, with a message naming the key, and nothing is written.
+"""The bad-input matrix: broken configs, files and claims rows, each with the words its error must name.
 
-Every case is an override config merged over config/*.yaml and the small CI config, as a user's
-``--configfile`` would be, or a broken claims file. The whole matrix goes through
-``stickslip.pipeline.config.validate_config`` in-process - what the Snakefile calls at parse time - and
-a few cases of each kind also run the real pipeline (not a dry run) on a copy of the project: it must fail
-at parse time, print the offending key, and leave no ``results/`` behind. Run with ``-s`` to see each
-input and the last lines of its message.
+Every config case is an override merged over config/*.yaml and the small CI config, as a user's
+``--configfile`` would be; every claims case is a broken claims file. tests/pipeline/test_config_errors.py
+runs the config cases through ``stickslip.pipeline.config.validate_config`` (what the Snakefile calls at parse
+time), tests/claims/test_claims_errors.py the claims cases through the claims loader and check, and
+tests/end_to_end/test_bad_input.py a few of each through the real pipeline.
 """
 
-import shutil
-import time
+from stickslip.pipeline.config import load_config
 
-import pytest
-import yaml
+from project_run import ROOT
 
-from stickslip.claims.load import ClaimsError, check_claims, load_claims
-from stickslip.pipeline.config import ConfigError, load_config, merge, validate_config
-
-from project_run import ROOT, copy_project, run_snakemake, small_config_args
-
-P = "onedof.defaults.params"
 CASES = {
     # id: (override config, words the message must contain)
     "mass_negative": ({"onedof": {"defaults": {"params": {"mass": -1.0}}}}, ["mass"]),
@@ -76,6 +67,47 @@ CASES = {
     "ensemble_relative_at_the_jobs_limit": ({"ensemble": {"relative": 1.0e-3}}, ["ensemble", "relative"]),
     "ensemble_seeds_empty": ({"ensemble": {"seeds": []}}, ["ensemble.seeds"]),
     "ensemble_step_factor_above_one": ({"ensemble": {"step_factor": 1.5}}, ["ensemble.step_factor"]),
+    "ensemble_step_factor_one": ({"ensemble": {"step_factor": 1.0}}, ["ensemble.step_factor"]),
+    # a scene's own parameters, named with their full key
+    "scene_mass_nan": (
+        {"onedof": {"scenes": {"fig02": {"params": {"mass": float("nan")}}}}},
+        ["onedof.scenes.fig02.params.mass"],
+    ),
+    # strict: no string for a number, even one that reads as a number
+    "scene_mass_numeric_string": (
+        {"onedof": {"scenes": {"fig02": {"params": {"mass": "1.0"}}}}},
+        ["onedof.scenes.fig02.params.mass"],
+    ),
+    "scene_params_typo": (
+        {"onedof": {"scenes": {"fig02": {"params": {"masss": 1.0}}}}},
+        ["onedof.scenes.fig02.params.masss"],
+    ),
+    "reading_variant_unknown": (
+        {"onedof": {"readings": {"consistent_caption": {"variant": "eq5"}}}},
+        ["variant"],
+    ),
+    "ode45_option_typo": ({"onedof": {"methods": {"ode45": {"rtoll": 1.0e-3}}}}, ["rtoll"]),
+    "sweep_parameter_typo": (
+        {"onedof": {"sweeps": {"fig12": {"parameter": "dampening"}}}},
+        ["fig12.parameter"],
+    ),
+    "sweep_dense_start_past_the_values": (
+        {"onedof": {"sweeps": {"fig12": {"dense": {"start": 9.0}}}}},
+        ["fig12.dense"],
+    ),
+    "sweep_linked_typo": (
+        {"onedof": {"sweeps": {"fig14": {"linked": {"normal_farce": 10.0}}}}},
+        ["fig14.linked"],
+    ),
+    "sweep_values_negative": ({"onedof": {"sweeps": {"fig12": {"values": [-1.0, 1.0]}}}}, ["fig12.values"]),
+    "dense_map_no_axes": (
+        {"dense_map": {"maps": {"speed_damping": {"axes": []}}}},
+        ["dense_map.maps.speed_damping.axes"],
+    ),
+    "failure_map_unknown_solver": (
+        {"methods_study": {"failure_map": {"methods": [{"solver": "rk99"}]}}},
+        ["methods_study.failure_map.methods", "rk99"],
+    ),
     # unknown or misspelt keys, in every config file's sections
     "top_level_typo": ({"onedoff": {}}, ["onedoff"]),
     "baseline_unknown_scene": (
@@ -569,204 +601,10 @@ BAD_CLAIMS_IN_CONTEXT = {
 END_TO_END = ("mass_negative", "ode45_negative_rtol", "missing_friction_table", "friction_table_not_a_table")
 
 
-def base_config() -> dict:
-    files = sorted((ROOT / "config").glob("*.yaml")) + sorted((ROOT / "config" / "test").glob("*.yaml"))
-    return load_config(files)
-
-
-@pytest.mark.parametrize("case", sorted(CASES))
-def test_broken_config_is_rejected_naming_its_key(case):
-    override, words = CASES[case]
-    with pytest.raises(Exception) as info:  # noqa: B017 - schema errors are Snakemake's WorkflowError
-        validate_config(merge(base_config(), override), producible=PRODUCIBLE)
-    text = str(info.value)
-    print(f"\n[{case}] {override}\n{text[-600:]}")
-    for word in words:
-        assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
-
-
-def test_an_alias_bomb_is_refused_quickly_with_a_short_message(tmp_path):
-    config_dir = tmp_path / "config"
-    shutil.copytree(ROOT / "config", config_dir)
-    (config_dir / "zz_extra.yaml").write_text(ALIAS_BOMB)
-    start = time.process_time()
-    with pytest.raises(ConfigError) as info:
-        load_config(sorted(config_dir.glob("*.yaml")))
-    # measured: ~0.1 s of CPU on this machine; the expansion itself takes ~60 s and gigabytes
-    assert time.process_time() - start < 5.0
-    assert len(str(info.value)) < 1000, str(info.value)
-
-
-def test_a_huge_value_in_a_real_key_is_named_in_a_short_message():
-    override = {"onedof": {"defaults": {"t_end": ["x" * 100] * 10_000}}}
-    with pytest.raises(ConfigError) as info:
-        validate_config(merge(base_config(), override), producible=PRODUCIBLE)
-    assert "onedof.defaults.t_end" in str(info.value) and len(str(info.value)) < 1000, str(info.value)[:2000]
-
-
-def _line_of(path, text):
-    return next(i for i, line in enumerate(path.read_text().splitlines(), 1) if text in line)
-
-
-def test_a_config_error_names_the_file_and_line_of_its_key(tmp_path):
+def base_config(small: bool = True) -> dict:
+    """The repository's config, with the small CI config over it unless ``small`` is False."""
     files = sorted((ROOT / "config").glob("*.yaml"))
-    config = load_config(files)
-    config["onedof"]["defaults"]["params"]["mass"] = -1.0
-    with pytest.raises(ConfigError) as info:
-        validate_config(config, producible=PRODUCIBLE, sources=files)
-    mass_line = _line_of(ROOT / "config" / "config.yaml", "mass:")
-    assert str(info.value).startswith(f"{ROOT / 'config' / 'config.yaml'}:{mass_line}: onedof.defaults"), info
-    # a key an override file sets is located in that file (the later file wins)
-    override = tmp_path / "override.yaml"
-    override.write_text("# a comment\nfe:\n  sweeps:\n    angle_sweep:\n      parameter: contact.angel_deg\n")
-    with pytest.raises(ConfigError) as info:
-        validate_config(load_config([*files, override]), producible=PRODUCIBLE, sources=[*files, override])
-    assert str(info.value).startswith(f"{override}:5: fe.sweeps.angle_sweep.parameter"), info
-
-
-def test_the_repository_config_passes():
-    validate_config(base_config(), producible=PRODUCIBLE)
-
-
-@pytest.mark.parametrize("case", sorted(BAD_FILES))
-def test_a_config_file_that_is_not_data_is_rejected_naming_file_and_line(case, tmp_path):
-    name, text, words = BAD_FILES[case]
-    config_dir = tmp_path / "config"
-    shutil.copytree(ROOT / "config", config_dir)
-    (config_dir / name).write_text(text)
-    with pytest.raises(ConfigError) as info:
-        load_config(sorted(config_dir.glob("*.yaml")))
-    for word in words:
-        assert word in str(info.value), f"{case}: message does not name {word!r}: {info.value}"
-
-
-def _pinned_ids():
-    from stickslip.claims.load import load_claims as load
-
-    text = (ROOT / "config" / "claims" / "ids.txt").read_text()
-    pinned = [ln.strip() for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]
-    assert sorted(pinned) == sorted(
-        c.id for c in load(sorted((ROOT / "config" / "claims").glob("*.yaml")))
-    )
-    return pinned
-
-
-@pytest.mark.parametrize("case", sorted(BAD_CLAIMS_IN_CONTEXT))
-def test_claims_rows_that_contradict_the_config_or_the_pins_are_rejected(case, tmp_path):
-    rows, words = BAD_CLAIMS_IN_CONTEXT[case]
-    (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump(rows))
-    claims = load_claims(sorted((ROOT / "config" / "claims").glob("*.yaml")) + [tmp_path / "zz_broken.yaml"])
-    config = base_config()
-    readings = list(config["onedof"]["readings"]) + list(config["fe"]["readings"])
-    with pytest.raises(ClaimsError) as info:
-        check_claims(claims, config["claims"]["readings"], known_readings=readings, pinned_ids=_pinned_ids())
-    for word in words:
-        assert word in str(info.value), f"{case}: message does not name {word!r}: {info.value}"
-
-
-def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_path):
-    from stickslip.catalogue import onedof_catalogue
-    from stickslip.io.run_variables import run_dataset_variables
-
-    (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump([_with(VALUE_ROW, variable="max_displacment")]))
-    claims = load_claims([tmp_path / "zz_broken.yaml"])
-    catalogue = onedof_catalogue(base_config()["onedof"])
-    with pytest.raises(ClaimsError, match=r"zz_broken.yaml: claim zz_value: variable: 'max_displacment'"):
-        check_claims(
-            claims,
-            ["consistent_caption"],
-            producible=lambda path: True,
-            variables_of=lambda path: run_dataset_variables() if path in catalogue else None,
-        )
-
-
-def test_every_variable_a_run_dataset_holds_is_in_the_registry():
-    from stickslip.io.run_variables import run_dataset_variables
-    from stickslip.studies.onedof import scene_run_dataset
-    from stickslip.studies.specs import run_spec
-
-    ds = scene_run_dataset(run_spec(base_config(), "fig02", "consistent_caption", "exact"))
-    assert set(map(str, ds.data_vars)) <= run_dataset_variables()
-    assert "max_displacement" in ds and "belt_velocity" in ds
-
-
-def test_a_deleted_claims_file_names_the_ids_it_lost():
-    files = sorted((ROOT / "config" / "claims").glob("*.yaml"))
-    kept = [f for f in files if f.name != "section_06_deceleration.yaml"]
-    with pytest.raises(ClaimsError, match=r"pinned but not found.*s6_"):
-        check_claims(load_claims(kept), ["consistent_caption"], pinned_ids=_pinned_ids())
-
-
-def test_the_repository_claims_pass_every_check():
-    config = base_config()
-    readings = list(config["onedof"]["readings"]) + list(config["fe"]["readings"])
-    claims = load_claims(sorted((ROOT / "config" / "claims").glob("*.yaml")))
-    check_claims(claims, config["claims"]["readings"], known_readings=readings, pinned_ids=_pinned_ids())
-
-
-def test_the_matrix_covers_every_class_with_at_least_eighty_inputs():
-    total = len(CASES) + len(BAD_FILES) + len(BAD_CLAIMS) + len(BAD_CLAIMS_IN_CONTEXT)
-    assert total >= 80, total
-
-
-@pytest.mark.parametrize("case", sorted(BAD_CLAIMS))
-def test_broken_claims_row_is_rejected_naming_the_row_and_key(case, tmp_path):
-    rows, words = BAD_CLAIMS[case]
-    (tmp_path / "zz_broken.yaml").write_text(yaml.safe_dump(rows))
-    with pytest.raises(ValueError) as info:
-        load_claims(sorted((ROOT / "config" / "claims").glob("*.yaml")) + [tmp_path / "zz_broken.yaml"])
-    for word in words:
-        assert word in str(info.value), f"{case}: message does not name {word!r}: {info.value}"
-    assert "zz_broken.yaml" in str(info.value), f"{case}: message does not name the file: {info.value}"
+    return load_config(files + (sorted((ROOT / "config" / "test").glob("*.yaml")) if small else []))
 
 
 PRODUCIBLE = ["results/onedof/friction_mu_vr.csv"]
-
-
-@pytest.fixture(scope="module")
-def pristine(tmp_path_factory):
-    return copy_project(tmp_path_factory.mktemp("bad_input_src"))
-
-
-def _rejected(work, *extra):
-    proc = run_snakemake(work, *small_config_args(work, *extra), check=False, timeout=300)
-    text = proc.stdout + proc.stderr
-    return proc.returncode, text
-
-
-def _copy(pristine, tmp_path):
-    work = tmp_path / "project"
-    shutil.copytree(pristine, work)
-    return work
-
-
-@pytest.mark.pipeline
-@pytest.mark.parametrize("case", END_TO_END)
-def test_broken_config_stops_the_pipeline_before_any_job(case, pristine, tmp_path):
-    override, words = CASES[case]
-    work = _copy(pristine, tmp_path)
-    path = work / "override.yaml"
-    path.write_text(yaml.safe_dump(override))
-    code, text = _rejected(work, path)
-    print(f"\n[{case}] {override}\n" + "\n".join(text.strip().splitlines()[-6:]))
-    assert code != 0, text[-3000:]
-    for word in words:
-        assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
-    assert f"{path}:" in text, f"{case}: message does not name the file and line of the key:\n{text[-3000:]}"
-    assert not (work / "results").exists(), (
-        f"{case}: something was written: {list((work / 'results').rglob('*'))}"
-    )
-
-
-@pytest.mark.pipeline
-@pytest.mark.parametrize("case", ["claims_bad_status"])
-def test_broken_claims_row_stops_the_pipeline_before_any_job(case, pristine, tmp_path):
-    rows, words = BAD_CLAIMS[case]
-    work = _copy(pristine, tmp_path)
-    (work / "config" / "claims" / "zz_broken.yaml").write_text(yaml.safe_dump(rows))
-    code, text = _rejected(work)
-    print(f"\n[{case}] {rows}\n" + "\n".join(text.strip().splitlines()[-6:]))
-    assert code != 0
-    for word in words:
-        assert word in text, f"{case}: message does not name {word!r}:\n{text[-3000:]}"
-    assert not (work / "results").exists()

@@ -8,7 +8,6 @@ from claim_rows import ROW, claim, compare, trend
 
 from stickslip.claims.evaluate import evaluate, evaluate_all
 from stickslip.claims.load import ClaimsError, load_claims
-from stickslip.claims.rows import Claim
 from stickslip.claims.table import main, write_table
 
 
@@ -112,13 +111,6 @@ def test_check_fails_on_a_changed_status(tmp_path, capsys):
     assert "(changed)" in (tmp_path / "d.md").read_text()
     write_table(results[:1], tmp_path / "ok.csv")
     assert main(["check", str(tmp_path / "ok.csv")]) == 0
-
-
-def test_repository_claims_files_load(repo_root):
-    claims = load_claims(sorted((repo_root / "config" / "claims").glob("*.yaml")))
-    assert len(claims) >= 10
-    assert all(isinstance(c, Claim) and c.file.endswith(".yaml") for c in claims)
-    assert all(np.isfinite(c.value) for c in claims if c.kind == "value")
 
 
 def test_a_claims_file_may_not_set_what_the_loader_adds(tmp_path):

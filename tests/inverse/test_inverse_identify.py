@@ -14,7 +14,7 @@ from stickslip.inverse.identify import PROFILE_THRESHOLD, identify, on_ridge, pa
 from stickslip.inverse.problem import build_problem
 from stickslip.inverse.study import fit_problem, settings_of, summary_rows
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")

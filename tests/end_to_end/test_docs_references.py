@@ -1,6 +1,6 @@
 """What README.md and docs/*.md name exists: every `make` target, every `python -m` module, every file or
-folder of the repository (tests/test_cli_docs.py runs the `stickslip` commands, tests/test_extending.py the
-EXTENDING recipes)."""
+folder of the repository (tests/cli/test_cli_docs.py runs the `stickslip` commands,
+tests/end_to_end/test_extending.py the EXTENDING recipes)."""
 
 import importlib.util
 import re

@@ -183,26 +183,6 @@ def test_pipeline_merged_map_has_dims_coords_units_and_equals_one_chunk_run(proj
     xr.testing.assert_equal(whole, chunked)  # data, dims, coords and variable attrs
 
 
-@pytest.mark.pipeline
-@pytest.mark.parametrize(
-    "override, match",
-    [
-        ("dense_map:\n  chunk_size: 0\n", "chunk_size"),
-        (
-            "dense_map:\n  chunk_size: 1\n  max_chunks: 4\n",
-            "dense_map.chunk_size: 1 points per chunk make 12 jobs",
-        ),
-    ],
-)
-def test_bad_chunk_size_fails_at_parse_time(project, tmp_path, override, match):
-    bad = tmp_path / "bad.yaml"
-    bad.write_text(override)
-    proc = run_snakemake(project, *snakemake_args(project), str(bad), "--dry-run", check=False)
-    assert proc.returncode != 0
-    assert match in proc.stdout + proc.stderr
-    assert "dense_map_chunk" not in proc.stdout  # no job was planned
-
-
 #: A stick shorter than this is a graze (round-off length), far below the output interval (0.01 s).
 GRAZE = 1e-9
 

@@ -23,7 +23,7 @@ from stickslip.validation.cycle import EventRecord, cycle_quantities
 from stickslip.validation.peer import PeerSettings, peer_events
 from stickslip.validation.setup import ValidationSetup
 
-CONFIG = yaml.safe_load((Path(__file__).parents[1] / "config" / "validation.yaml").read_text())["validation"]
+CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "validation.yaml").read_text())["validation"]
 SETUP = ValidationSetup(CONFIG)
 BASE = PAPER_BASELINE.with_(sigma=0.5)
 

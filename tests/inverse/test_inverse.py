@@ -21,7 +21,7 @@ from stickslip.inverse.problem import METRICS, build_problem, with_observations
 from stickslip.model import BeltParams
 from stickslip.solvers.exact import ExactSwitchSolver
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 T = np.linspace(0.0, 40.0, 4001)
 
 

@@ -42,8 +42,8 @@ def commands():
 
 
 def make_small(work, small, variables):
-    """What `make small` runs (tests/test_extending.py::test_make_small_passes_its_variables_on checks the
-    Makefile says so), in the copy ``work``: the build wrapper in its own folder."""
+    """What `make small` runs (test_make_small_passes_its_variables_on below checks the Makefile says
+    so), in the copy ``work``: the build wrapper in its own folder."""
     overlay = [str(work / f) for f in variables["OVERLAY"].split()]
     cmd = [sys.executable, "-m", "stickslip.pipeline.build", "--in", variables["OVERLAY_DIR"]]
     cmd += [sys.executable, "-m", "snakemake", "-j2", "--scheduler", "greedy", *variables["TARGETS"].split()]
