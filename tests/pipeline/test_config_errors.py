@@ -63,8 +63,15 @@ def test_a_config_error_names_the_file_and_line_of_its_key(tmp_path):
 
 
 @pytest.mark.parametrize("small", [False, True], ids=["default", "small"])
-def test_the_repository_config_passes(small):
-    validate_config(base_config(small), producible=PRODUCIBLE)
+def test_the_repository_config_passes_and_comes_back_typed(small):
+    from stickslip.pipeline.config_models import PipelineConfig
+
+    config = base_config(small)
+    typed = validate_config(config, producible=PRODUCIBLE)
+    assert isinstance(typed, PipelineConfig)  # what validation hands on: the values given, not defaults
+    assert typed.fe.defaults.solver.initial_state == config["fe"]["defaults"]["solver"]["initial_state"]
+    assert set(typed.onedof.scenes) == set(config["onedof"]["scenes"])
+    assert typed.claims.readings == config["claims"]["readings"]
 
 
 @pytest.mark.parametrize("case", sorted(BAD_FILES))
