@@ -160,3 +160,26 @@ def require_ccx():
     if os.environ.get("CI", "").lower() == "true":
         pytest.fail("ccx (Debian package calculix-ccx) is missing under CI=true: .ci/run installs it")
     pytest.skip("ccx (CalculiX, Debian package calculix-ccx) is not installed (outside CI these tests skip)")
+
+
+#: one FE scene that integrates long enough to be killed mid-way (~6-15 s per ensemble member, by machine),
+#: so a kill meets it integrating also where the compiled kernels are fast; the reading's other scenes keep
+#: the small configuration's 4 ms (the job costs its slowest scene, not every scene at 1.2 s)
+SLOW_SCENE = "section9_kinematic_0p5mm_s"
+SLOW_TARGET = f"results/fe/lower_face_drop/{SLOW_SCENE}.nc"
+
+
+def slow_fe_project(tmp_path: Path) -> tuple[Path, list[str]]:
+    """A copy of the project whose SLOW_SCENE runs 3 s, with the friction table (the scene's input, not under
+    test) built: (the copy, the small config's arguments with the slow overlay)."""
+    import yaml
+
+    (tmp_path / "project").mkdir()
+    work = copy_project(tmp_path / "project")
+    slow = work / "slow.yaml"
+    slow.write_text(
+        yaml.safe_dump({"fe": {"scenes": {SLOW_SCENE: {"solver": {"t_end": 3.0, "output_dt": 1.0e-3}}}}})
+    )
+    args = small_config_args(work, slow)
+    run_snakemake(work, "results/onedof/friction_mu_vr.csv", *args)
+    return work, args

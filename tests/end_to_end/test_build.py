@@ -9,11 +9,18 @@ import sys
 import time
 
 import pytest
-import yaml
 
 from stickslip.pipeline import integrity
 
-from project_run import copy_project, run_snakemake, shared_small_run, small_config_args, snakemake_command
+from project_run import (
+    SLOW_TARGET,
+    copy_project,
+    run_snakemake,
+    shared_small_run,
+    slow_fe_project,
+    small_config_args,
+    snakemake_command,
+)
 
 
 def flip_a_byte_keeping_mtime(path):
@@ -79,20 +86,12 @@ def test_a_deleted_intermediate_and_a_flipped_byte_with_mtime_kept_are_rebuilt_i
     assert "Nothing to be done" in build(work, *args)
 
 
-SCENE = "section9_kinematic_0p5mm_s"
-TARGET = f"results/fe/lower_face_drop/{SCENE}.nc"
-#: one FE scene integrating long enough to be killed mid-way (as tests/end_to_end/test_faults.py)
-SLOW = {"fe": {"scenes": {SCENE: {"solver": {"t_end": 3.0, "output_dt": 1.0e-3}}}}}
+TARGET = SLOW_TARGET
 
 
 @pytest.mark.pipeline
 def test_a_second_build_is_refused_and_a_killed_build_recovers_without_a_flag(tmp_path):
-    (tmp_path / "project").mkdir()
-    work = copy_project(tmp_path / "project")
-    slow = work / "slow.yaml"
-    slow.write_text(yaml.safe_dump(SLOW))
-    args = small_config_args(work, slow)
-    run_snakemake(work, "results/onedof/friction_mu_vr.csv", *args)  # the FE scene's input, not under test
+    work, args = slow_fe_project(tmp_path)
 
     log = open(tmp_path / "killed.log", "w")
     proc = subprocess.Popen(
@@ -107,7 +106,9 @@ def test_a_second_build_is_refused_and_a_killed_build_recovers_without_a_flag(tm
     while not job_log.exists() and time.monotonic() < deadline and proc.poll() is None:
         time.sleep(0.2)
     time.sleep(1.0)
-    assert proc.poll() is None, "the job finished before it could be killed: make SLOW longer"
+    assert proc.poll() is None, (
+        "the job finished before it could be killed: make the slow scene longer (project_run.slow_fe_project)"
+    )
 
     second = subprocess.run(build_command(work, TARGET, *args), cwd=work, capture_output=True, text=True)
     assert second.returncode == 1
