@@ -3,9 +3,9 @@
 A parameter set is run (the compiled exact solver, ``solvers.exact_compiled``) exactly as the pipeline runs
 a scene (same t_end, sample spacing, steady window) and
 measured with the same definitions as ``analysis.metrics.limit_cycle_metrics`` (only the metrics a value
-claim can name, without the spectrum, which no fitted claim uses; ``tests/test_inverse.py`` checks they are
-equal). A run that fails, leaves finite numbers, or cannot produce a reported metric (no complete stick
-interval, fewer than two peaks) is *infeasible*: its log-likelihood is -inf, never a zero residual.
+claim can name, without the spectrum, which no fitted claim uses; ``tests/inverse/test_inverse.py`` checks
+they are equal). A run that fails, leaves finite numbers, or cannot produce a reported metric (no complete
+stick interval, fewer than two peaks) is *infeasible*: its log-likelihood is -inf, never a zero residual.
 
 Two hypotheses need laws the model layer does not have, built here from its parts:
 ``eq4_term``   the consistent sign with Eq. 4's sigma V_b term as printed (without the mu_s N factor);

@@ -48,7 +48,8 @@ PHASES = ("stick", "slip_backward", "slip_forward", "plateau")
 
 def consistent_law() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(a, b, kappa) of the consistent reading, F = a sgn(v_r) + b v + kappa V_b
-    (``stickslip.model.friction.friction_law``; ``tests/test_inverse_structure.py`` checks they agree)."""
+    (``stickslip.model.friction.friction_law``; ``tests/inverse/test_inverse_structure.py`` checks they
+    agree)."""
     mu_n, sigma = SYMBOLS["mu_s"] * SYMBOLS["normal_force"], SYMBOLS["sigma"]
     return -mu_n, mu_n * sigma, -mu_n * sigma
 
@@ -104,7 +105,7 @@ def structural_rank(phases: tuple, free: tuple, fixed: tuple = ()) -> int:
 #: Exact rational points (unrelated primes) at which a symbolic Jacobian's rank is taken. At a point the rank
 #: never exceeds the generic (symbolic) rank, and equals it off the zero set of the minors, a proper algebraic
 #: subset; the larger of two unrelated points is the generic rank unless both lie on it.
-#: ``tests/test_inverse_structure.py`` checks it against sympy's symbolic rank for every phase set.
+#: ``tests/inverse/test_inverse_structure.py`` checks it against sympy's symbolic rank for every phase set.
 RANK_POINTS = (
     dict(mass="7/5", stiffness="13/3", damping="11/7", mu_s="5/11", normal_force="17/2", sigma="3/13",
          plateau_speed="19/23", belt_velocity="29/31"),

@@ -244,7 +244,8 @@ def cf_fill_in(ds: xr.Dataset) -> xr.Dataset:
     """Attributes CF asks for that a dataset may leave out, filled in without overwriting any.
 
     * a ``time`` coordinate gets ``standard_name: time`` and ``axis: T`` (CF 4.4, 5.1). Its units stay
-      ``s``: it is elapsed simulated time, not a calendar date (see ``tests/test_cf_compliance.py``).
+      ``s``: it is elapsed simulated time, not a calendar date (see
+      ``tests/end_to_end/test_cf_compliance.py``).
     * CPU-time variables get a ``comment`` saying they measure the machine (see ``is_machine_measurement``).
     * every variable gets a ``long_name`` (its name, spaced) if it has neither one nor a ``standard_name``.
     """

@@ -62,7 +62,7 @@ def run_status(outcome: str, mechanism_text: str) -> dict:
 
 #: The last few solves, by everything a solve reads (the measurement window is not among it): the ensemble's
 #: ``window`` member measures the base run over a later window, so it reuses the base run's trajectory
-#: instead of integrating it again (tests/test_onedof_studies.py shows the two are identical).
+#: instead of integrating it again (tests/studies/test_onedof_studies.py shows the two are identical).
 _SOLVES: dict[tuple, object] = {}
 _SOLVES_KEPT = 8
 
