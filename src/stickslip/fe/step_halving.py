@@ -69,6 +69,12 @@ def converged(full, half, unit: str) -> np.ndarray:
     return ok | both_nan
 
 
+def sign_converged(name: str, full, half) -> bool:
+    """A SIGN_ONLY metric whose every value keeps its non-zero sign at half the step: converged for the
+    claims that read it, however far its value moves."""
+    return name in SIGN_ONLY and bool(np.all(same_sign(full, half)))
+
+
 def apply_step_halving(ds: xr.Dataset, half: Mapping[str, object], along: str | None = None) -> xr.Dataset:
     """Copy of ``ds`` with every metric of ``half`` (its values at half the time step) checked.
 
@@ -84,7 +90,7 @@ def apply_step_halving(ds: xr.Dataset, half: Mapping[str, object], along: str | 
         unit = str(var.attrs.get("units", "1"))
         hv = np.asarray(h, dtype=float).reshape(var.shape)
         ok = converged(var.values, hv, unit)
-        sign_only = name in SIGN_ONLY and not np.all(ok) and np.all(same_sign(var.values, hv))
+        sign_only = not np.all(ok) and sign_converged(name, var.values, hv)
         if sign_only:
             change = float(np.max(np.abs(hv - var.values) / np.abs(var.values)))
             note = f"sign converged, value moves {100 * change:.1f} % at half step"

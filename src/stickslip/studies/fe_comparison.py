@@ -12,7 +12,7 @@ import xarray as xr
 
 from ..fe.params import FrictionTable
 from ..fe.quantities import INTERPRETATION
-from ..fe.step_halving import REL_TOL, SIGN_ONLY, converged, same_sign
+from ..fe.step_halving import REL_TOL, converged, sign_converged
 from .fe_scene import run_scene
 
 #: quantities of the comparison table
@@ -75,10 +75,8 @@ WINDOW_RULE = (
 
 
 def beam_converged(beam: tuple[float, float], quantity: str = "", unit: str = "1") -> bool:
-    """Does the beam's (dt, dt/2) pair pass the step-halving rule (a SIGN_ONLY quantity: its sign)?"""
-    if quantity in SIGN_ONLY:
-        return bool(same_sign(*beam))
-    return bool(converged(*beam, unit))
+    """Does the beam's (dt, dt/2) pair pass the step-halving rule (a SIGN_ONLY quantity: or its sign)?"""
+    return bool(np.all(converged(*beam, unit))) or sign_converged(quantity, *beam)
 
 
 def window_agrees(
@@ -160,11 +158,15 @@ def agrees(continuum: float, beam: float, noise_floor: float = 0.0, rel: float =
     return bool(abs(relative_difference(continuum, beam)) <= rel)
 
 
+def _configured_note(notes: Mapping[str, str], scene: str, q: str) -> str:
+    """The config's note for (scene, quantity) (keys scene.quantity, scene, quantity), else ""."""
+    return " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes)
+
+
 def _note(notes: Mapping[str, str], scene: str, q: str, continuum: float, beam: float) -> str:
-    """The config's note for a disagreeing (scene, quantity) (keys ``scene.quantity``, ``scene``,
-    ``quantity``), else one that states the numbers: no disagreeing row goes without a note."""
-    text = " ".join(str(notes[k]) for k in (f"{scene}.{q}", scene, q) if k in notes)
-    return text or (
+    """The config's note for a disagreeing (scene, quantity), else one that states the numbers: no
+    disagreeing row goes without a note."""
+    return _configured_note(notes, scene, q) or (
         f"beam {beam:.4g} vs continuum {continuum:.4g} do not agree (no explanation in fe.comparison.notes)"
     )
 
@@ -172,7 +174,7 @@ def _note(notes: Mapping[str, str], scene: str, q: str, continuum: float, beam: 
 def _window_note(notes: Mapping[str, str], scene: str, q: str, beam, continuum, unit: str) -> str:
     """The config's note for a disagreeing window row, else why: the beam's value moves under step
     halving, or the two models' numbers."""
-    if not any(k in notes for k in (f"{scene}.{q}", scene, q)) and not beam_converged(beam, q, unit):
+    if not _configured_note(notes, scene, q) and not beam_converged(beam, q, unit):
         return (
             f"the beam's value moves under step halving ({beam[0]:.4g} at dt, {beam[1]:.4g} at dt/2): no "
             "comparison can back it"
