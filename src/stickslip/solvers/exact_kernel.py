@@ -40,6 +40,8 @@ ROOT_SIGN = 4  # ValueError of scipy's brentq: f(a) and f(b) must have different
 ROOT_CONVERGENCE = 5  # RuntimeError of scipy's brentq: no convergence in 100 iterations
 
 BRENT_XTOL = 1e-15
+# written here, not imported from .exact: numba's cache is keyed on this file, so an imported constant
+# would go stale in a cached kernel (tests/solvers/test_exact_compiled.py checks the two are equal)
 PLATEAU_BAND = 1e-9  # ExactSwitchSolver's PLATEAU_BAND (the reference's, and why)
 BRENT_RTOL = 4 * np.finfo(float).eps
 BRENT_MAXITER = 100
