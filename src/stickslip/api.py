@@ -187,7 +187,7 @@ def _validated_onedof(config: dict) -> dict:
 
     from .io.typed_errors import typed_errors
     from .pipeline.config import ConfigError
-    from .pipeline.config_models import Onedof
+    from .schema import Onedof
 
     try:
         Onedof.model_validate(config["onedof"])
@@ -470,7 +470,7 @@ def simulate(
     it is checked before any work: never a path of the pipeline's results folder, never an existing file
     unless ``force``, never a directory or a place no file can be created. ``config``: the project config
     already loaded (``load_project_config``) instead of reading ``configfiles``. The run's size is bounded
-    by the pipeline's cost guard (``stickslip.pipeline.config_models``: samples per run, and samples of the
+    by the pipeline's cost guard (``stickslip.schema``: samples per run, and samples of the
     ensemble's runs together), checked before any work unless the config says ``allow_expensive: true``.
     A bad value raises ``ConfigError`` naming its key."""
     from dataclasses import replace
@@ -547,12 +547,12 @@ def ensemble_members(spec) -> int:
 def check_run_cost(
     config: dict, scene: str, reading: str, ensemble_spec=None, given: Mapping = (), lengths=None
 ) -> None:
-    """The pipeline's cost guard for one run (``stickslip.pipeline.config_models``): its samples per run
+    """The pipeline's cost guard for one run (``stickslip.schema``): its samples per run
     (``estimated_costs``, against ``MAX_SAMPLES_PER_RUN``) and, with an ensemble, the samples of all its
     runs together (against ``MAX_SAMPLES_PER_STUDY``), before any work. Skipped with ``allow_expensive:
     true`` in the config, as in the pipeline. The message names the key, the cost and the bound."""
     from .pipeline.config import ConfigError
-    from .pipeline.config_models import PipelineConfig, estimated_costs
+    from .schema import PipelineConfig, estimated_costs
 
     if config.get("allow_expensive"):
         return
@@ -579,10 +579,10 @@ def check_run_cost(
 
 def check_ensemble_cost(spec, samples_per_run: float, config: Mapping) -> None:
     """The pipeline's bounds on an ensemble, before any work: at most ``MAX_ENSEMBLE_SEEDS`` seeds, and its
-    runs together at most ``MAX_SAMPLES_PER_STUDY`` samples (``stickslip.pipeline.config_models``). Skipped
+    runs together at most ``MAX_SAMPLES_PER_STUDY`` samples (``stickslip.schema``). Skipped
     with ``allow_expensive: true``. The message names the key (``ensemble.seeds``), the cost and the bound."""
     from .pipeline.config import ConfigError
-    from .pipeline.config_models import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_STUDY
+    from .schema import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_STUDY
 
     if spec is None or config.get("allow_expensive"):
         return

@@ -11,7 +11,7 @@
 Runs from any folder: project paths (config, claims, the friction table, results) are the project's the
 package belongs to, or --root's; paths you give (-o, --plot, --json, --csv, show FILE) are yours, relative to
 the working directory. Options are checked as config keys (the typed models of
-``stickslip.pipeline.config_models``): a bad value is reported with the option and the config key it sets,
+``stickslip.schema``): a bad value is reported with the option and the config key it sets,
 before any work, as are output paths (never the pipeline's results folder) and the run's cost (the
 pipeline's cost guard). ``-o`` writes the dataset the pipeline would write (``stickslip.api``), ``--plot`` the
 pipeline's figure of it. Exit status: 0 an answer (a diverging model is one), 1 a numerical failure or a

@@ -12,7 +12,7 @@ import stickslip
 from stickslip import api
 from stickslip.cli import main
 from stickslip.pipeline.config import ConfigError
-from stickslip.pipeline.config_models import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_RUN
+from stickslip.schema import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_RUN
 
 from project_run import ROOT
 

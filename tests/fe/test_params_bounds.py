@@ -8,7 +8,7 @@ import pytest
 from pydantic import ValidationError
 
 from stickslip.fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
-from stickslip.pipeline.schema.fe import Beam, Contact, Disc, FeSolver
+from stickslip.schema.fe import Beam, Contact, Disc, FeSolver
 
 PAIRS = [(BeamParams, Beam), (DiscParams, Disc), (ContactParams, Contact), (SolverParams, FeSolver)]
 VALID = {DiscParams: {"speed_rev_per_min": 15.2}}

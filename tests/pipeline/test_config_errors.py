@@ -64,7 +64,7 @@ def test_a_config_error_names_the_file_and_line_of_its_key(tmp_path):
 
 @pytest.mark.parametrize("small", [False, True], ids=["default", "small"])
 def test_the_repository_config_passes_and_comes_back_typed(small):
-    from stickslip.pipeline.config_models import PipelineConfig
+    from stickslip.schema import PipelineConfig
 
     config = base_config(small)
     typed = validate_config(config, producible=PRODUCIBLE)

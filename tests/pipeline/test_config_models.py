@@ -2,7 +2,7 @@
 the models' names are the code's own. That the repository's configs validate and that a bad value is rejected
 naming its full key is checked through the one entry point, in test_config_errors.py."""
 
-from stickslip.pipeline.config_models import SCHEMA_PATH, schema_text
+from stickslip.schema import SCHEMA_PATH, schema_text
 
 from project_run import ROOT
 
@@ -10,7 +10,7 @@ from project_run import ROOT
 def test_committed_schema_is_the_generated_one():
     assert (ROOT / SCHEMA_PATH).read_text() == schema_text(), (
         "workflow/schemas/config.schema.json is stale: "
-        "run `python -m stickslip.pipeline.config_models --write`"
+        "run `python -m stickslip.schema --write`"
     )
 
 
@@ -22,7 +22,7 @@ def test_typed_names_are_the_models_own():
     from stickslip.inverse.problem import PARAMS
     from stickslip.model.friction import VARIANTS
     from stickslip.model.params import UNIT_READINGS
-    from stickslip.pipeline.config_models import InverseParameter, Units, Variant
+    from stickslip.schema import InverseParameter, Units, Variant
 
     assert get_args(Variant) == VARIANTS
     assert get_args(Units) == UNIT_READINGS

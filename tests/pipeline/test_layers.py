@@ -52,13 +52,14 @@ LAYER_ORDER = (
     "solvers",  # 1-DOF integrators: Trajectory, SolverStats
     "analysis",  # metrics, outcome, sweeps
     "fe",  # beam and continuum models
+    "schema",  # the config's typed models: every key, bound and default
     "ensemble",  # the perturbation ensemble
     "io",  # netCDF, YAML, tables
     "validation",  # the friction-law and peer validations
     "claims",  # claim rows, measures, verdicts
     "studies",  # a config section in, a dataset out
     "inverse",  # the inverse study
-    "pipeline",  # the config's typed models and checks, the build
+    "pipeline",  # the config checks across sections, the build
     "presentation",  # plots, notebooks' helpers, the page
     "api",  # your own scenario
     "cli",  # the stickslip command

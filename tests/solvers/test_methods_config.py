@@ -7,7 +7,7 @@ import pytest
 from pydantic import ValidationError
 
 from stickslip.pipeline.config import load_config
-from stickslip.pipeline.config_models import MethodsStudy
+from stickslip.schema import MethodsStudy
 from stickslip.solvers import make_solver
 from stickslip.studies import methods as methods_study
 

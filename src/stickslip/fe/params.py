@@ -28,7 +28,7 @@ DISC_DIRECTIONS = ("clockwise", "counterclockwise")
 @dataclass(frozen=True)
 class Bound:
     """What one parameter field accepts, declared once: the dataclass checks it at construction, and the
-    config's typed model (stickslip.pipeline.schema.fe) is generated from the same declaration, so a key
+    config's typed model (stickslip.schema.fe) is generated from the same declaration, so a key
     and its bound are written in one place. ``kind``: "number" (finite), "integer", "choice" or "flag"."""
 
     kind: str = "number"
@@ -280,7 +280,7 @@ class SceneParams:
     def from_mapping(cls, data: Mapping[str, Any]) -> SceneParams:
         """The parameters of a scene mapping: its beam, disc, contact and solver sections. Its other keys
         (output windows, description) are the studies'; which keys a scene may have is the config's typed
-        model's to check (stickslip.pipeline.schema.fe.FeScene), not listed again here."""
+        model's to check (stickslip.schema.fe.FeScene), not listed again here."""
         return cls(
             BeamParams.from_mapping(data.get("beam", {})),
             DiscParams.from_mapping(data.get("disc", {"speed_rev_per_min": 15.2})),

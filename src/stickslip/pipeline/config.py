@@ -1,7 +1,7 @@
 """The pipeline's configuration, checked in one place before any job runs.
 
 ``validate_config`` is what the Snakefile calls at parse time and what the bad-input tests call directly:
-the typed models of ``config_models`` (types, physical ranges, finite numbers, unknown keys), then
+the typed models of ``stickslip.schema`` (types, physical ranges, finite numbers, unknown keys), then
 what a model alone cannot see (names that refer to other sections, solver settings, every scene's model,
 the friction table), each error naming the offending config key.
 """
@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from .config_models import PipelineConfig
+    from ..schema import PipelineConfig
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -101,7 +101,7 @@ def validate_config(
 def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | None = None) -> PipelineConfig:
     from pydantic import ValidationError
 
-    from .config_models import PipelineConfig
+    from ..schema import PipelineConfig
 
     try:
         typed = PipelineConfig.model_validate(config)
@@ -210,7 +210,7 @@ def check_fe_lengths(
     (like a 1-DOF scene), and its estimated cost is within the guard: the explicit step is at most the time
     an axial wave needs to cross one element (the cheapest case), so elements x t_end / step is a lower
     bound of the work. ``key_of(dotted)`` names the config key a value came from."""
-    from .config_models import MAX_SAMPLES_PER_RUN
+    from ..schema import MAX_SAMPLES_PER_RUN
 
     solver, output, beam = mapping.get("solver", {}), mapping.get("output", {}), mapping.get("beam", {})
     where = f"{key} (FE reading {reading})" if reading else key
@@ -251,7 +251,7 @@ def check_fe_lengths(
 
 def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool = False) -> None:
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
-    before any job starts with the config key named (references between entries: config_models)."""
+    before any job starts with the config key named (references between entries: stickslip.schema)."""
     from ..fe.params import SceneParams
     from ..studies.fe_config import scene_mapping
 

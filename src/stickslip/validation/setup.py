@@ -1,4 +1,4 @@
-"""The ``validation`` config section (typed by ``pipeline.config_models``) as objects: solvers, laws,
+"""The ``validation`` config section (typed by ``stickslip.schema``) as objects: solvers, laws,
 parameters and tolerances, each checking its physics at construction, the error naming its key."""
 
 from __future__ import annotations

@@ -29,7 +29,7 @@ def belt_parameter(name: str) -> str:
     """``name`` is a parameter of the 1-DOF model (what a sweep or a map axis may set)."""
     import dataclasses
 
-    from ...model.params import BeltParams
+    from ..model.params import BeltParams
 
     known = {f.name for f in dataclasses.fields(BeltParams)} - {"units"}
     if name not in known:

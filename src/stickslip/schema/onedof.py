@@ -97,7 +97,7 @@ class Method(Open):
     @field_validator("solver")
     @classmethod
     def registered(cls, name: str) -> str:
-        from ...solvers import REGISTRY  # the registry is the one list of solver names
+        from ..solvers import REGISTRY  # the registry is the one list of solver names
 
         if name not in REGISTRY:
             raise ValueError(f"{name!r} is not one of {sorted(REGISTRY)}")

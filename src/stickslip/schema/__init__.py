@@ -1,27 +1,26 @@
-"""The pipeline's configuration as typed models (pydantic v2): one model per config section.
+"""The configuration as typed models (pydantic v2): one model per config section, one module per config file.
 
 Every mapping forbids unknown keys, every number must be finite (no NaN or inf), bounds are physical
 (masses, stiffnesses, durations > 0), and an error names the full key (``onedof.scenes.fig02.params.mass``).
 ``stickslip.pipeline.config.validate_config`` validates the merged config against ``PipelineConfig`` and
 then resolves what a model alone cannot (names that refer to other sections, solver settings, files).
 The JSON schema in ``workflow/schemas/config.schema.json`` is generated from these models
-(``python -m stickslip.pipeline.config_models --write``; a test checks it is current), never written by hand.
+(``python -m stickslip.schema --write``; a test checks it is current), never written by hand.
 
-Every section is typed, the inverse study's and the friction-law validation's included: one module per config
-file in ``stickslip.pipeline.schema`` (``base``: the mapping bases, number types and reference helpers;
-``onedof``: config.yaml's sections; ``dense_map``, ``methods``, ``fe``, ``inverse``, ``validation``). This
-module assembles them into ``PipelineConfig`` with the cost guard, and re-exports every model name, so
-``from stickslip.pipeline.config_models import X`` keeps working.
+Every section is typed, the inverse study's and the friction-law validation's included (``base``: the mapping
+bases, number types and reference helpers; ``onedof``: config.yaml's sections; ``dense_map``, ``methods``,
+``fe``, ``inverse``, ``validation``). This module assembles them into ``PipelineConfig`` with the cost guard
+and re-exports every model name. The package sits below the studies (``tests/pipeline/test_layers.py``), so
+a study, the inverse study and the validations take the typed section they read, not a mapping.
 """
 
 from __future__ import annotations
 
 import json
-import sys
 
 from pydantic import Field, model_validator
 
-from .schema.base import (  # noqa: F401  (re-exported: the models keep this import path)
+from .base import (  # noqa: F401  (re-exported)
     DEFAULT_MAX_CHUNKS,
     SCHEMA_PATH,
     Finite,
@@ -38,14 +37,14 @@ from .schema.base import (  # noqa: F401  (re-exported: the models keep this imp
     linked_parameters,
     needs_switch,
 )
-from .schema.dense_map import (  # noqa: F401  (re-exported: the models keep this import path)
+from .dense_map import (  # noqa: F401  (re-exported)
     DenseMapEntry,
     DenseMapResources,
     DenseMaps,
     MapAxis,
     Resources,
 )
-from .schema.fe import (  # noqa: F401  (re-exported: the models keep this import path)
+from .fe import (  # noqa: F401  (re-exported)
     MAX_FRICTION_SLOPE,
     Angle,
     Beam,
@@ -67,7 +66,7 @@ from .schema.fe import (  # noqa: F401  (re-exported: the models keep this impor
     Stability,
     fe_scene_parameter,
 )
-from .schema.inverse import (  # noqa: F401  (re-exported: the models keep this import path)
+from .inverse import (  # noqa: F401  (re-exported)
     Bound,
     Family,
     Hypothesis,
@@ -77,7 +76,7 @@ from .schema.inverse import (  # noqa: F401  (re-exported: the models keep this 
     InverseSettings,
     MuKRatio,
 )
-from .schema.methods import (  # noqa: F401  (re-exported: the models keep this import path)
+from .methods import (  # noqa: F401  (re-exported)
     Budget,
     FailureMap,
     MethodsStudy,
@@ -85,7 +84,7 @@ from .schema.methods import (  # noqa: F401  (re-exported: the models keep this 
     StudyScene,
     Timing,
 )
-from .schema.onedof import (  # noqa: F401  (re-exported: the models keep this import path)
+from .onedof import (  # noqa: F401  (re-exported)
     Baseline,
     BeltParameters,
     Claims,
@@ -108,7 +107,7 @@ from .schema.onedof import (  # noqa: F401  (re-exported: the models keep this i
     check_run_lengths,
     merged_run_lengths,
 )
-from .schema.validation import (  # noqa: F401  (re-exported: the models keep this import path)
+from .validation import (  # noqa: F401  (re-exported)
     LawTiming,
     MethodsPerLaw,
     Peer,
@@ -246,10 +245,3 @@ def json_schema() -> dict:
 
 def schema_text() -> str:
     return json.dumps(json_schema(), indent=1, sort_keys=True) + "\n"
-
-
-if __name__ == "__main__":  # python -m stickslip.pipeline.config_models --write  (from the repository root)
-    if sys.argv[1:] == ["--write"]:
-        SCHEMA_PATH.write_text(schema_text())
-    else:
-        sys.stdout.write(schema_text())

@@ -6,8 +6,8 @@ from typing import Annotated, Literal
 
 from pydantic import Field, create_model, field_validator, model_validator
 
-from ...catalogue import fe_paper_figure_numbers
-from ...fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
+from ..catalogue import fe_paper_figure_numbers
+from ..fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
 from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
 
 #: the paper's beam-on-disc figures, one PNG each (rule fe_figures)
