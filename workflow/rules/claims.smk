@@ -1,5 +1,5 @@
 # The claims table: every reported number vs what the pipeline measures, with pinned statuses.
-CLAIM_READINGS = config["claims"]["readings"]  # checked against onedof.readings by stickslip.pipeline.config
+CLAIM_READINGS = CFG.claims.readings  # checked against onedof.readings by stickslip.pipeline.config
 
 
 rule claims_table:
@@ -17,9 +17,10 @@ rule claims_table:
     conda:
         CONDA_ENV
     params:
+        claims=CLAIMS,  # the claim rows as the parse read them: the files stay inputs, for their dates
         readings=CLAIM_READINGS,
         # a cross-scene ratio of beam values is checked through its two scenes (stickslip.claims.models)
-        cross_scene=canonical(config["fe"].get("cross_scene") or {}),
+        cross_scene=as_params(CFG.fe.cross_scene),
     script:
         "../scripts/claims_table.py"
 
@@ -41,12 +42,13 @@ rule claims_check:
     conda:
         CONDA_ENV
     params:
+        claims=CLAIMS,  # the claim rows as the parse read them: the files stay inputs, for their dates
         readings=CLAIM_READINGS,
-        cross_scene=canonical(config["fe"].get("cross_scene") or {}),
+        cross_scene=as_params(CFG.fe.cross_scene),
     script:
         "../scripts/claims_check.py"
 
 
 ALL_TARGETS.append(paths.claims_table())
-if config["claims"].get("check", True):  # the small CI config measures other numbers: no pins apply
+if CFG.claims.check:  # the small CI config measures other numbers: no pins apply
     ALL_TARGETS.append(paths.claims_check())

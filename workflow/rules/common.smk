@@ -25,10 +25,40 @@ CLAIMS = load_claims(CLAIM_FILES)
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
-validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
+#: The config as one typed object (stickslip.schema.PipelineConfig): the rules read it, never the mapping.
+CFG = validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
+
+
+def canonical(value):
+    """A config value with every mapping's keys in sorted order (lists keep theirs: their order is meaning).
+
+    Snakemake compares a job's params by their repr, where a dict shows its keys in the order the YAML file
+    wrote them: a reordered key would re-run every job that reads it. The 1-DOF and map sections, the friction
+    table's and the FE peer's go through here (the FE sections are sorted by studies.fe_config.job_config),
+    so those jobs depend on what the config says, not on how it is laid out. Left as written: sections whose
+    order is meaning (the methods study's and validation's labels and law order, the inverse study's
+    hypotheses, each named by its first key)."""
+    if isinstance(value, dict):
+        return {key: canonical(value[key]) for key in sorted(value, key=str)}
+    if isinstance(value, (list, tuple)):
+        return [canonical(item) for item in value]
+    return value
+
+
+def as_params(entry):
+    """Typed config entries (one, or a mapping or list of them) as a job's params: the values the config
+    gave, keys sorted (``canonical``); a job types them again at its boundary (stickslip.schema) and re-runs
+    when one of these values changes."""
+    if isinstance(entry, dict):
+        return {key: as_params(value) for key, value in sorted(entry.items())}
+    if isinstance(entry, (list, tuple)):
+        return [as_params(item) for item in entry]
+    dump = getattr(entry, "model_dump", None)
+    return entry if dump is None else canonical(dump(exclude_unset=True))
+
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
-ENSEMBLE = config.get("ensemble")
+ENSEMBLE = as_params(CFG.ensemble)
 
 #: The pinned set of claim ids: a deleted row or claims file is an error naming the ids it lost.
 CLAIM_IDS_FILE = "config/claims/ids.txt"
@@ -36,9 +66,9 @@ CLAIM_IDS_FILE = "config/claims/ids.txt"
 CATALOGUE = paths.catalogue(config)
 check_claims(
     CLAIMS,
-    config["claims"]["readings"],
+    CFG.claims.readings,
     catalogue=CATALOGUE,
-    known_readings=list(config["onedof"]["readings"]) + list(config["fe"]["readings"]),
+    known_readings=[*CFG.onedof.readings, *CFG.fe.readings],
     pinned_ids=[
         line.strip()
         for line in Path(CLAIM_IDS_FILE).read_text().splitlines()
@@ -46,7 +76,7 @@ check_claims(
     ],
 )
 #: Every dataset some claim reads: these carry a perturbation ensemble, so each claim has a spread.
-CLAIMED_DATASETS = set(required_datasets(CLAIMS, config["claims"]["readings"]))
+CLAIMED_DATASETS = set(required_datasets(CLAIMS, CFG.claims.readings))
 
 
 def outputs(rule, flags=None, **wildcards):
@@ -154,11 +184,11 @@ def check_inputs_producible(rules):
     run_variables = run_dataset_variables()
     check_claims(
         CLAIMS,
-        config["claims"]["readings"],
+        CFG.claims.readings,
         producible=producible,
         variables_of=lambda path: run_variables if path in ONEDOF_CATALOGUE else None,
     )
-    for name in config["notebooks"]:
+    for name in CFG.notebooks:
         for path in notebook_inputs(name):
             if paths.is_result(path) and path not in CATALOGUE:
                 raise ClaimsError(
@@ -169,22 +199,6 @@ def check_inputs_producible(rules):
                 raise ClaimsError(f"notebooks.{name}.inputs: no rule writes {path!r}")
 
 
-def canonical(value):
-    """A config value with every mapping's keys in sorted order (lists keep theirs: their order is meaning).
-
-    Snakemake compares a job's params by their repr, where a dict shows its keys in the order the YAML file
-    wrote them: a reordered key would re-run every job that reads it. The 1-DOF and map sections, the friction
-    table's and the FE peer's go through here (the FE sections are sorted by studies.fe_config.job_config),
-    so those jobs depend on what the config says, not on how it is laid out. Left as written: sections whose
-    order is meaning (the methods study's and validation's labels and law order, the inverse study's
-    hypotheses, each named by its first key)."""
-    if isinstance(value, dict):
-        return {key: canonical(value[key]) for key in sorted(value, key=str)}
-    if isinstance(value, (list, tuple)):
-        return [canonical(item) for item in value]
-    return value
-
-
 def _names(value):
     return None if value is None else [value] if isinstance(value, str) else sorted(set(value))
 
@@ -193,25 +207,26 @@ def onedof_subconfig(readings=None, scenes=None, methods=None, study=None):
     """The part of the config a 1-DOF job reads, passed as its params: the defaults, the named readings,
     scenes and methods (a name or a list; None: all) and at most one study section. Snakemake re-runs a job
     whose params change, so an edit re-runs exactly the jobs that read the edited value."""
-    sub = {"baseline": ONEDOF["baseline"], "defaults": ONEDOF["defaults"]}
+    onedof = CFG.onedof
+    sub = {"baseline": onedof.baseline, "defaults": onedof.defaults}
     for key, names in (("readings", readings), ("scenes", scenes), ("methods", methods)):
-        names = _names(names)
-        sub[key] = ONEDOF[key] if names is None else {n: ONEDOF[key][n] for n in names}
+        names, entries = _names(names), getattr(onedof, key)
+        sub[key] = entries if names is None else {n: entries[n] for n in names}
     if study is not None:
-        sub[study] = ONEDOF[study]
-    return canonical({"onedof": sub})
+        sub[study] = getattr(onedof, study)
+    return {"onedof": as_params(sub)}
 
 
 def onedof_runs():
     """scene -> sorted (reading, method) pairs that any figure, claim, notebook or the friction table reads:
     one job per scene computes them all (each run takes milliseconds, a job's start-up seconds)."""
     wanted = set(CLAIMED_DATASETS)
-    for fig in ONEDOF["figures"]:
+    for fig in CFG.onedof.figures:
         wanted.update(figure_datasets(fig))
-    for name in config["notebooks"]:
+    for name in CFG.notebooks:
         wanted.update(notebook_inputs(name))
-    table = ONEDOF["friction_table"]
-    wanted.add(onedof_dataset(table["scene"], table["reading"], table["method"]))
+    table = CFG.onedof.friction_table
+    wanted.add(onedof_dataset(table.scene, table.reading, table.method))
     runs = {}
     for run in filter(None, map(ONEDOF_CATALOGUE.get, wanted)):
         runs.setdefault(run.name("scene"), set()).add((run.name("reading"), run.name("method")))
@@ -224,8 +239,8 @@ def onedof_batch_subconfig(scene, runs):
 
 
 def figure_datasets(figure):
-    fig = ONEDOF["figures"][figure]
-    return [onedof_dataset(fig["scene"], r, m) for r in fig["readings"] for m in fig["methods"]]
+    fig = CFG.onedof.figures[figure]
+    return [onedof_dataset(fig.scene, r, m) for r in fig.readings for m in fig.methods]
 
 
 # -- notebooks ------------------------------------------------------------------------------------------
@@ -234,36 +249,37 @@ def figure_datasets(figure):
 def notebook_params(name):
     """What the notebook is told: its figures' and sweep figures' specs (scene, readings, methods), the
     claims readings and the critical-speed readings, so it draws exactly what the DAG built for it."""
-    spec = config["notebooks"][name]
-    critical = ONEDOF.get("critical_speed") or {}
+    spec, onedof = CFG.notebooks[name], CFG.onedof
     return {
-        "figures": {fig: ONEDOF["figures"][fig] for fig in spec.get("figures", [])},
-        "sweep_figures": {fig: ONEDOF["sweep_figures"][fig] for fig in spec.get("sweep_figures", [])},
-        "claims_readings": config["claims"]["readings"],
-        "critical_speed_readings": critical.get("readings", []),
+        "figures": {fig: as_params(onedof.figures[fig]) for fig in spec.figures or []},
+        "sweep_figures": {fig: as_params(onedof.sweep_figures[fig]) for fig in spec.sweep_figures or []},
+        "claims_readings": CFG.claims.readings,
+        "critical_speed_readings": critical_speed_readings(),
     }
+
+
+def critical_speed_readings():
+    critical = CFG.onedof.critical_speed
+    return [] if critical is None else critical.readings
 
 
 def notebook_inputs(name):
     """Every file the notebook reads. An `inputs:` entry containing `{reading}` is expanded over the claims
     readings (the readings whose datasets the claims table already requires), `{critical_reading}` over the
     readings of the critical-speed continuation."""
-    spec = config["notebooks"][name]
-    expand_over = {
-        "reading": config["claims"]["readings"],
-        "critical_reading": (ONEDOF.get("critical_speed") or {}).get("readings", []),
-    }
+    spec = CFG.notebooks[name]
+    expand_over = {"reading": CFG.claims.readings, "critical_reading": critical_speed_readings()}
     files = []
-    for path in spec.get("inputs", []):
+    for path in spec.inputs or []:
         key = next((k for k in expand_over if f"{{{k}}}" in path), None)
         files += [path.format(**{key: r}) for r in expand_over[key]] if key else [path]
-    for fig in spec.get("figures", []):
+    for fig in spec.figures or []:
         files += figure_datasets(fig)
-        files += [paths.figure(fig, r) for r in ONEDOF["figures"][fig]["readings"]]
-    for fig in spec.get("sweep_figures", []):
-        sw = ONEDOF["sweep_figures"][fig]
-        files += [sweep_dataset(sw["sweep"], r, d) for r in sw["readings"] for d in (False, True)]
-        files += [paths.figure(fig, r) for r in sw["readings"]]
+        files += [paths.figure(fig, r) for r in CFG.onedof.figures[fig].readings]
+    for fig in spec.sweep_figures or []:
+        sw = CFG.onedof.sweep_figures[fig]
+        files += [sweep_dataset(sw.sweep, r, d) for r in sw.readings for d in (False, True)]
+        files += [paths.figure(fig, r) for r in sw.readings]
     return list(dict.fromkeys(files + [paths.claims_table(), paths.figure_verdicts()]))
 
 
@@ -288,10 +304,10 @@ def dense_map_chunks(wildcards):
 def dense_map_subconfig(name):
     """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
     reading and method it runs (a job re-runs when any of them changes)."""
-    cfg = config["dense_map"]["maps"][name]
-    sub = onedof_subconfig(cfg["reading"], cfg["scene"], cfg["method"])
-    section = {k: v for k, v in config["dense_map"].items() if k != "maps"}
-    return canonical({**sub, "dense_map": {**section, "maps": {name: cfg}}})
+    entry = CFG.dense_map.maps[name]
+    sub = onedof_subconfig(entry.reading, entry.scene, entry.method)
+    section = as_params(CFG.dense_map.model_copy(update={"maps": {name: entry}}))
+    return {**sub, "dense_map": section}
 
 
 def inverse_onedof_config():
@@ -301,8 +317,8 @@ def inverse_onedof_config():
     every scene and sweep."""
     from stickslip.inverse.problem import runs_by_dataset
 
-    inv = config["inverse"]
-    ids = {cid for fig in inv["figures"].values() for cid in fig.get("claims", [])}
+    figures = CFG.inverse.figures.values()
+    ids = {cid for fig in figures for cid in fig.claims}
     rows = {c.id: c for c in CLAIMS}
     keep = {k: ONEDOF[k] for k in ("baseline", "defaults", "scenes", "sweeps")}
     if not ids <= set(rows):
@@ -311,7 +327,7 @@ def inverse_onedof_config():
     named = [runs[rows[i].dataset] for i in sorted(ids) if rows[i].dataset in runs]
     sweeps = sorted({name for kind, name in named if kind == "sweep"})
     scenes = {name for kind, name in named if kind == "scene"} | {BASELINE["scene"]}
-    scenes |= {fig["scene"] for fig in inv["figures"].values() if "scene" in fig}
+    scenes |= {fig.scene for fig in figures if fig.scene is not None}
     scenes |= {ONEDOF["sweeps"][s].get("scene") or BASELINE["scene"] for s in sweeps}
     keep["scenes"] = {name: ONEDOF["scenes"][name] for name in scenes if name in ONEDOF["scenes"]}
     keep["sweeps"] = {name: ONEDOF["sweeps"][name] for name in sweeps}

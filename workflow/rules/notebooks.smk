@@ -1,5 +1,5 @@
 # Rendered comparison notebooks (jupytext percent files in notebooks/, executed here, HTML in results/).
-NOTEBOOKS = list(config["notebooks"])
+NOTEBOOKS = list(CFG.notebooks)
 
 
 rule render_notebooks:

@@ -31,9 +31,9 @@ rule figure_verdicts:
         CONDA_ENV
     params:
         claims=CLAIMS,  # the claim rows as the parse read them (common.smk): no job reads the files again
-        primary=config["claims"]["primary_reading"],
-        printed=config["claims"]["as_printed_reading"],
-        alternative=config["claims"].get("alternative_reading") or "",
+        primary=CFG.claims.primary_reading,
+        printed=CFG.claims.as_printed_reading,
+        alternative=CFG.claims.alternative_reading or "",
         fe_primary=FE_DEFAULT_READING,
     script:
         "../scripts/figure_verdicts.py"
@@ -67,13 +67,13 @@ rule replication_page:
     params:
         claims=CLAIMS,
         sources=PAGE_SOURCES,
-        notebooks=list(config["notebooks"]),
-        inverse_figures={k: v["claims"] for k, v in config["inverse"]["figures"].items()},
+        notebooks=list(CFG.notebooks),
+        inverse_figures={k: v.claims for k, v in CFG.inverse.figures.items()},
         fe_default_reading=FE_DEFAULT_READING,
         reading_descriptions={
-            name: spec.get("description", "")
-            for name, spec in {**ONEDOF["readings"], **FE["readings"]}.items()
-            if name in config["claims"]["readings"] or name in FE_READINGS
+            name: spec.description or ""
+            for name, spec in {**CFG.onedof.readings, **CFG.fe.readings}.items()
+            if name in CFG.claims.readings or name in CFG.fe.readings
         },
         friction_table=FE_FRICTION,
         configuration=results_owner.describe(CONFIG_OVERLAYS),

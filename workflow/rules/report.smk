@@ -2,6 +2,15 @@
 # never a verdict) and the statuses of its claims (read from the deviations table of the same run).
 
 
+def notebook_paper_figures(name):
+    """The paper figures a notebook sits beside, from what it reads: the catalogue's figures of each result
+    it reads (config paper_figures maps) and the figures of the rows of each claims file it reads."""
+    inputs = notebook_inputs(name)
+    figures = {n for path in inputs if path in CATALOGUE for n in CATALOGUE[path].figures}
+    figures |= {n for claim in CLAIMS if claim.file in inputs for n in claim.figures}
+    return sorted(figures)
+
+
 rule report_captions:
     input:
         table=paths.claims_table(),
@@ -15,21 +24,19 @@ rule report_captions:
     conda:
         CONDA_ENV
     params:
-        # everything the captions read: rerun when a figure, FE scene, methods scene or notebook changes
-        config={
-            "onedof": {"figures": ONEDOF["figures"]},
-            "fe": {"scenes": config.get("fe", {}).get("scenes", {})},
-            # each beam-on-disc image's paper figures, from the catalogue (config fe.paper_figures)
-            "fe_images": {
-                path: {"name": entry.name("name"), "figures": list(entry.figures)}
-                for path, entry in CATALOGUE.items()
-                if entry.kind == "figure" and entry.name("group") == "fe" and entry.figures
-            },
-            "methods_study": {"scenes": config.get("methods_study", {}).get("scenes", {})},
-            "notebooks": config["notebooks"],
+        # everything the captions read: rerun when a figure, FE image, methods scene or notebook changes
+        figures=as_params(CFG.onedof.figures),
+        # each beam-on-disc image's paper figures, from the catalogue (config fe.paper_figures)
+        fe_images={
+            path: {"name": entry.name("name"), "figures": list(entry.figures)}
+            for path, entry in CATALOGUE.items()
+            if entry.kind == "figure" and entry.name("group") == "fe" and entry.figures
         },
+        methods_scenes=list(CFG.methods_study.scenes),
+        notebooks={name: notebook_paper_figures(name) for name in CFG.notebooks},
     script:
         "../scripts/report_captions.py"
 
 
 ALL_TARGETS.append(REPORT_CAPTIONS)
+
