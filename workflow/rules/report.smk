@@ -3,10 +3,12 @@
 
 
 def notebook_paper_figures(name):
-    """The paper figures a notebook sits beside, from what it reads: the catalogue's figures of each result
-    it reads (config paper_figures maps) and the figures of the rows of each claims file it reads."""
+    """The paper figures a notebook sits beside, from what it shows: the paper figures of each image it
+    reads (the catalogue's, from the config's paper_figures maps) and of the rows of each claims file it
+    reads. A dataset it reads to compare with is not a figure it shows."""
     inputs = notebook_inputs(name)
-    figures = {n for path in inputs if path in CATALOGUE for n in CATALOGUE[path].figures}
+    images = [CATALOGUE[path] for path in inputs if path in CATALOGUE and CATALOGUE[path].kind == "figure"]
+    figures = {n for entry in images for n in entry.figures}
     figures |= {n for claim in CLAIMS if claim.file in inputs for n in claim.figures}
     return sorted(figures)
 
