@@ -100,6 +100,7 @@ def test_a_source_link_opens_the_repository_file_and_names_the_line_of_the_def_i
     assert drawing["href"] == "../src/stickslip/presentation/drawing.py"
     names = {n["text"].partition(",")[0]: n for n in drawing["names"]}
     assert list(names) == ["draw_figure", "Styler"]  # the constant has no definition line of its own
+    assert [n["label"] for n in drawing["names"]] == ["draw_figure", "Styler"]  # set in code, the line not
     assert _opened_line(builder, names["draw_figure"]).startswith("def draw_figure(ds):")
     assert _opened_line(builder, names["Styler"]) == "class Styler:"
 
@@ -108,7 +109,8 @@ def test_a_source_link_opens_the_repository_file_and_names_the_line_of_the_def_i
     assert rule_file["text"] == "workflow/rules/draw.smk, line 3"
     assert _opened_line(builder, rule_file).strip() == "rule:"
     # the script is linked as a whole; nothing is copied beside the page
-    script = {"href": "../workflow/scripts/draw.py", "text": "workflow/scripts/draw.py", "line": None}
+    path = "workflow/scripts/draw.py"
+    script = {"href": "../" + path, "text": path, "label": path, "line": None}
     assert image["script"] == script
     builder.write_text_pages()
     assert not (builder.results / "page" / "source").exists()

@@ -415,7 +415,8 @@ class PageBuilder:
         link is about (stated in its text: a browser opens a plain file at its top). ``href`` None when the
         file does not exist."""
         label = name or str(path)
-        return {"href": self.href(path), "text": f"{label}, line {line}" if line else label, "line": line}
+        text = f"{label}, line {line}" if line else label
+        return {"href": self.href(path), "text": text, "label": label, "line": line}
 
     def dataset_link(self, path) -> dict:
         """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""

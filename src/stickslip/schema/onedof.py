@@ -272,7 +272,9 @@ class Onedof(Section):
 
 class Claims(Section):
     readings: Names
-    check: bool = Field(True, description="false: no pinned status is checked (a config that measures other numbers)")
+    check: bool = Field(
+        True, description="false: no pinned status is checked (a config that measures other numbers)"
+    )
     #: the reading every figure's verdict is given in, declared by the rule of docs/READINGS.md
     primary_reading: str
     #: the equations and values exactly as printed, shown beside the primary verdict
