@@ -7,7 +7,8 @@ parses or rewrites a ``results/`` path (``tests/pipeline/test_catalogue.py`` gre
 
 ``PRODUCTS`` declares each family of outputs once: its template, the rule that writes it, the rule's output
 name, the config names it is expanded over and the key of the paper figures it shows. From it come both the
-rules' outputs (``outputs(config, rule)``) and ``catalogue(config)``, every entry the config makes: a path is
+rules' outputs (``outputs(config, rule)``) and ``catalogue(config)``, every entry the config makes
+(``config``: the typed ``stickslip.schema.PipelineConfig``, read by attribute, not imported): a path is
 looked up, never parsed; a path that is not in it is no product of the pipeline, whatever it looks like. The
 paper figures have one registry, the config's ``paper_figures`` maps (``paper_figures``).
 
@@ -218,13 +219,19 @@ class Entry:
         return dict(self.names)[key]
 
 
-def _in(key: str) -> Callable[[Mapping], Iterable]:
+def _get(value, key: str):
+    """``key`` of a config value: an attribute of the typed config (``stickslip.schema``), or a mapping's
+    entry (the few name lists a caller builds itself: ``onedof_catalogue``, ``fe_scene_entries``)."""
+    return value.get(key) if isinstance(value, Mapping) else getattr(value, key, None)
+
+
+def _in(key: str) -> Callable[[object], Iterable]:
     """Each name of the config value at dotted ``key`` (a mapping's keys, a list's items; none if missing)."""
 
-    def names(config: Mapping) -> Iterable:
+    def names(config) -> Iterable:
         value = config
         for part in key.split("."):
-            value = value.get(part) if isinstance(value, Mapping) else None
+            value = None if value is None else _get(value, part)
         return value or {}
 
     return names
@@ -243,11 +250,11 @@ class Products:
     output: str
     #: key -> name(s), or a function of the config giving every product's names (names that depend on
     #: each other: a figure's readings)
-    names: Mapping[str, object] | Callable[[Mapping], Iterable[dict]] = field(default_factory=dict)
+    names: Mapping[str, object] | Callable[[object], Iterable[dict]] = field(default_factory=dict)
     figures: str = ""
     when: str = ""
 
-    def expand(self, config: Mapping) -> Iterator[dict]:
+    def expand(self, config) -> Iterator[dict]:
         """The names of every product the config makes, keyed in the path function's order."""
         if self.when and not _in(self.when)(config):
             return
@@ -274,9 +281,11 @@ class Products:
         return not varying <= set(wildcards)
 
 
-def _per_reading(section: str) -> Callable[[Mapping], list[dict]]:
+def _per_reading(section: str) -> Callable[[object], list[dict]]:
     """group and name of each image of the 1-DOF config's figures ``section``: the figure, each reading."""
-    return lambda c: [{"group": g, "name": r} for g, fig in _in(section)(c).items() for r in fig["readings"]]
+    return lambda c: [
+        {"group": g, "name": r} for g, fig in _in(section)(c).items() for r in _get(fig, "readings")
+    ]
 
 
 _DENSE, _CSV_NC = (False, True), ("csv", "nc")
@@ -284,23 +293,23 @@ _FE_SCENES, _FE_READINGS = _in("fe.scenes"), _in("fe.readings")
 _CRITICAL_READINGS, _METHODS_SCENES = _in("onedof.critical_speed.readings"), _in("methods_study.scenes")
 
 
-def _ccx_decks(config: Mapping) -> list[str]:
+def _ccx_decks(config) -> list[str]:
     return [scene + FE_CCX_SUFFIX for scene in _FE_SCENES(config)]
 
 
-def _fe_paper_figures(config: Mapping) -> list[str]:
+def _fe_paper_figures(config) -> list[str]:
     return [f"fig{number}" for number in sorted(_in("fe.paper_figures")(config))]
 
 
-def _work_precision_charts(config: Mapping) -> list[str]:
+def _work_precision_charts(config) -> list[str]:
     return [f"{scene}_work_precision" for scene in _METHODS_SCENES(config)]
 
 
-def _inverse_fits(config: Mapping) -> list[str]:
+def _inverse_fits(config) -> list[str]:
     return [*_in("inverse.figures")(config), "joint"]
 
 
-def _inverse_corners(config: Mapping) -> list[str]:
+def _inverse_corners(config) -> list[str]:
     mode = "long" if _in("inverse.long")(config) else "default"
     return list(_in(f"inverse.settings.{mode}.corner")(config))
 
@@ -381,22 +390,22 @@ PRODUCTS = (
 )  # fmt: skip
 
 
-def paper_figures(config: Mapping) -> dict[str, tuple[int, ...]]:
+def paper_figures(config) -> dict[str, tuple[int, ...]]:
     """The paper figures each product shows, from the config's ``paper_figures`` maps (the one registry):
     ``figure:<1-DOF figure>``, the runs drawn in them (``scene:<scene>``, ``sweep:<sweep>``), ``eq6``, and
     ``fe:<scene>`` and ``fe:fig<n>`` from ``fe.paper_figures`` (figure -> scenes)."""
     out: dict[str, set[int]] = {"eq6": set(_in("onedof.eq6.paper_figures")(config))}
     for section, run in (("figures", "scene"), ("sweep_figures", "sweep")):
         for name, spec in _in(f"onedof.{section}")(config).items():
-            for key in (f"figure:{name}", f"{run}:{spec[run]}"):
-                out.setdefault(key, set()).update(spec.get("paper_figures") or ())
+            for key in (f"figure:{name}", f"{run}:{_get(spec, run)}"):
+                out.setdefault(key, set()).update(_get(spec, "paper_figures") or ())
     for number, scenes in _in("fe.paper_figures")(config).items():
         for key in (f"fe:fig{number}", *(f"fe:{scene}" for scene in scenes)):
             out.setdefault(key, set()).add(int(number))
     return {key: tuple(sorted(numbers)) for key, numbers in out.items()}
 
 
-def catalogue(config: Mapping) -> dict[str, Entry]:
+def catalogue(config) -> dict[str, Entry]:
     """path -> Entry for every product the config makes (logs and benchmarks aside: every job has its
     own, named by ``log``/``benchmark``)."""
     shows = paper_figures(config)
@@ -410,7 +419,7 @@ def catalogue(config: Mapping) -> dict[str, Entry]:
     return entries
 
 
-def outputs(config: Mapping, rule: str, **wildcards: str) -> dict[str, str | list[str]]:
+def outputs(config, rule: str, **wildcards: str) -> dict[str, str | list[str]]:
     """A rule's outputs, named and ordered as its script reads them: every product ``rule`` writes, each name
     in ``wildcards`` replaced by the rule's wildcard (``reading="{fe_reading}"``)."""
     out: dict[str, str | list[str]] = {}
@@ -441,11 +450,11 @@ def showing(entries: Mapping[str, Entry], figure: int) -> list[Entry]:
     return sorted((e for e in entries.values() if figure in e.figures), key=lambda e: e.path)
 
 
-def _of_kinds(config: Mapping, *kinds: str) -> dict[str, Entry]:
+def _of_kinds(config, *kinds: str) -> dict[str, Entry]:
     return {path: e for path, e in catalogue(config).items() if e.kind in kinds}
 
 
-def onedof_catalogue(onedof: Mapping) -> dict[str, Entry]:
+def onedof_catalogue(onedof) -> dict[str, Entry]:
     """dataset path -> Entry of every 1-DOF run (scene x reading x method) of the ``onedof`` section."""
     return _of_kinds({"onedof": onedof}, "onedof_dataset")
 

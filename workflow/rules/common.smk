@@ -63,7 +63,7 @@ ENSEMBLE = as_params(CFG.ensemble)
 #: The pinned set of claim ids: a deleted row or claims file is an error naming the ids it lost.
 CLAIM_IDS_FILE = "config/claims/ids.txt"
 #: Every product the config makes, path -> Entry (stickslip.catalogue): a claimed path must be one of them.
-CATALOGUE = paths.catalogue(config)
+CATALOGUE = paths.catalogue(CFG)
 check_claims(
     CLAIMS,
     CFG.claims.readings,
@@ -83,7 +83,7 @@ def outputs(rule, flags=None, **wildcards):
     """The rule's outputs as the catalogue declares them (stickslip.catalogue.PRODUCTS), named as its script
     reads them; ``flags``: output name -> Snakemake flag for each of its files (report, temp, directory)."""
     flags = flags or {}
-    out = paths.outputs(config, rule, **wildcards)
+    out = paths.outputs(CFG, rule, **wildcards)
     for name, flag in flags.items():
         out[name] = [flag(p) for p in out[name]] if isinstance(out[name], list) else flag(out[name])
     return out
@@ -121,7 +121,7 @@ ALL_TARGETS = []
 
 ONEDOF = config["onedof"]
 #: Every 1-DOF run's dataset path -> its run (scene, reading, method): paths are looked up, never parsed.
-ONEDOF_CATALOGUE = onedof_catalogue(ONEDOF)
+ONEDOF_CATALOGUE = onedof_catalogue(CFG.onedof)
 
 #: One caption template for every figure of `snakemake --report` (written by rule report_captions). An
 #: absolute path under the working directory, since report() resolves captions against the rules folder.
