@@ -32,12 +32,13 @@ Known limits, from random sweeps beyond the 60 fixed examples (the range of ``pa
   tolerances. 34 differ in their number of segments only by segments shorter than ``T_TOL`` (a state that
   lands within rounding of a switching surface). No ZeroDivisionError was met (a random sweep had reported
   one; it did not recur).
-* 2000 draws that put each parameter at an end of its range 30 % of the time: 2 disagree. An eq3_printed run
-  with a plateau (v_p = 0.6, si, belt 2 mm/s decelerating) chatters on the plateau surface |v_r| = v_p from
-  t = 7.47 s: 88 and 148 segments of ~1e-6 s, a different sequence in each solver, as if the surface
-  attracted from both sides and the solver, which never slides along it, crossed it at every step. And one
-  consistent run (mass 0.1, damping 5, si) has a segment end 1.2e-9 s apart, just above ``T_TOL``. No
-  pipeline reading combines the printed sign with a plateau; the API does not refuse it.
+* 4000 draws that put each parameter at an end of its range 30 % of the time: 3 disagree, each at a switching
+  surface. An eq3_printed run with a plateau (v_p = 0.6, si, belt 2 mm/s decelerating) chatters on the
+  plateau surface |v_r| = v_p from t = 7.47 s: 88 and 148 segments of ~1e-6 s, a different sequence in each
+  solver, as if the surface attracted from both sides and the solver, which never slides along it, crossed
+  it at every step (no pipeline reading combines the printed sign with a plateau; the API does not refuse
+  it). A consistent run (mass 0.1, plateau 2.0, si) takes a 1.6e-7 s plateau excursion in one solver only, and
+  its stick starts 7e-8 s later; another has a segment end 1.2e-9 s apart, just above ``T_TOL``.
 
 """
 
