@@ -70,8 +70,6 @@ LEDGER: dict[str, int] = {
     "src/stickslip/studies/fe_stability.py": 1,
     "src/stickslip/studies/fe_sweeps.py": 2,
     "src/stickslip/studies/methods.py": 10,
-    "src/stickslip/studies/onedof.py": 9,
-    "src/stickslip/studies/specs.py": 38,
     "workflow/rules/claims.smk": 4,
     "workflow/rules/common.smk": 19,
     "workflow/rules/dense_map.smk": 2,
@@ -83,7 +81,6 @@ LEDGER: dict[str, int] = {
     "workflow/rules/page.smk": 6,
     "workflow/rules/report.smk": 3,
     "workflow/rules/validation.smk": 4,
-    "workflow/scripts/eq6_curve.py": 1,
     "workflow/scripts/fe_comparison.py": 1,
     "workflow/scripts/fe_continuum_window.py": 1,
     "workflow/scripts/fe_decks.py": 1,
@@ -95,7 +92,6 @@ LEDGER: dict[str, int] = {
     "workflow/scripts/methods_work_precision.py": 3,
     "workflow/scripts/report_captions.py": 8,
     "workflow/scripts/validation_methods.py": 7,
-    "workflow/scripts/validation_round_trip.py": 4,
 }
 
 
