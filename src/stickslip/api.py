@@ -54,12 +54,12 @@ from typing import TYPE_CHECKING
 import xarray as xr
 
 if TYPE_CHECKING:  # annotations only: pydantic and the studies are imported when a function runs
-    from .schema import Onedof, OnedofJob, OnedofProject
+    from .schema import Onedof, OnedofProject
     from .studies.specs import RunSpec
 
 #: The name of the scene a call with changes runs (``onedof.scenes.custom``, ``fe.scenes.custom``).
 CUSTOM = "custom"
-#: Run-length keys of a 1-DOF scene (``studies.specs.RUN_LENGTHS``).
+#: Run-length keys of a 1-DOF scene (``stickslip.schema.RunLengths``).
 RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 
 
@@ -425,36 +425,6 @@ def onedof_scenario(
     return onedof.model_copy(update={"scenes": {**onedof.scenes, CUSTOM: custom}}), CUSTOM
 
 
-def _check_run_lengths(onedof: Onedof, scene: str, reading: str) -> None:
-    """The run's lengths fit inside it, as the section's check finds for a scene of the config."""
-    from .pipeline.config import ConfigError
-    from .schema import check_run_lengths, merged_run_lengths
-
-    layers = [
-        ("onedof.defaults", onedof.defaults),
-        (f"onedof.scenes.{scene}", onedof.scenes[scene]),
-        (f"onedof.readings.{reading}", onedof.readings[reading]),
-    ]
-    try:
-        check_run_lengths(*merged_run_lengths(layers))
-    except ValueError as exc:
-        raise ConfigError(str(exc)) from None
-
-
-def _run_job(onedof: Onedof, scene: str, reading: str, method: str) -> OnedofJob:
-    """The params of the pipeline's job for this run (``onedof_subconfig``): what its ensemble perturbs."""
-    from .schema import OnedofJob, OnedofRuns
-
-    runs = OnedofRuns(
-        baseline=onedof.baseline,
-        defaults=onedof.defaults,
-        readings={reading: onedof.readings[reading]},
-        methods={method: onedof.methods[method]},
-        scenes={scene: onedof.scenes[scene]},
-    )
-    return OnedofJob(onedof=runs)
-
-
 def simulate(
     scene: str | None = None,
     *,
@@ -510,6 +480,7 @@ def simulate(
     from .catalogue import onedof_dataset
     from .ensemble import EnsembleSpec, ensemble_dataset
     from .pipeline.config import ConfigError
+    from .schema import OnedofJob, OnedofRuns, check_run_lengths, scene_run_lengths
     from .studies.onedof import scene_run_dataset
     from .studies.specs import PERTURBED_FIELDS, from_job_params, run_spec
 
@@ -538,7 +509,6 @@ def simulate(
     for key, value, known in (("reading", reading, onedof.readings), ("method", method, onedof.methods)):
         if value not in known:
             raise ConfigError(f"{key}: {value!r} is not an entry of onedof.{key}s ({sorted(known)})")
-    _check_run_lengths(onedof, name, reading)
     if own_law is not None and onedof.methods[method].solver != "switch":
         raise ConfigError(
             f"onedof.scenes.{name}.law: a {own_law.kind!r} friction law is solved by the 'switch' solver "
@@ -549,8 +519,18 @@ def simulate(
         spec = run_spec(section, name, reading, method)
         return spec if own_law is None else replace(spec, law=own_law)
 
-    job = _run_job(onedof, name, reading, method)
+    # the params of the pipeline's job for this run (onedof_subconfig): what its ensemble perturbs
+    job = OnedofJob(
+        onedof=OnedofRuns(
+            baseline=onedof.baseline,
+            defaults=onedof.defaults,
+            readings={reading: onedof.readings[reading]},
+            methods={method: onedof.methods[method]},
+            scenes={name: onedof.scenes[name]},
+        )
+    )
     try:
+        check_run_lengths(*scene_run_lengths(onedof, name, reading))
         spec = spec_of(job.onedof)
     except ValueError as exc:
         raise ConfigError(str(exc)) from None

@@ -111,6 +111,7 @@ from .onedof import (  # noqa: F401  (re-exported)
     SweepFigure,
     check_run_lengths,
     merged_run_lengths,
+    scene_run_lengths,
 )
 from .validation import (  # noqa: F401  (re-exported)
     LawTiming,

@@ -217,13 +217,23 @@ class OnedofRuns(Section):
 
     baseline: Baseline
     defaults: OnedofDefaults
-    readings: dict[str, Reading]
-    methods: dict[str, Method]
-    scenes: dict[str, Scene]
+    readings: Annotated[dict[str, Reading], Field(min_length=1)]
+    methods: Annotated[dict[str, Method], Field(min_length=1)]
+    scenes: Annotated[dict[str, Scene], Field(min_length=1)]
     eq6: Eq6 | None = None
     sweeps: dict[str, Sweep] = {}
     critical_speed: CriticalSpeed | None = None
     friction_table: FrictionTable | None = None
+
+
+def scene_run_lengths(onedof: OnedofRuns, scene: str, reading: str) -> tuple[dict, dict]:
+    """(values, key each came from) of a scene's run under a reading: the defaults, then the scene's own,
+    then the reading's ``output_dt``."""
+    layers = [
+        (f"onedof.scenes.{scene}", onedof.scenes[scene]),
+        (f"onedof.readings.{reading}", onedof.readings[reading]),
+    ]
+    return merged_run_lengths([("onedof.defaults", onedof.defaults), *layers])
 
 
 class OnedofJob(Section):
@@ -233,9 +243,6 @@ class OnedofJob(Section):
 
 
 class Onedof(OnedofRuns):
-    readings: Annotated[dict[str, Reading], Field(min_length=1)]
-    methods: Annotated[dict[str, Method], Field(min_length=1)]
-    scenes: Annotated[dict[str, Scene], Field(min_length=1)]
     sweep_figures: dict[str, SweepFigure] = {}
     friction_table: FrictionTable
     figures: dict[str, Figure]
@@ -273,17 +280,9 @@ class Onedof(OnedofRuns):
         for name, fig in self.figures.items():  # a scene with its own law runs only under the switch solver
             for method in fig.methods:
                 needs_switch(f"onedof.figures.{name}", self.scenes[fig.scene].law, method, self.methods)
-        for name, scene in self.scenes.items():
-            for rname, reading in self.readings.items():
-                check_run_lengths(
-                    *merged_run_lengths(
-                        [
-                            ("onedof.defaults", self.defaults),
-                            (f"onedof.scenes.{name}", scene),
-                            (f"onedof.readings.{rname}", reading),
-                        ]
-                    )
-                )
+        for scene in self.scenes:
+            for reading in self.readings:
+                check_run_lengths(*scene_run_lengths(self, scene, reading))
         return self
 
 

@@ -22,7 +22,17 @@ from ..analysis.sweep import SweepAxis, chunk_count, grid_size, run_points
 from ..model.equations import BeltModel
 from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
-from ..schema import DenseMaps, DenseRange, Figure, Law, MapAxis, OnedofJob, OnedofRuns, merged_run_lengths
+from ..schema import (
+    DenseMaps,
+    DenseRange,
+    Figure,
+    Law,
+    MapAxis,
+    OnedofJob,
+    OnedofRuns,
+    merged_run_lengths,
+    scene_run_lengths,
+)
 from ..solvers import make_solver
 from ..solvers.base import sample_times
 from ..solvers.budget import BudgetedSolver
@@ -156,7 +166,7 @@ def run_spec(onedof: OnedofRuns, scene: str, reading: str, method: str) -> RunSp
         belt = BeltParams.from_mapping(params)
     except ParameterError as exc:
         raise ParameterError(f"onedof.scenes.{scene}.params.{exc}") from None
-    run, _ = merged_run_lengths([("", defaults), ("", scene_cfg), ("", reading_cfg)])
+    run, _ = scene_run_lengths(onedof, scene, reading)
     spec = RunSpec(
         scene=scene,
         reading=reading,
