@@ -23,6 +23,7 @@ from ..model.equations import BeltModel
 from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
 from ..schema import (
+    DenseMapJob,
     DenseMaps,
     DenseRange,
     Figure,
@@ -370,3 +371,9 @@ def dense_map(onedof: OnedofRuns, maps: DenseMaps, name: str) -> DenseMap:
         plot=tuple(cfg.plot),
         law=_law(cfg.law, key),
     )
+
+
+def dense_map_job(params: Mapping, name: str) -> DenseMap:
+    """The map a dense-map job's params hold (``DenseMapJob``), resolved as its jobs resolve it."""
+    job = DenseMapJob.model_validate(params)
+    return dense_map(job.onedof, job.dense_map, name)
