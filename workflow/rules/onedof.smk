@@ -18,8 +18,7 @@ for _scene, _runs in onedof_runs().items():
         params:
             scene=_scene,
             runs=_runs,
-            # what each run reads, one mapping a run: its ensemble perturbs it, and an edit re-runs the job
-            configs=[onedof_subconfig(r, _scene, m) for r, m in _runs],
+            configs=[onedof_subconfig(r, _scene, m) for r, m in _runs],  # what each run reads and perturbs
             ensemble=ENSEMBLE,
             ensemble_outputs=sorted(CLAIMED_DATASETS & {onedof_dataset(_scene, r, m) for r, m in _runs}),
         script:
