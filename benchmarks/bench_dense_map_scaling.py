@@ -25,6 +25,7 @@ from pathlib import Path
 import yaml
 
 from stickslip import catalogue as paths
+from stickslip.schema import PipelineConfig
 from stickslip.studies.specs import dense_map
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -89,7 +90,8 @@ def main():
                 yaml.safe_dump({"dense_map": {"chunk_size": 32, "maps": {args.map: {"axes": axes}}}})
             )
             extra = [quick]
-        dm = dense_map(pipeline_config(extra), args.map)
+        typed = PipelineConfig.model_validate(pipeline_config(extra))
+        dm = dense_map(typed.onedof, typed.dense_map, args.map)
         print(
             f"map {args.map}: {' x '.join(str(len(a.values)) for a in dm.axes)} = {dm.points} points, "
             f"{dm.chunks} chunks of {dm.chunk_size}, t_end {dm.spec.t_end:g} s, solver {dm.spec.method}; "

@@ -27,6 +27,7 @@ import yaml
 import stickslip.inverse.forward as forward_module
 from stickslip.inverse.forward import Forward, build_model, observe
 from stickslip.inverse.problem import build_problem, load_claim_rows
+from stickslip.schema import Onedof
 from stickslip.solvers.exact_compiled import python_reference
 from stickslip.studies.specs import run_spec
 
@@ -86,7 +87,7 @@ def main(argv=None) -> int:
         ("fig02", "consistent_si"),
         ("fig15", "consistent_caption"),
     ):
-        spec = run_spec(config, scene, reading, "exact")
+        spec = run_spec(Onedof.model_validate(config["onedof"]), scene, reading, "exact")
         compiled = spec.solver()
         python = python_reference(compiled)
         times = [

@@ -49,12 +49,17 @@ from __future__ import annotations
 import copy
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import xarray as xr
 
+if TYPE_CHECKING:  # annotations only: pydantic and the studies are imported when a function runs
+    from .schema import Onedof, OnedofProject
+    from .studies.specs import RunSpec
+
 #: The name of the scene a call with changes runs (``onedof.scenes.custom``, ``fe.scenes.custom``).
 CUSTOM = "custom"
-#: Run-length keys of a 1-DOF scene (``studies.specs.RUN_LENGTHS``).
+#: Run-length keys of a 1-DOF scene (``stickslip.schema.RunLengths``).
 RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 
 
@@ -180,21 +185,25 @@ def _validated(config: dict) -> dict:
     return config
 
 
-def _validated_onedof(config: dict) -> dict:
-    """The ``onedof`` section checked by its typed model (what a 1-DOF run reads; the whole config's check
-    also resolves every FE scene and study, seconds a single run does not need)."""
+def onedof_project(config: Mapping) -> OnedofProject:
+    """The sections a 1-DOF run reads, typed (``stickslip.schema.OnedofProject``): ``ConfigError`` naming the
+    key of every bad value."""
+    from .schema import OnedofProject
+
+    return _typed(OnedofProject, config)
+
+
+def _typed(model, mapping: Mapping, key: str = ""):
+    """``model`` of ``mapping``, else a ``ConfigError`` naming each bad value's key (under ``key``)."""
     from pydantic import ValidationError
 
     from .io.typed_errors import typed_errors
     from .pipeline.config import ConfigError
-    from .schema import Onedof
 
     try:
-        Onedof.model_validate(config["onedof"])
+        return model.model_validate(mapping)
     except ValidationError as exc:
-        lines = [ln if ln.startswith("onedof.") else f"onedof.{ln}" for ln in typed_errors(exc).splitlines()]
-        raise ConfigError("\n".join(lines)) from None
-    return config
+        raise ConfigError("\n".join(f"{key}{line}" for line in typed_errors(exc).splitlines())) from None
 
 
 def _law_mapping(law, mu_s: float) -> dict | None:
@@ -376,51 +385,44 @@ def _law_object(law, key: str):
 
 
 def onedof_scenario(
-    config: dict,
+    onedof: Onedof,
     scene: str | None = None,
     *,
     law=None,
     run: Mapping | None = None,
     params: Mapping | None = None,
     own_law=None,
-) -> tuple[dict, str]:
-    """(config, scene name) with the changes as a scene of their own: ``onedof.scenes.custom`` = ``scene``
-    (default: the baseline's) with ``params``, ``law`` and ``run`` lengths over it. Without changes the
-    scene itself, so the run is the pipeline's run of that scene."""
-    onedof = config["onedof"]
-    scene = scene or onedof["baseline"]["scene"]
-    if scene not in onedof["scenes"]:
-        from .pipeline.config import ConfigError
+) -> tuple[Onedof, str]:
+    """(section, scene name) with the changes as a scene of their own: ``onedof.scenes.custom`` = ``scene``
+    (default: the baseline's) with ``params``, ``law`` and ``run`` lengths over it, checked as a config
+    scene is. Without changes the scene itself, so the run is the pipeline's run of that scene."""
+    from .pipeline.config import ConfigError
+    from .schema import Scene
 
-        raise ConfigError(f"scene: {scene!r} is not an entry of onedof.scenes ({sorted(onedof['scenes'])})")
+    scene = scene or onedof.baseline.scene
+    if scene not in onedof.scenes:
+        raise ConfigError(f"scene: {scene!r} is not an entry of onedof.scenes ({sorted(onedof.scenes)})")
     params, run = dict(params or {}), dict(run or {})
     if not (params or run or law is not None or own_law is not None):
-        return config, scene
-    base = copy.deepcopy(onedof["scenes"][scene])
-    merged = {**(onedof["defaults"].get("params") or {}), **(base.get("params") or {}), **params}
+        return onedof, scene
+    base = onedof.scenes[scene].model_dump(exclude_unset=True)
     changes = ", ".join(f"{k}={v}" for k, v in {**params, **run}.items())
     entry = {
         **base,
         "figure": "",
         "description": f"scene {scene} with {changes or 'its own friction law'}",
-        "params": {**(base.get("params") or {}), **params},
+        "params": {**base.get("params", {}), **params},
         **run,
     }
-    law_entry = _law_mapping(law, merged.get("mu_s"))
+    mu_s = entry["params"].get("mu_s", onedof.defaults.params.mu_s)
+    law_entry = _law_mapping(law, mu_s)
     if law_entry is not None:
         entry["law"] = law_entry
         entry["description"] += f", friction law {law_entry['kind']}"
     if own_law is not None:  # not a config value: the run replaces its spec's law (api.simulate)
         entry["description"] += f", friction law {own_law!r}"
-    config = copy.deepcopy(config)
-    config["onedof"]["scenes"][CUSTOM] = entry
-    return config, CUSTOM
-
-
-def _ensemble_spec(config: dict, on: bool):
-    from .ensemble import EnsembleSpec
-
-    return EnsembleSpec.from_mapping(config.get("ensemble")).without_blas() if on else None
+    custom = _typed(Scene, entry, f"onedof.scenes.{CUSTOM}.")
+    return onedof.model_copy(update={"scenes": {**onedof.scenes, CUSTOM: custom}}), CUSTOM
 
 
 def simulate(
@@ -476,15 +478,16 @@ def simulate(
     from dataclasses import replace
 
     from .catalogue import onedof_dataset
-    from .ensemble import ensemble_dataset
+    from .ensemble import EnsembleSpec, ensemble_dataset
     from .pipeline.config import ConfigError
+    from .schema import OnedofJob, OnedofRuns, check_run_lengths, scene_run_lengths
     from .studies.onedof import scene_run_dataset
-    from .studies.specs import PERTURBED_FIELDS, run_spec
+    from .studies.specs import PERTURBED_FIELDS, from_job_params, run_spec
 
     base_root = project_root(root)
     config = config if config is not None else load_project_config(configfiles, base_root)
     output = check_output(output, base_root, force=force, config=config)
-    baseline = config["onedof"]["baseline"]
+    project = onedof_project(config)
     run = {
         k: v
         for k, v in zip(RUN_LENGTHS, (t_end, output_dt, transient, count_window), strict=True)
@@ -493,36 +496,52 @@ def simulate(
     if law_derivative is not None and law is not None:
         law = (law, law_derivative)
     own_law = _law_object(law, f"onedof.scenes.{CUSTOM}.law")
-    config, name = onedof_scenario(
-        config, scene, law=None if own_law is not None else law, run=run, params=params, own_law=own_law
+    onedof, name = onedof_scenario(
+        project.onedof,
+        scene,
+        law=None if own_law is not None else law,
+        run=run,
+        params=params,
+        own_law=own_law,
     )
-    _validated_onedof(config)
-    reading = reading or baseline["reading"]
-    method = method or ("switch" if law is not None else baseline["method"])
-    for key, value in (("reading", reading), ("method", method)):
-        if value not in config["onedof"][key + "s"]:
-            known = sorted(config["onedof"][key + "s"])
-            raise ConfigError(f"{key}: {value!r} is not an entry of onedof.{key}s ({known})")
-    if own_law is not None and config["onedof"]["methods"][method].get("solver") != "switch":
+    reading = reading or onedof.baseline.reading
+    method = method or ("switch" if law is not None else onedof.baseline.method)
+    for key, value, known in (("reading", reading, onedof.readings), ("method", method, onedof.methods)):
+        if value not in known:
+            raise ConfigError(f"{key}: {value!r} is not an entry of onedof.{key}s ({sorted(known)})")
+    if own_law is not None and onedof.methods[method].solver != "switch":
         raise ConfigError(
             f"onedof.scenes.{name}.law: a {own_law.kind!r} friction law is solved by the 'switch' solver "
-            "only; "
-            f"method {method!r} uses {config['onedof']['methods'][method].get('solver')!r}"
+            f"only; method {method!r} uses {onedof.methods[method].solver!r}"
         )
 
-    def spec_of(cfg):
-        spec = run_spec(cfg, name, reading, method)
+    def spec_of(section):
+        spec = run_spec(section, name, reading, method)
         return spec if own_law is None else replace(spec, law=own_law)
 
+    # the params of the pipeline's job for this run (onedof_subconfig): what its ensemble perturbs
+    job = OnedofJob(
+        onedof=OnedofRuns(
+            baseline=onedof.baseline,
+            defaults=onedof.defaults,
+            readings={reading: onedof.readings[reading]},
+            methods={method: onedof.methods[method]},
+            scenes={name: onedof.scenes[name]},
+        )
+    )
     try:
-        spec = spec_of(config)
+        check_run_lengths(*scene_run_lengths(onedof, name, reading))
+        spec = spec_of(job.onedof)
     except ValueError as exc:
         raise ConfigError(str(exc)) from None
-    members = _ensemble_spec(config, ensemble)
-    check_run_cost(config, name, reading, members, given=run, lengths=(spec.t_end, spec.output_dt))
+    members = None
+    if ensemble:
+        given = project.ensemble.model_dump(exclude_none=True) if project.ensemble else None
+        members = EnsembleSpec.from_mapping(given).without_blas()
+    check_run_cost(spec, members, given=run, allow_expensive=project.allow_expensive)
     ds = ensemble_dataset(  # signs drawn by name: the run's dataset path in the pipeline's catalogue
-        lambda cfg: scene_run_dataset(spec_of(cfg)),
-        config,
+        from_job_params(lambda section: scene_run_dataset(spec_of(section))),
+        job.model_dump(exclude_unset=True),
         members,
         run_id=onedof_dataset(name, reading, method),
         fields=PERTURBED_FIELDS,
@@ -545,46 +564,37 @@ def ensemble_members(spec) -> int:
 
 
 def check_run_cost(
-    config: dict, scene: str, reading: str, ensemble_spec=None, given: Mapping = (), lengths=None
+    spec: RunSpec, ensemble_spec=None, given: Mapping = (), allow_expensive: bool = False
 ) -> None:
-    """The pipeline's cost guard for one run (``stickslip.schema``): its samples per run
-    (``estimated_costs``, against ``MAX_SAMPLES_PER_RUN``) and, with an ensemble, the samples of all its
-    runs together (against ``MAX_SAMPLES_PER_STUDY``), before any work. Skipped with ``allow_expensive:
-    true`` in the config, as in the pipeline. The message names the key, the cost and the bound."""
+    """The pipeline's cost guard for one run (``stickslip.schema``): its samples (``stored_samples``, against
+    ``MAX_SAMPLES_PER_RUN``) and, with an ensemble, the samples of all its runs together (against
+    ``MAX_SAMPLES_PER_STUDY``), before any work. Skipped with ``allow_expensive: true`` in the config, as in
+    the pipeline. The message names the key (the option ``given`` set), the cost and the bound."""
     from .pipeline.config import ConfigError
-    from .schema import PipelineConfig, estimated_costs
+    from .schema import MAX_SAMPLES_PER_RUN, stored_samples
 
-    if config.get("allow_expensive"):
+    if allow_expensive:
         return
-    from pydantic import ValidationError
-
-    try:
-        model = PipelineConfig.model_validate({**config, "allow_expensive": True})
-    except ValidationError:  # a section this run does not read; the run's own were checked
-        return
-    wanted = f"onedof.scenes.{scene} (reading {reading})"
-    for key, what, estimate, limit in estimated_costs(model):
-        if key != wanted:
-            continue
-        option = "output_dt" if "output_dt" in given and "t_end" not in given else "t_end"
-        span = f" (t_end = {lengths[0]:g} s at output_dt = {lengths[1]:g} s)" if lengths else ""
-        if estimate > limit:
-            raise ConfigError(
-                f"onedof.scenes.{scene}.{option}: {dict(given).get(option, '')!r}{span} makes an estimated "
-                f"{estimate:.3g} {what}, more than the limit {limit:.3g} (the pipeline's cost guard); "
-                "a shorter t_end or a coarser output_dt fits, or allow_expensive: true in a config file"
-            )
-        check_ensemble_cost(ensemble_spec, estimate, config)
+    estimate = stored_samples(spec.t_end, spec.output_dt)
+    option = "output_dt" if "output_dt" in given and "t_end" not in given else "t_end"
+    if estimate > MAX_SAMPLES_PER_RUN:
+        raise ConfigError(
+            f"onedof.scenes.{spec.scene}.{option}: {dict(given).get(option, '')!r} (t_end = "
+            f"{spec.t_end:g} s at output_dt = {spec.output_dt:g} s) makes an estimated {estimate:.3g} "
+            f"samples per run, more than the limit {MAX_SAMPLES_PER_RUN:.3g} (the pipeline's cost guard); a "
+            "shorter t_end or a coarser output_dt fits, or allow_expensive: true in a config file"
+        )
+    check_ensemble_cost(ensemble_spec, estimate)
 
 
-def check_ensemble_cost(spec, samples_per_run: float, config: Mapping) -> None:
+def check_ensemble_cost(spec, samples_per_run: float, *, allow_expensive: bool = False) -> None:
     """The pipeline's bounds on an ensemble, before any work: at most ``MAX_ENSEMBLE_SEEDS`` seeds, and its
     runs together at most ``MAX_SAMPLES_PER_STUDY`` samples (``stickslip.schema``). Skipped
     with ``allow_expensive: true``. The message names the key (``ensemble.seeds``), the cost and the bound."""
     from .pipeline.config import ConfigError
     from .schema import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_STUDY
 
-    if spec is None or config.get("allow_expensive"):
+    if spec is None or allow_expensive:
         return
     members = ensemble_members(spec)
     if len(spec.seeds) > MAX_ENSEMBLE_SEEDS:
@@ -782,7 +792,7 @@ def _check_fe_ensemble_cost(config: dict, mapping: Mapping, spec) -> None:
     samples = (
         solver["t_end"] / solver["output_dt"] + 1 if solver.get("t_end") and solver.get("output_dt") else 0
     )
-    check_ensemble_cost(spec, samples, config)
+    check_ensemble_cost(spec, samples, allow_expensive=bool(config.get("allow_expensive")))
 
 
 def _fe_friction_table(config: dict, cfg: Mapping, root: Path, given):
@@ -800,7 +810,7 @@ def _fe_friction_table(config: dict, cfg: Mapping, root: Path, given):
         raise FileNotFoundError(f"fe.friction_table: {table} does not exist")
     from .studies.onedof import friction_table_from_config
 
-    ds = friction_table_from_config(config, table=config["onedof"]["friction_table"])
+    ds = friction_table_from_config(onedof_project(config).onedof)
     with tempfile.TemporaryDirectory() as tmp:  # the rule's CSV format, so the values are the rule's
         csv = Path(tmp) / "friction_mu_vr.csv"
         rows = zip(ds.relative_speed.values, ds.mu.values, strict=True)

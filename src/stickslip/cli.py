@@ -24,8 +24,12 @@ import argparse
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import catalogue as paths
+
+if TYPE_CHECKING:  # annotations only: pydantic is imported when a command reads the config
+    from .schema import Onedof
 
 #: 1-DOF parameters as options: option -> config key (``onedof.scenes.<scene>.params.<key>``).
 PARAMS = {
@@ -274,29 +278,29 @@ def _metrics(ds) -> dict:
     return {m: float(ds[m]) for m in METRICS if m in ds and ds[m].ndim == 0}
 
 
-def baseline_metrics(config: dict, reading: str, root: Path) -> tuple[dict, str]:
+def baseline_metrics(onedof: Onedof, reading: str, root: Path) -> tuple[dict, str]:
     """The baseline's metrics in ``reading``: from the build when its dataset exists, else computed."""
     from .catalogue import onedof_dataset
     from .io.netcdf import read_dataset
 
-    base = config["onedof"]["baseline"]
-    path = root / onedof_dataset(base["scene"], reading, base["method"])
+    base = onedof.baseline
+    path = root / onedof_dataset(base.scene, reading, base.method)
     if path.is_file():
         return _metrics(read_dataset(path)), str(path.relative_to(root))
     from .studies.onedof import scene_run_dataset
-    from .studies.specs import run_spec
+    from .studies.specs import baseline_spec
 
-    return _metrics(scene_run_dataset(run_spec(config, base["scene"], reading, base["method"]))), "computed"
+    return _metrics(scene_run_dataset(baseline_spec(onedof, reading))), "computed"
 
 
-def paper_values(config: dict, root: Path, scene: str | None = None) -> dict[str, list[tuple[float, str]]]:
+def paper_values(onedof: Onedof, root: Path, scene: str | None = None) -> dict[str, list[tuple[float, str]]]:
     """The paper's numbers for a scene (default: the baseline's): every ``value`` claim on its dataset, so
     ``--scene fig06`` is compared with Fig. 6's numbers, not Fig. 2's."""
     from .catalogue import onedof_dataset
     from .claims.load import load_claims
 
-    base = config["onedof"]["baseline"]
-    target = onedof_dataset(scene or base["scene"], "{reading}", base["method"])
+    base = onedof.baseline
+    target = onedof_dataset(scene or base.scene, "{reading}", base.method)
     # read (and check) only the files with a claim on the baseline's dataset: the run waits for no others
     files = [p for p in sorted((root / "config" / "claims").glob("*.yaml")) if target in p.read_text()]
     out: dict[str, list[tuple[float, str]]] = {}
@@ -449,9 +453,10 @@ def cmd_run(args) -> int:
         **run,
         **params,
     )
-    reading = args.reading or config["onedof"]["baseline"]["reading"]
-    base, where = baseline_metrics(config, reading, root)
-    paper = paper_values(config, root, args.scene)
+    onedof = api.onedof_project(config).onedof
+    reading = args.reading or onedof.baseline.reading
+    base, where = baseline_metrics(onedof, reading, root)
+    paper = paper_values(onedof, root, args.scene)
     report = run_report(ds, base, where, paper)
     report["reading"] = reading
     quiet = "-" in (args.json, args.csv)  # stdout is the data: the text goes to stderr
@@ -461,7 +466,7 @@ def cmd_run(args) -> int:
         report["output"] = str(args.output)
         print(f"wrote {args.output}", file=text_out)
     if args.plot:
-        _plot_onedof(ds, config, args, reading, text_out)
+        _plot_onedof(ds, onedof, args, reading, text_out)
     if args.json:
         import json
 
@@ -476,7 +481,7 @@ def cmd_run(args) -> int:
     return 0 if report["status"] != "failed" else 1  # a divergence is an answer; a failure is not
 
 
-def _plot_onedof(ds, config: dict, args, reading: str, out=None) -> None:
+def _plot_onedof(ds, onedof: Onedof, args, reading: str, out=None) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -485,10 +490,7 @@ def _plot_onedof(ds, config: dict, args, reading: str, out=None) -> None:
     from .presentation.plots import onedof_figure
 
     scene = ds.attrs.get("scene_name", "")
-    kind = next(
-        (f.get("plot", "timeseries") for f in config["onedof"]["figures"].values() if f["scene"] == scene),
-        "timeseries",
-    )
+    kind = next((f.plot for f in onedof.figures.values() if f.scene == scene), "timeseries")
     method = ds.attrs.get("method_name", "")
     # the figure adds the reading under the title: the title names the run and its friction law, once each
     law = ds.attrs.get("scene_friction_law")
@@ -649,8 +651,9 @@ def cmd_claims(args) -> int:
         raise UsageError(f"--figure: no claim of config/claims/*.yaml is about Fig. {args.figure}")
     rows = [r for r in read_table(table) if r["claim"] in ids]
     config = api.load_project_config((), root)
+    primary = api.onedof_project(config).claims.primary_reading
     # the primary reading (declared in docs/READINGS.md) unless the user asks for another
-    reading = args.reading or (config["claims"]["primary_reading"] if any(r["reading"] for r in rows) else "")
+    reading = args.reading or (primary if any(r["reading"] for r in rows) else "")
     shown = rows_in_reading(rows, reading)
     t = tally(shown)
     which = "the primary reading" if not args.reading else "reading"

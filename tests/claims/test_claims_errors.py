@@ -53,10 +53,12 @@ def test_a_claimed_variable_that_its_run_dataset_never_holds_is_rejected(tmp_pat
 
 def test_every_variable_a_run_dataset_holds_is_in_the_registry():
     from stickslip.io.run_variables import run_dataset_variables
+    from stickslip.schema import Onedof
     from stickslip.studies.onedof import scene_run_dataset
     from stickslip.studies.specs import run_spec
 
-    ds = scene_run_dataset(run_spec(base_config(), "fig02", "consistent_caption", "exact"))
+    onedof = Onedof.model_validate(base_config()["onedof"])
+    ds = scene_run_dataset(run_spec(onedof, "fig02", "consistent_caption", "exact"))
     assert set(map(str, ds.data_vars)) <= run_dataset_variables()
     assert "max_displacement" in ds and "belt_velocity" in ds
 

@@ -76,6 +76,19 @@ def test_a_scene_law_runs_under_the_switch_solver_and_is_recorded():
     assert float(ds.stick_velocity) == pytest.approx(0.5, rel=1e-9)
 
 
+def test_your_runs_ensemble_perturbs_what_the_pipelines_job_for_it_perturbs():
+    """Only the run's own reading and method, as rule simulate_onedof's job: the exact solver has no step to
+    change, so its ensemble has no step member (it would repeat the base run); ode45's has one."""
+    from stickslip.ensemble import MEMBER_DIM
+
+    def labels(method):
+        ds = stickslip.simulate(method=method, t_end=12.0, transient=4.0, count_window=12.0, ensemble=True)
+        return list(ds[f"{MEMBER_DIM}_label"].values)
+
+    assert labels("exact") == ["base", "perturbed-1", "perturbed-2", "window"]
+    assert labels("ode45") == ["base", "perturbed-1", "perturbed-2", "step", "window"]
+
+
 # -- the command line: options checked as config keys -----------------------------------------------------
 
 

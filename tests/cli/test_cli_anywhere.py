@@ -78,12 +78,13 @@ def test_fe_rpm_names_the_scene_as_the_config_names_its_speeds():
 def test_the_computed_friction_table_is_the_one_rule_friction_table_writes(tmp_path):
     """Same study function, same CSV format: equal to the table the pipeline's script writes."""
     from stickslip.fe.params import FrictionTable
+    from stickslip.schema import Onedof
     from stickslip.studies.fe_config import effective_fe_config
     from stickslip.studies.onedof import friction_table_from_config
 
     config = api.load_project_config()
     computed = api._fe_friction_table(config, effective_fe_config(config), tmp_path, None)
-    ds = friction_table_from_config(config, table=config["onedof"]["friction_table"])
+    ds = friction_table_from_config(Onedof.model_validate(config["onedof"]))
     assert computed.speeds[0] == 0.0 and len(computed.speeds) == ds.sizes["relative_speed"]
     np.testing.assert_allclose(computed.mu, ds.mu.values, rtol=1e-9)
     assert isinstance(computed, FrictionTable)

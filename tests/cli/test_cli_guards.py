@@ -138,11 +138,18 @@ def test_an_ensemble_of_too_many_seeds_is_refused_before_any_work(tmp_path, argv
 
 
 def test_allow_expensive_lets_the_user_take_the_cost(tmp_path):
-    """As in the pipeline: the guard is a question, `allow_expensive: true` the answer."""
+    """As in the pipeline: the guard is a question, `allow_expensive: true` (a config file's) the answer."""
+    from dataclasses import replace
+
+    from stickslip.studies.specs import baseline_spec
+
     overlay = tmp_path / "expensive.yaml"
     overlay.write_text("allow_expensive: true\n")
-    config = api.load_project_config([overlay])
-    api.check_run_cost(config, "fig02", "consistent_caption")  # nothing raised, whatever the size
+    project = api.onedof_project(api.load_project_config([overlay]))
+    costly = replace(baseline_spec(project.onedof), t_end=1e9)
+    with pytest.raises(ConfigError, match="samples per run, more than the limit"):
+        api.check_run_cost(costly)
+    api.check_run_cost(costly, allow_expensive=project.allow_expensive)  # the same run, taken on purpose
 
 
 # -- not a dataset, a missing root ---------------------------------------------------------------------------

@@ -7,7 +7,8 @@ import pytest
 import yaml
 
 from stickslip.model import ParameterError
-from stickslip.studies.specs import run_spec
+from stickslip.schema import Onedof
+from stickslip.studies.specs import figure_runs, run_spec
 
 
 @pytest.fixture(scope="module")
@@ -16,11 +17,11 @@ def config(repo_root):
 
 
 def test_every_figure_run_resolves(config):
-    for fig in config["onedof"]["figures"].values():
-        for reading in fig["readings"]:
-            for method in fig["methods"]:
-                spec = run_spec(config, fig["scene"], reading, method)
-                assert spec.t_eval[-1] == pytest.approx(spec.t_end)
+    onedof = Onedof.model_validate(config["onedof"])
+    for fig in onedof.figures.values():
+        for scene, reading, method in figure_runs(fig):
+            spec = run_spec(onedof, scene, reading, method)
+            assert spec.t_eval[-1] == pytest.approx(spec.t_end)
 
 
 def _no_claims_file_read(monkeypatch):
@@ -82,12 +83,12 @@ def test_a_budgeted_method_records_a_stall_as_a_failed_run(config):
 
     cfg = copy.deepcopy(config)
     cfg["onedof"]["methods"]["ode45"]["budget"] = {"max_rhs": 500}
-    spec = run_spec(cfg, "fig02", "consistent_caption", "ode45")
+    spec = run_spec(Onedof.model_validate(cfg["onedof"]), "fig02", "consistent_caption", "ode45")
     traj = spec.solver().solve(spec.model, spec.t_end, spec.t_eval)
     assert not traj.ok and "budget" in traj.stats.message
     cfg["onedof"]["methods"]["ode45"]["budget"] = {"max_rhs": 0}
     with pytest.raises(ParameterError, match="onedof.methods.ode45.budget"):
-        run_spec(cfg, "fig02", "consistent_caption", "ode45")
+        run_spec(Onedof.model_validate(cfg["onedof"]), "fig02", "consistent_caption", "ode45")
 
 
 def test_a_null_in_an_override_file_removes_the_entry(tmp_path, repo_root):

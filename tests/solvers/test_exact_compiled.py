@@ -164,11 +164,12 @@ def test_the_pipeline_method_exact_is_the_compiled_solver():
 def _config_runs():
     import yaml
 
+    from stickslip.schema import Onedof
+
     from project_run import ROOT
 
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
-    onedof = config["onedof"]
-    return config, [(scene, reading) for scene in onedof["scenes"] for reading in onedof["readings"]]
+    onedof = Onedof.model_validate(yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["onedof"])
+    return onedof, [(scene, reading) for scene in onedof.scenes for reading in onedof.readings]
 
 
 CONFIG, CONFIG_RUNS = _config_runs()

@@ -9,7 +9,8 @@ import xarray as xr
 from stickslip.analysis.sweep import align_chunks, chunk_dataset, chunk_points, merge_chunks, run_points
 from stickslip.pipeline.config import ConfigError, validate_config
 from stickslip.pipeline.config import load_config as load_files
-from stickslip.studies import specs as dmc
+from stickslip.schema import PipelineConfig
+from stickslip.studies.specs import dense_map as resolved_map
 
 from project_run import ROOT, copy_project, run_snakemake
 
@@ -27,6 +28,12 @@ def small_config(**changes):
     return config
 
 
+def dense_map(config, name):
+    """``dense_map.maps.<name>`` of a config mapping, as the map's jobs resolve it (typed first)."""
+    typed = PipelineConfig.model_validate(config)
+    return resolved_map(typed.onedof, typed.dense_map, name)
+
+
 def build(dm, chunk_size):
     parts = []
     for c in range(-(-dm.points // chunk_size)):
@@ -36,7 +43,7 @@ def build(dm, chunk_size):
 
 
 def test_default_map_is_the_consistent_reading_with_caption_sigma_and_exact_solver():
-    dm = dmc.dense_map(load_config(), "speed_damping")
+    dm = dense_map(load_config(), "speed_damping")
     assert dm.spec.variant == "consistent" and dm.spec.params.sigma == 0.5
     assert dm.spec.solver_settings["solver"] == "exact"
     assert [a.name for a in dm.axes] == ["belt_velocity", "damping"]
@@ -44,7 +51,7 @@ def test_default_map_is_the_consistent_reading_with_caption_sigma_and_exact_solv
 
 
 def test_chunked_map_equals_unchunked_and_single_runs():
-    dm = dmc.dense_map(small_config(), "speed_damping")
+    dm = dense_map(small_config(), "speed_damping")
     assert dm.chunks == 3  # 12 points in chunks of 5: the last one is short
     whole, chunked = build(dm, dm.points), build(dm, dm.chunk_size)
     xr.testing.assert_identical(whole, chunked)
@@ -64,7 +71,7 @@ def test_chunked_map_equals_unchunked_and_single_runs():
 
 
 def test_a_chunk_of_failed_runs_merges_as_nan():
-    dm = dmc.dense_map(small_config(), "speed_damping")
+    dm = dense_map(small_config(), "speed_damping")
     good = build(dm, dm.points)
     flat = [
         chunk_dataset(
@@ -197,7 +204,7 @@ def test_a_map_with_the_readings_own_affine_law_matches_the_exact_map():
     """Issue 13 item 6: a map accepts any friction law. Given the reading's own affine law (mu_s 0.5,
     sigma 0.5), the switch-solver map must reproduce the exact solver's map of the same grid."""
     config = with_law(small_config(), {"kind": "affine", "mu_s": 0.5, "sigma": 0.5})
-    exact, switch = dmc.dense_map(config, "speed_damping"), dmc.dense_map(config, "with_law")
+    exact, switch = dense_map(config, "speed_damping"), dense_map(config, "with_law")
     assert switch.law is not None and switch.spec.solver_settings["solver"] == "switch"
     a, b = build(exact, exact.points), build(switch, switch.points)
     assert int(a.solver_ok.sum()) == a.solver_ok.size and int(b.solver_ok.sum()) == b.solver_ok.size
@@ -218,8 +225,8 @@ def test_a_map_with_the_readings_own_affine_law_matches_the_exact_map():
 
 def test_a_nonlinear_law_changes_the_map():
     config = with_law(small_config(), {"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.3, "v_s": 0.5})
-    affine = build(dmc.dense_map(config, "speed_damping"), 12)
-    stribeck = build(dmc.dense_map(config, "with_law"), 12)
+    affine = build(dense_map(config, "speed_damping"), 12)
+    stribeck = build(dense_map(config, "with_law"), 12)
     assert not np.allclose(stribeck.amplitude_peak_to_peak.values, affine.amplitude_peak_to_peak.values)
 
 

@@ -144,12 +144,12 @@ def test_the_window_member_reuses_the_base_solve_and_equals_a_fresh_one(repo_roo
     import dataclasses
 
     from stickslip.pipeline.config import load_config
+    from stickslip.schema import Onedof
     from stickslip.studies import onedof
     from stickslip.studies.specs import run_spec
 
-    spec = run_spec(
-        load_config([repo_root / "config" / "config.yaml"]), "fig02", "consistent_caption", "exact"
-    )
+    section = Onedof.model_validate(load_config([repo_root / "config" / "config.yaml"])["onedof"])
+    spec = run_spec(section, "fig02", "consistent_caption", "exact")
     later = dataclasses.replace(spec, transient=1.5 * spec.transient)
     onedof._SOLVES.clear()
     fresh = onedof.scene_run_dataset(later)

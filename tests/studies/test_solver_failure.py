@@ -79,11 +79,12 @@ def test_written_dataset_keeps_its_own_attributes(good, tmp_path):
 def scene_run(repo_root):
     """The build's own code path: one scene x reading of the repository's config, solved and measured."""
     from stickslip.pipeline.config import load_config
+    from stickslip.schema import Onedof
     from stickslip.studies.onedof import scene_run_dataset
     from stickslip.studies.specs import run_spec
 
-    config = load_config([repo_root / "config" / "config.yaml"])
-    return lambda scene, reading: scene_run_dataset(run_spec(config, scene, reading, "exact"))
+    onedof = Onedof.model_validate(load_config([repo_root / "config" / "config.yaml"])["onedof"])
+    return lambda scene, reading: scene_run_dataset(run_spec(onedof, scene, reading, "exact"))
 
 
 def test_a_diverging_scene_is_the_models_answer_with_its_mechanism_from_closed_form(scene_run):

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from stickslip.pipeline.config import load_config
+from stickslip.schema import Onedof
 from stickslip.studies.onedof import critical_speed_dataset, eq6_dataset, friction_table_dataset
 from stickslip.studies.specs import baseline_spec, run_spec
 
@@ -14,7 +15,7 @@ from project_run import ROOT
 
 @pytest.fixture(scope="module")
 def config():
-    return load_config(sorted((ROOT / "config").glob("*.yaml")))
+    return Onedof.model_validate(load_config(sorted((ROOT / "config").glob("*.yaml")))["onedof"])
 
 
 @pytest.mark.parametrize("reading", ["consistent_caption", "plateau_text"])

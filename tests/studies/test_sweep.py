@@ -107,9 +107,10 @@ def _sweep_config(law=None, method="switch"):
 def test_a_sweep_with_the_readings_own_affine_law_matches_the_exact_sweep():
     """Issue 13 item 6: sweeps accept any friction law; given the reading's own affine law the switch-solver
     sweep reproduces the exact solver's (paper values and their time series)."""
+    from stickslip.schema import Onedof
     from stickslip.studies.onedof import sweep_from_config
 
-    config = _sweep_config({"kind": "affine", "mu_s": 0.5, "sigma": 0.5})
+    config = Onedof.model_validate(_sweep_config({"kind": "affine", "mu_s": 0.5, "sigma": 0.5})["onedof"])
     exact = sweep_from_config(config, sweep="fig12", reading="consistent_caption", dense=False)
     switch = sweep_from_config(config, sweep="with_law", reading="consistent_caption", dense=False)
     assert "affine" in switch.attrs["friction_law"].lower()

@@ -12,7 +12,6 @@ import stickslip.catalogue as paths
 from stickslip.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
 from stickslip.studies.fe_config import effective_fe_config, job_config as fe_job_config
-from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = [paths.friction_table("csv")]
@@ -233,11 +232,6 @@ def onedof_runs():
     return {scene: sorted(pairs) for scene, pairs in sorted(runs.items())}
 
 
-def onedof_batch_subconfig(scene, runs):
-    """The config one scene's batch job reads (only its readings and methods)."""
-    return onedof_subconfig([r for r, _ in runs], scene, [m for _, m in runs])
-
-
 def figure_datasets(figure):
     fig = CFG.onedof.figures[figure]
     return [onedof_dataset(fig.scene, r, m) for r in fig.readings for m in fig.methods]
@@ -297,15 +291,8 @@ def fe_scene_of(path):
 # -- sweeps and maps ----------------------------------------------------------------------------------
 
 
-def dense_map_chunks(wildcards):
-    return [
-        paths.dense_map_chunk(wildcards.map, chunk)
-        for chunk in range(dense_map(config, wildcards.map).chunks)
-    ]
-
-
 def dense_map_subconfig(name):
-    """Everything ``dense_map(config, name)`` reads: the map, the default chunk size and the 1-DOF scene,
+    """Everything ``studies.specs.dense_map`` reads: the map, the default chunk size and the 1-DOF scene,
     reading and method it runs (a job re-runs when any of them changes)."""
     entry = CFG.dense_map.maps[name]
     sub = onedof_subconfig(entry.reading, entry.scene, entry.method)

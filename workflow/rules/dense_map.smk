@@ -1,8 +1,9 @@
 # Dense parameter maps (issue 7): a grid of exact-solver runs split into chunks, one job per chunk, merged
 # into one netCDF per map with the swept parameters as dimensions. Sizes live in config/dense_map.yaml.
-from stickslip.studies.specs import dense_map
+from stickslip.studies.specs import dense_map_job
 
-DENSE_MAPS = {name: dense_map(config, name) for name in config["dense_map"]["maps"]}
+#: Each map as its jobs resolve it, from the params they are given (dense_map_subconfig).
+DENSE_MAPS = {name: dense_map_job(dense_map_subconfig(name), name) for name in config["dense_map"]["maps"]}
 DENSE_RESOURCES = config["dense_map"]["resources"]
 
 
@@ -31,7 +32,7 @@ rule dense_map_chunk:
 rule dense_map_merge:
     """All chunks of a map as one dataset with one dimension per swept parameter."""
     input:
-        dense_map_chunks,
+        lambda wc: [paths.dense_map_chunk(wc.map, c) for c in range(DENSE_MAPS[wc.map].chunks)],
     output:
         **outputs("dense_map_merge", name="{map}"),
     log:

@@ -16,9 +16,9 @@ for _scene, _runs in onedof_runs().items():
         conda:
             CONDA_ENV
         params:
-            config=onedof_batch_subconfig(_scene, _runs),
             scene=_scene,
             runs=_runs,
+            configs=[onedof_subconfig(r, _scene, m) for r, m in _runs],  # what each run reads and perturbs
             ensemble=ENSEMBLE,
             ensemble_outputs=sorted(CLAIMED_DATASETS & {onedof_dataset(_scene, r, m) for r, m in _runs}),
         script:
@@ -66,7 +66,6 @@ rule friction_table:
     conda:
         CONDA_ENV
     params:
-        table=canonical(ONEDOF["friction_table"]),
         config=onedof_subconfig(
             ONEDOF["friction_table"]["reading"],
             ONEDOF["friction_table"]["scene"],

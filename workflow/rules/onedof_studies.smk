@@ -93,7 +93,6 @@ rule critical_speed:
             BASELINE["method"],
             study="critical_speed",
         ),
-        readings=CRITICAL_READINGS,
         ensemble=ENSEMBLE,
         ensemble_outputs=sorted(CLAIMED_DATASETS & set(products_of("critical_speed"))),
     script:

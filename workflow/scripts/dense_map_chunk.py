@@ -6,11 +6,11 @@ import time
 from stickslip.analysis.sweep import chunk_dataset, chunk_points
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file, step_callback
-from stickslip.studies.specs import dense_map
+from stickslip.studies.specs import dense_map_job
 
 log_to_file(snakemake.log[0])  # noqa: F821
 name, chunk = snakemake.wildcards.map, int(snakemake.wildcards.chunk)  # noqa: F821
-dm = dense_map(snakemake.params.config, name)  # noqa: F821
+dm = dense_map_job(snakemake.params.config, name)  # noqa: F821
 points = chunk_points(dm.axes, dm.chunk_size, chunk)
 logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chunks, len(points), dm.points)
 start = time.perf_counter()

@@ -7,21 +7,27 @@ matplotlib.use("Agg")
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
 from stickslip.presentation.plots import eq6_figure  # noqa: E402
+from stickslip.schema import OnedofJob  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
-from stickslip.studies.specs import PERTURBED_FIELDS, baseline_spec  # noqa: E402
+from stickslip.studies.specs import PERTURBED_FIELDS, baseline_spec, from_job_params  # noqa: E402
 
-config = snakemake.params.config
-ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # closed form: no BLAS
+params = snakemake.params  # noqa: F821
+onedof = OnedofJob.model_validate(params.config).onedof
+ensemble = EnsembleSpec.from_mapping(params.ensemble).without_blas()  # closed form: no BLAS
 ds = ensemble_dataset(
-    eq6_from_config, config, ensemble, run_id=snakemake.output.nc, fields=PERTURBED_FIELDS
+    from_job_params(eq6_from_config),
+    params.config,
+    ensemble,
+    run_id=snakemake.output.nc,
+    fields=PERTURBED_FIELDS,
 )
 write_dataset(
     ds,
     snakemake.output.nc,
-    scene=baseline_spec(config).scene_attrs(),
+    scene=baseline_spec(onedof).scene_attrs(),
     interpretation={
         "equation": "Eq. 6 as printed and dimensionally correct",
-        "force": config["onedof"]["eq6"].get("force", "mu_s N"),
+        "force": onedof.eq6.force,
         "units": "as_given (and si for the *_si peak)",
     },
     method={"name": "closed form"},

@@ -9,20 +9,24 @@ from functools import partial
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file, step_callback
+from stickslip.schema import OnedofJob
 from stickslip.studies.onedof import sweep_from_config
-from stickslip.studies.specs import PERTURBED_FIELDS, sweep_spec
+from stickslip.studies.specs import PERTURBED_FIELDS, from_job_params, sweep_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
-reading, config = snakemake.wildcards.reading, snakemake.params.config
-ensemble = EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas()  # 1-DOF: no BLAS
-for (sweep, dense), path in zip(snakemake.params.runs, snakemake.output, strict=True):
+reading, params = snakemake.wildcards.reading, snakemake.params  # noqa: F821
+onedof = OnedofJob.model_validate(params.config).onedof
+ensemble = EnsembleSpec.from_mapping(params.ensemble).without_blas()  # 1-DOF: no BLAS
+for (sweep, dense), path in zip(params.runs, snakemake.output, strict=True):  # noqa: F821
     name = f"{sweep}_dense" if dense else sweep
-    spec = sweep_spec(config, sweep, reading)
+    spec = sweep_spec(onedof, sweep, reading)
     progress = partial(step_callback, f"sweep {name}", sink=logging.info)
     ds = ensemble_dataset(
-        partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress),
-        config,
-        ensemble if path in snakemake.params.ensemble_outputs else None,
+        from_job_params(
+            partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress)
+        ),
+        params.config,
+        ensemble if path in params.ensemble_outputs else None,
         run_id=path,
         fields=PERTURBED_FIELDS,
     )

@@ -109,9 +109,9 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
         raise ConfigError(typed_errors(exc)) from None
     try:
         _check_ensemble(config)
-        _check_onedof(config)
+        _check_onedof(typed)
         check_methods_config(config["methods_study"])
-        _check_dense_maps(config)
+        _check_dense_maps(typed)
         from ..studies.fe_config import effective_fe_config
 
         check_fe_config(
@@ -161,26 +161,26 @@ def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> 
                 raise ConfigError(f"inverse.figures.{name}.claims: {claim!r} is not a claim id")
 
 
-def _check_onedof(config: dict) -> None:
+def _check_onedof(typed: PipelineConfig) -> None:
     """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
     from ..studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
 
-    onedof = config["onedof"]
-    for figure in onedof["figures"]:
-        for scene, reading, method in figure_runs(config, figure):
-            run_spec(config, scene, reading, method)
-    for sweep in onedof.get("sweeps", {}):
-        for reading in config["claims"]["readings"]:
-            sweep_spec(config, sweep, reading)
-    for reading in (onedof.get("critical_speed") or {}).get("readings", []):
-        baseline_spec(config, reading)
+    onedof = typed.onedof
+    for figure in onedof.figures.values():
+        for scene, reading, method in figure_runs(figure):
+            run_spec(onedof, scene, reading, method)
+    for sweep in onedof.sweeps:
+        for reading in typed.claims.readings:
+            sweep_spec(onedof, sweep, reading)
+    for reading in onedof.critical_speed.readings if onedof.critical_speed else []:
+        baseline_spec(onedof, reading)
 
 
-def _check_dense_maps(config: dict) -> None:
+def _check_dense_maps(typed: PipelineConfig) -> None:
     from ..studies.specs import dense_map
 
-    for name in config["dense_map"]["maps"]:
-        dense_map(config, name)
+    for name in typed.dense_map.maps:
+        dense_map(typed.onedof, typed.dense_map, name)
 
 
 #: Beam element-increments (elements x explicit steps) a build may run without ``allow_expensive: true``.

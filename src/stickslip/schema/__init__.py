@@ -38,7 +38,9 @@ from .base import (  # noqa: F401  (re-exported)
     needs_switch,
 )
 from .dense_map import (  # noqa: F401  (re-exported)
+    DEFAULT_PLOT,
     DenseMapEntry,
+    DenseMapJob,
     DenseMapResources,
     DenseMaps,
     MapAxis,
@@ -99,6 +101,9 @@ from .onedof import (  # noqa: F401  (re-exported)
     Notebook,
     Onedof,
     OnedofDefaults,
+    OnedofJob,
+    OnedofProject,
+    OnedofRuns,
     Reading,
     RunLengths,
     Scene,
@@ -106,6 +111,7 @@ from .onedof import (  # noqa: F401  (re-exported)
     SweepFigure,
     check_run_lengths,
     merged_run_lengths,
+    scene_run_lengths,
 )
 from .validation import (  # noqa: F401  (re-exported)
     LawTiming,
@@ -134,7 +140,8 @@ MAX_ENSEMBLE_SEEDS = 100
 MAX_FE_ELEMENTS = 20_000
 
 
-def _samples(t_end: float, output_dt: float) -> int:
+def stored_samples(t_end: float, output_dt: float) -> int:
+    """Samples a run of ``t_end`` stores every ``output_dt`` (both ends included): what the guard counts."""
     return int(t_end / output_dt) + 1
 
 
@@ -150,22 +157,22 @@ def estimated_costs(cfg: PipelineConfig) -> list[tuple[str, str, float, float]]:
         for rname, reading in onedof.readings.items():
             dt = reading.output_dt or run["output_dt"]
             key = f"onedof.scenes.{name} (reading {rname})"
-            out.append((key, "samples per run", _samples(run["t_end"], dt), MAX_SAMPLES_PER_RUN))
+            out.append((key, "samples per run", stored_samples(run["t_end"], dt), MAX_SAMPLES_PER_RUN))
     for name, sweep in onedof.sweeps.items():
         scene = onedof.scenes.get(sweep.scene or onedof.baseline.scene)
         run, _ = merged_run_lengths([("d", onedof.defaults), ("s", scene)])
         points = (len(sweep.values) + sweep.dense.num) * len(cfg.claims.readings)
-        per_run = _samples(run["t_end"], run["output_dt"])
+        per_run = stored_samples(run["t_end"], run["output_dt"])
         out.append((f"onedof.sweeps.{name}.dense.num", "samples", points * per_run, MAX_SAMPLES_PER_STUDY))
     for name, m in cfg.dense_map.maps.items():
         scene = onedof.scenes.get(m.scene)
         run, _ = merged_run_lengths([("d", onedof.defaults), ("s", scene), ("m", m)])
         points = math.prod(a.size for a in m.axes)
-        per_run = _samples(run["t_end"], run["output_dt"])
+        per_run = stored_samples(run["t_end"], run["output_dt"])
         out.append((f"dense_map.maps.{name}.axes", "samples", points * per_run, MAX_SAMPLES_PER_STUDY))
     if onedof.critical_speed is not None:
         cs = onedof.critical_speed
-        per_run = _samples(cs.t_end, onedof.defaults.output_dt)
+        per_run = stored_samples(cs.t_end, onedof.defaults.output_dt)
         out.append(("onedof.critical_speed.num", "samples", cs.num * per_run, MAX_SAMPLES_PER_STUDY))
     fe = cfg.fe
     beams = [("fe.defaults", fe.defaults.beam)]

@@ -7,7 +7,10 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from .base import DEFAULT_MAX_CHUNKS, Finite, Names, Open, Section, belt_parameter, linked_parameters
-from .onedof import Law, RunLengths
+from .onedof import Law, OnedofJob, RunLengths
+
+#: The metrics a dense map's figure shows unless its ``plot`` names others (one panel each).
+DEFAULT_PLOT = ("amplitude_peak_to_peak", "frequency_peaks", "stick_fraction")
 
 
 class MapAxis(Section):
@@ -18,10 +21,10 @@ class MapAxis(Section):
     start: Finite | None = None
     stop: Finite | None = None
     num: Annotated[int, Field(ge=1)] | None = None
-    spacing: Literal["linear", "log"] | None = None
-    units: str | None = None
-    long_name: str | None = None
-    linked: dict[str, Finite] | None = None
+    spacing: Literal["linear", "log"] = "linear"
+    units: str = ""
+    long_name: str = ""
+    linked: dict[str, Finite] = Field({}, description="parameters set to factor x the swept value")
 
     _name = field_validator("name")(belt_parameter)
     _linked = field_validator("linked")(linked_parameters)
@@ -51,8 +54,8 @@ class DenseMapEntry(RunLengths):
     reading: str
     method: str
     law: Law | None = None
-    chunk_size: Annotated[int, Field(ge=1)] | None = None
-    plot: Names | None = None
+    chunk_size: Annotated[int, Field(ge=1)] | None = Field(None, description="default: dense_map.chunk_size")
+    plot: Names = list(DEFAULT_PLOT)
     axes: Annotated[list[MapAxis], Field(min_length=1)]
 
     @model_validator(mode="after")
@@ -99,3 +102,9 @@ class DenseMaps(Section):
                     f"max_chunks = {limit}; use at least {math.ceil(points / limit)} points per chunk"
                 )
         return self
+
+
+class DenseMapJob(OnedofJob):
+    """A dense-map job's params mapping: the 1-DOF run it starts from and the section with only its map."""
+
+    dense_map: DenseMaps

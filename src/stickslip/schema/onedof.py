@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from .base import (
     Finite,
@@ -105,8 +105,8 @@ class Method(Open):
 
 
 class Scene(RunLengths):
-    figure: str | None = None
-    description: str | None = None
+    figure: str = ""
+    description: str = ""
     params: BeltParameters | None = None
     law: Law | None = None  # any friction law replacing the reading's (as in sweeps; switch solver only)
 
@@ -120,7 +120,7 @@ class Eq6(Section):
     paper_figures: PaperFigures = []
     f_max: Positive
     points: Annotated[int, Field(ge=10)]
-    force: str | None = None
+    force: str = Field("mu_s N", description="what the friction force F of Eq. 6 is taken to be")
 
 
 class Law(Open):
@@ -133,7 +133,7 @@ class DenseRange(Section):
     start: Finite
     stop: Finite
     num: Annotated[int, Field(ge=2)]
-    spacing: Literal["linear", "log"] | None = None  # the same key as a dense map's axis
+    spacing: Literal["linear", "log"] = "linear"  # the same key as a dense map's axis
 
     @model_validator(mode="after")
     def ordered(self):
@@ -145,14 +145,14 @@ class DenseRange(Section):
 
 
 class Sweep(Section):
-    figure: str | None = None
+    figure: str = ""
     scene: str | None = None
     method: str | None = None
     parameter: str
-    units: str | None = None
-    long_name: str | None = None
+    units: str = "1"
+    long_name: str | None = Field(None, description="default: the parameter's name")
     values: Annotated[list[Finite], Field(min_length=1)]
-    linked: dict[str, Finite] | None = None
+    linked: dict[str, Finite] = Field({}, description="parameters set to factor x the swept value")
     law: Law | None = None
     dense: DenseRange
 
@@ -197,7 +197,7 @@ class Figure(Section):
     title: str | None = None
     paper_figures: PaperFigures = []
     scene: str
-    plot: Literal["timeseries", "phase", "velocity"] | None = None
+    plot: Literal["timeseries", "phase", "velocity"] = "timeseries"
     readings: Names
     methods: Names
 
@@ -210,7 +210,11 @@ class Baseline(Section):
     method: str
 
 
-class Onedof(Section):
+class OnedofRuns(Section):
+    """What a 1-DOF job reads (its params, ``onedof_subconfig``): the baseline, the defaults, some readings,
+    methods and scenes and a study's section. A part of the section, so names referring to entries left out
+    are not checked here: the whole section (``Onedof``) was checked at parse time."""
+
     baseline: Baseline
     defaults: OnedofDefaults
     readings: Annotated[dict[str, Reading], Field(min_length=1)]
@@ -218,8 +222,28 @@ class Onedof(Section):
     scenes: Annotated[dict[str, Scene], Field(min_length=1)]
     eq6: Eq6 | None = None
     sweeps: dict[str, Sweep] = {}
-    sweep_figures: dict[str, SweepFigure] = {}
     critical_speed: CriticalSpeed | None = None
+    friction_table: FrictionTable | None = None
+
+
+def scene_run_lengths(onedof: OnedofRuns, scene: str, reading: str) -> tuple[dict, dict]:
+    """(values, key each came from) of a scene's run under a reading: the defaults, then the scene's own,
+    then the reading's ``output_dt``."""
+    layers = [
+        (f"onedof.scenes.{scene}", onedof.scenes[scene]),
+        (f"onedof.readings.{reading}", onedof.readings[reading]),
+    ]
+    return merged_run_lengths([("onedof.defaults", onedof.defaults), *layers])
+
+
+class OnedofJob(Section):
+    """A 1-DOF job's params mapping (``{"onedof": ...}``), the mapping the perturbation ensemble perturbs."""
+
+    onedof: OnedofRuns
+
+
+class Onedof(OnedofRuns):
+    sweep_figures: dict[str, SweepFigure] = {}
     friction_table: FrictionTable
     figures: dict[str, Figure]
 
@@ -256,17 +280,9 @@ class Onedof(Section):
         for name, fig in self.figures.items():  # a scene with its own law runs only under the switch solver
             for method in fig.methods:
                 needs_switch(f"onedof.figures.{name}", self.scenes[fig.scene].law, method, self.methods)
-        for name, scene in self.scenes.items():
-            for rname, reading in self.readings.items():
-                check_run_lengths(
-                    *merged_run_lengths(
-                        [
-                            ("onedof.defaults", self.defaults),
-                            (f"onedof.scenes.{name}", scene),
-                            (f"onedof.readings.{rname}", reading),
-                        ]
-                    )
-                )
+        for scene in self.scenes:
+            for reading in self.readings:
+                check_run_lengths(*scene_run_lengths(self, scene, reading))
         return self
 
 
@@ -310,3 +326,16 @@ class Notebook(Section):
     inputs: list[str] | None = Field(
         None, description="{reading}: each claims reading; {critical_reading}: each critical-speed reading"
     )
+
+
+class OnedofProject(BaseModel):
+    """The sections of the project config that a 1-DOF run of your own (``stickslip.simulate``) and the
+    command line read; the others are left to the whole config's check (which also resolves every FE scene
+    and study: seconds a single run does not need)."""
+
+    model_config = ConfigDict(extra="ignore", strict=True)
+
+    onedof: Onedof
+    claims: Claims
+    ensemble: Ensemble | None = None
+    allow_expensive: bool = False

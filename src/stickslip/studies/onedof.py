@@ -18,6 +18,7 @@ from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import effective_mass
+from ..schema import OnedofRuns
 from .specs import RunSpec, SweepSpec, baseline_spec, run_spec, sweep_spec
 
 
@@ -206,11 +207,12 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
     return ds
 
 
-def sweep_from_config(config: dict, *, sweep: str, reading: str, dense: bool, progress=None) -> xr.Dataset:
-    """``sweep_dataset`` of ``onedof.sweeps.<sweep>`` for a reading, resolved from a config mapping.
-    ``progress`` is a factory of a fresh ``progress(done, total)`` callback (one per call: an ensemble calls
-    this once per member)."""
-    return sweep_dataset(sweep_spec(config, sweep, reading), dense, progress() if progress else None)
+def sweep_from_config(
+    onedof: OnedofRuns, *, sweep: str, reading: str, dense: bool, progress=None
+) -> xr.Dataset:
+    """``sweep_dataset`` of ``onedof.sweeps.<sweep>`` for a reading. ``progress`` is a factory of a fresh
+    ``progress(done, total)`` callback (one per call: an ensemble calls this once per member)."""
+    return sweep_dataset(sweep_spec(onedof, sweep, reading), dense, progress() if progress else None)
 
 
 CRITICAL_UNITS = {
@@ -264,12 +266,11 @@ def critical_speed_dataset(spec: RunSpec, speeds: np.ndarray, t_end: float, tran
     return ds
 
 
-def critical_speed_from_config(config: dict, *, reading: str) -> xr.Dataset:
+def critical_speed_from_config(onedof: OnedofRuns, *, reading: str) -> xr.Dataset:
     """``critical_speed_dataset`` of the baseline scene under ``onedof.critical_speed`` for a reading."""
-    cfg = config["onedof"]["critical_speed"]
-    speeds = np.geomspace(float(cfg["start"]), float(cfg["stop"]), int(cfg["num"]))
-    spec = baseline_spec(config, reading)
-    return critical_speed_dataset(spec, speeds, float(cfg["t_end"]), float(cfg["transient"]))
+    study = onedof.critical_speed
+    speeds = np.geomspace(study.start, study.stop, study.num)
+    return critical_speed_dataset(baseline_spec(onedof, reading), speeds, study.t_end, study.transient)
 
 
 def friction_table_dataset(spec: RunSpec, bins: int) -> xr.Dataset:
@@ -316,10 +317,15 @@ def friction_table_dataset(spec: RunSpec, bins: int) -> xr.Dataset:
     )
 
 
-def friction_table_from_config(config: dict, *, table: dict) -> xr.Dataset:
+def friction_table_from_config(onedof: OnedofRuns) -> xr.Dataset:
     """``friction_table_dataset`` of the run ``onedof.friction_table`` names (scene, reading, method)."""
-    spec = run_spec(config, table["scene"], table["reading"], table["method"])
-    return friction_table_dataset(spec, int(table["bins"]))
+    return friction_table_dataset(friction_table_spec(onedof), onedof.friction_table.bins)
+
+
+def friction_table_spec(onedof: OnedofRuns) -> RunSpec:
+    """The run ``onedof.friction_table`` names: the 1-DOF cycle the FE scenes' friction law comes from."""
+    table = onedof.friction_table
+    return run_spec(onedof, table.scene, table.reading, table.method)
 
 
 def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
@@ -362,8 +368,6 @@ def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
     )
 
 
-def eq6_from_config(config: dict) -> xr.Dataset:
+def eq6_from_config(onedof: OnedofRuns) -> xr.Dataset:
     """``eq6_dataset`` of the baseline scene with ``onedof.eq6`` (f_max, points)."""
-    cfg = config["onedof"]["eq6"]
-    spec = baseline_spec(config)
-    return eq6_dataset(spec, float(cfg["f_max"]), int(cfg["points"]))
+    return eq6_dataset(baseline_spec(onedof), onedof.eq6.f_max, onedof.eq6.points)

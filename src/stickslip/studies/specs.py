@@ -1,8 +1,9 @@
 """From the validated config to run specifications: scene x reading x method, a sweep, a dense map.
 
-The config has been checked by the typed layer (``stickslip.pipeline.config.validate_config``: types, bounds,
-references between sections, which solver a friction law needs) before anything here runs. What is left is
-resolution: merge defaults, scene, reading and method into a ``RunSpec`` and build the science objects
+Each function takes the typed section it reads (``stickslip.schema``: ``Onedof``, or a job's part of it,
+``OnedofRuns``), checked before anything here runs (``stickslip.pipeline.config.validate_config``: types,
+bounds, references between sections, which solver a friction law needs). What is left is resolution:
+merge defaults, scene, reading and method into a ``RunSpec`` and build the science objects
 (``BeltParams``, the solver, a friction law), whose constructors check physics; their errors are re-keyed
 to the config path they came from, so ``validate_config`` (which resolves every run at parse time) names it.
 """
@@ -10,7 +11,9 @@ to the config path they came from, so ``validate_config`` (which resolves every 
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 
@@ -19,6 +22,18 @@ from ..analysis.sweep import SweepAxis, chunk_count, grid_size, run_points
 from ..model.equations import BeltModel
 from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
+from ..schema import (
+    DenseMapJob,
+    DenseMaps,
+    DenseRange,
+    Figure,
+    Law,
+    MapAxis,
+    OnedofJob,
+    OnedofRuns,
+    merged_run_lengths,
+    scene_run_lengths,
+)
 from ..solvers import make_solver
 from ..solvers.base import sample_times
 from ..solvers.budget import BudgetedSolver
@@ -46,10 +61,10 @@ PERTURBED_FIELDS = (
     "critical_speed.stop",
 )
 
-#: Run-length keys a scene (or a dense map) sets over ``onedof.defaults``.
-RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 #: Keys a reading may set on top of a scene's parameters (which sigma, which units, a friction plateau).
 READING_PARAMS = ("sigma", "units", "plateau_speed")
+
+T = TypeVar("T")
 
 EQUATIONS = {
     "eq3_printed": "Eq. 3 as printed: F = mu_s N (sgn(v_r) - sigma v_r)",
@@ -135,68 +150,62 @@ class RunSpec:
         return out
 
 
-def run_config(config: dict, reading: str, method: str) -> dict:
-    """The config with only ``reading`` and ``method`` of the 1-DOF readings and methods: what one run reads.
-    An ensemble of the run perturbs this, so another method's step settings (an ode45 rtol beside an exact
-    run) never make a ``step`` member that repeats the run unchanged."""
-    onedof = dict(config["onedof"])
-    onedof["readings"] = {reading: onedof["readings"][reading]}
-    onedof["methods"] = {method: onedof["methods"][method]}
-    return {**config, "onedof": onedof}
+def from_job_params(build: Callable[[OnedofRuns], T]) -> Callable[[Mapping], T]:
+    """``build`` of the typed section as a function of a job's params mapping (``OnedofJob``): the mapping
+    the perturbation ensemble perturbs, typed once per member."""
+    return lambda params: build(OnedofJob.model_validate(params).onedof)
 
 
-def run_spec(config: dict, scene: str, reading: str, method: str) -> RunSpec:
+def run_spec(onedof: OnedofRuns, scene: str, reading: str, method: str) -> RunSpec:
     """Scene parameters over the defaults, the reading's interpretation over them, and the method."""
-    onedof = config["onedof"]
-    defaults, scene_cfg = onedof["defaults"], onedof["scenes"][scene]
-    reading_cfg, method_cfg = onedof["readings"][reading], onedof["methods"][method]
-    params = {**defaults.get("params", {}), **(scene_cfg.get("params") or {})}
-    params.update({k: reading_cfg[k] for k in READING_PARAMS if k in reading_cfg})
+    defaults, scene_cfg = onedof.defaults, onedof.scenes[scene]
+    reading_cfg, method_cfg = onedof.readings[reading], onedof.methods[method]
+    params = defaults.params.model_dump(exclude_none=True)
+    params |= scene_cfg.params.model_dump(exclude_none=True) if scene_cfg.params else {}
+    params |= reading_cfg.model_dump(include=set(READING_PARAMS), exclude_none=True)
     try:
         belt = BeltParams.from_mapping(params)
     except ParameterError as exc:
         raise ParameterError(f"onedof.scenes.{scene}.params.{exc}") from None
-    run = {k: defaults[k] for k in RUN_LENGTHS if k in defaults}
-    run |= {k: scene_cfg[k] for k in RUN_LENGTHS if k in scene_cfg}
-    run |= {k: reading_cfg[k] for k in ("output_dt",) if k in reading_cfg}
+    run, _ = scene_run_lengths(onedof, scene, reading)
     spec = RunSpec(
         scene=scene,
         reading=reading,
         method=method,
         params=belt,
-        variant=reading_cfg["variant"],
+        variant=reading_cfg.variant,
         t_end=float(run["t_end"]),
         output_dt=float(run["output_dt"]),
         transient=float(run.get("transient", 0.0)),
         count_window=float(run.get("count_window", PAPER_COUNT_WINDOW)),
-        solver_settings=dict(method_cfg),
-        figure=str(scene_cfg.get("figure") or ""),
-        description=str(scene_cfg.get("description") or ""),
-        law=_law(scene_cfg, f"onedof.scenes.{scene}"),
+        # sorted: a dataset's method attributes do not depend on the order the config lists the settings in
+        solver_settings=dict(sorted(method_cfg.model_dump(exclude_none=True).items())),
+        figure=scene_cfg.figure,
+        description=scene_cfg.description,
+        law=_law(scene_cfg.law, f"onedof.scenes.{scene}"),
     )
     spec.solver()  # the solver checks its settings at construction: fail now, naming the method
-    if spec.law is not None and spec.solver_settings.get("solver") != "switch":
+    if spec.law is not None and method_cfg.solver != "switch":
         raise ParameterError(
             f"onedof.scenes.{scene}.law: a {spec.law.kind!r} friction law is solved by the 'switch' solver "
-            f"only; method {method!r} uses {spec.solver_settings.get('solver')!r}"
+            f"only; method {method!r} uses {method_cfg.solver!r}"
         )
     return spec
 
 
-def baseline_spec(config: dict, reading: str | None = None) -> RunSpec:
+def baseline_spec(onedof: OnedofRuns, reading: str | None = None) -> RunSpec:
     """The paper's baseline run (``onedof.baseline``), under its own reading or ``reading``."""
-    base = config["onedof"]["baseline"]
-    return run_spec(config, base["scene"], reading or base["reading"], base["method"])
+    base = onedof.baseline
+    return run_spec(onedof, base.scene, reading or base.reading, base.method)
 
 
-def figure_runs(config: dict, figure: str) -> list[tuple[str, str, str]]:
+def figure_runs(figure: Figure) -> list[tuple[str, str, str]]:
     """(scene, reading, method) triples a figure needs."""
-    fig = config["onedof"]["figures"][figure]
-    return [(fig["scene"], r, m) for r in fig["readings"] for m in fig["methods"]]
+    return [(figure.scene, r, m) for r in figure.readings for m in figure.methods]
 
 
-def _law(cfg: dict, key: str) -> FrictionLaw | None:
-    return law_from_config(cfg["law"], key=f"{key}.law") if cfg.get("law") else None
+def _law(law: Law | None, key: str) -> FrictionLaw | None:
+    return law_from_config(law.model_dump(), key=f"{key}.law") if law is not None else None
 
 
 @dataclass(frozen=True)
@@ -229,61 +238,47 @@ class SweepSpec:
         )
 
 
-def sweep_spec(config: dict, sweep: str, reading: str) -> SweepSpec:
+def sweep_spec(onedof: OnedofRuns, sweep: str, reading: str) -> SweepSpec:
     """``onedof.sweeps.<sweep>`` for one reading; every point must make valid parameters."""
-    cfg = config["onedof"]["sweeps"][sweep]
+    cfg = onedof.sweeps[sweep]
     key = f"onedof.sweeps.{sweep}"
-    baseline = config["onedof"]["baseline"]
-    base = run_spec(
-        config, cfg.get("scene") or baseline["scene"], reading, cfg.get("method") or baseline["method"]
-    )
-    dense_cfg = cfg["dense"]
-    scale = dense_cfg.get("spacing") or "linear"
-    spaced = np.geomspace if scale == "log" else np.linspace
-    dense = spaced(float(dense_cfg["start"]), float(dense_cfg["stop"]), int(dense_cfg["num"]))
-    linked = dict(cfg.get("linked") or {})
-    axis = SweepAxis(cfg["parameter"], tuple(dense), linked=linked)
-    for value in [*cfg["values"], dense[0], dense[-1]]:
+    baseline = onedof.baseline
+    base = run_spec(onedof, cfg.scene or baseline.scene, reading, cfg.method or baseline.method)
+    dense = axis_values(cfg.dense)
+    axis = SweepAxis(cfg.parameter, dense, linked=cfg.linked)
+    for value in [*cfg.values, dense[0], dense[-1]]:
         try:
             base.params.with_(**axis.point(value))
         except ParameterError as exc:
-            raise ParameterError(f"{key}.values ({cfg['parameter']} = {value:g}): {exc}") from None
+            raise ParameterError(f"{key}.values ({cfg.parameter} = {value:g}): {exc}") from None
     return SweepSpec(
         name=sweep,
-        figure=str(cfg.get("figure") or ""),
-        parameter=cfg["parameter"],
-        values=tuple(float(v) for v in cfg["values"]),
-        dense=tuple(float(v) for v in dense),
-        linked=linked,
-        units=str(cfg.get("units") or "1"),
-        long_name=str(cfg.get("long_name") or cfg["parameter"]),
+        figure=cfg.figure,
+        parameter=cfg.parameter,
+        values=tuple(cfg.values),
+        dense=dense,
+        linked=dict(cfg.linked),
+        units=cfg.units,
+        long_name=cfg.long_name or cfg.parameter,
         base=base,
-        coord_scale=scale,
-        law=_law(cfg, key),
+        coord_scale=cfg.dense.spacing,
+        law=_law(cfg.law, key),
     )
 
 
 # --- dense maps ---------------------------------------------------------------------------------------------
 
-DEFAULT_PLOT = ("amplitude_peak_to_peak", "frequency_peaks", "stick_fraction")
 
-
-def axis_values(axis: dict) -> tuple[float, ...]:
+def axis_values(axis: MapAxis | DenseRange) -> tuple[float, ...]:
     """An axis's values: listed, or ``num`` points from ``start`` to ``stop`` (``spacing`` linear or log)."""
-    if axis.get("values") is not None:
-        return tuple(float(v) for v in axis["values"])
-    spaced = np.geomspace if axis.get("spacing") == "log" else np.linspace
-    return tuple(float(v) for v in spaced(axis["start"], axis["stop"], axis["num"]))
+    if getattr(axis, "values", None) is not None:
+        return tuple(float(v) for v in axis.values)
+    spaced = np.geomspace if axis.spacing == "log" else np.linspace
+    return tuple(float(v) for v in spaced(axis.start, axis.stop, axis.num))
 
 
-def sweep_axis(axis: dict) -> SweepAxis:
-    return SweepAxis(
-        axis["name"],
-        axis_values(axis),
-        str(axis.get("units") or ""),
-        str(axis.get("long_name") or ""),
-        dict(axis.get("linked") or {}),
-    )
+def sweep_axis(axis: MapAxis) -> SweepAxis:
+    return SweepAxis(axis.name, axis_values(axis), axis.units, axis.long_name, dict(axis.linked))
 
 
 @dataclass(frozen=True)
@@ -348,31 +343,37 @@ class DenseMap:
         }
 
 
-def dense_map(config: dict, name: str) -> DenseMap:
+def dense_map(onedof: OnedofRuns, maps: DenseMaps, name: str) -> DenseMap:
     """``dense_map.maps.<name>``: its base run and axes; both ends of every axis make valid parameters."""
-    section = config["dense_map"]
-    cfg = section["maps"][name]
+    cfg = maps.maps[name]
     key = f"dense_map.maps.{name}"
     try:
-        spec = run_spec(config, cfg["scene"], cfg["reading"], cfg["method"])
+        spec = run_spec(onedof, cfg.scene, cfg.reading, cfg.method)
     except ParameterError as exc:
         raise ParameterError(f"{key} (scene/reading/method): {exc}") from None
-    spec = dataclasses.replace(spec, **{k: float(cfg[k]) for k in RUN_LENGTHS if cfg.get(k) is not None})
-    axes = [sweep_axis(a) for a in cfg["axes"]]
+    lengths, _ = merged_run_lengths([(key, cfg)])  # the map's own run lengths, over the scene's
+    spec = dataclasses.replace(spec, **{k: float(v) for k, v in lengths.items()})
+    axes = [sweep_axis(a) for a in cfg.axes]
     for i, axis in enumerate(axes):
         for value in (min(axis.values), max(axis.values)):
             try:
                 spec.params.with_(**axis.point(value))
             except ParameterError as exc:
                 raise ParameterError(f"{key}.axes[{i}] ({axis.name} = {value:g}): {exc}") from None
-    chunk_size = cfg.get("chunk_size") or section["chunk_size"]
+    chunk_size = cfg.chunk_size or maps.chunk_size
     return DenseMap(
         name=name,
         spec=spec,
         axes=axes,
         chunk_size=chunk_size,
         chunks=chunk_count(axes, chunk_size),
-        title=str(cfg.get("title") or name),
-        plot=tuple(cfg.get("plot") or DEFAULT_PLOT),
-        law=_law(cfg, key),
+        title=cfg.title or name,
+        plot=tuple(cfg.plot),
+        law=_law(cfg.law, key),
     )
+
+
+def dense_map_job(params: Mapping, name: str) -> DenseMap:
+    """The map a dense-map job's params hold (``DenseMapJob``), resolved as its jobs resolve it."""
+    job = DenseMapJob.model_validate(params)
+    return dense_map(job.onedof, job.dense_map, name)
