@@ -280,6 +280,17 @@ def notebook_inputs(name):
     return list(dict.fromkeys(files + [paths.claims_table(), paths.figure_verdicts()]))
 
 
+def notebook_paper_figures(name):
+    """The paper figures a notebook sits beside, from what it shows: the paper figures of each image it
+    reads (the catalogue's, from the config's paper_figures maps) and of the rows of each claims file it
+    reads. A dataset it reads to compare with is not a figure it shows."""
+    inputs = notebook_inputs(name)
+    images = [CATALOGUE[path] for path in inputs if path in CATALOGUE and CATALOGUE[path].kind == "figure"]
+    figures = {n for entry in images for n in entry.figures}
+    figures |= {n for claim in CLAIMS if claim.file in inputs for n in claim.figures}
+    return sorted(figures)
+
+
 def fe_scene_of(path):
     """The FE scene a claim's dataset is a run of (beam in any reading, continuum, continuum window), None
     for any other dataset: looked up in the catalogue."""

@@ -3,8 +3,8 @@
 from stickslip.studies.specs import dense_map_job
 
 #: Each map as its jobs resolve it, from the params they are given (dense_map_subconfig).
-DENSE_MAPS = {name: dense_map_job(dense_map_subconfig(name), name) for name in config["dense_map"]["maps"]}
-DENSE_RESOURCES = config["dense_map"]["resources"]
+DENSE_MAPS = {name: dense_map_job(dense_map_subconfig(name), name) for name in CFG.dense_map.maps}
+DENSE_RESOURCES = CFG.dense_map.resources
 
 
 rule dense_map_chunk:
@@ -22,7 +22,7 @@ rule dense_map_chunk:
         CONDA_ENV
     threads: 1
     resources:
-        **DENSE_RESOURCES.get("dense_map_chunk", {}),
+        **(as_params(DENSE_RESOURCES.dense_map_chunk) or {}),
     params:
         config=lambda wc: dense_map_subconfig(wc.map),  # rerun when anything the map reads changes
     script:
@@ -45,7 +45,7 @@ rule dense_map_merge:
         CONDA_ENV
     threads: 1
     resources:
-        **DENSE_RESOURCES.get("dense_map_merge", {}),
+        **(as_params(DENSE_RESOURCES.dense_map_merge) or {}),
     params:
         config=lambda wc: dense_map_subconfig(wc.map),
     script:
@@ -68,7 +68,7 @@ rule dense_map_figure:
         CONDA_ENV
     threads: 1
     resources:
-        **DENSE_RESOURCES.get("dense_map_figure", {}),
+        **(as_params(DENSE_RESOURCES.dense_map_figure) or {}),
     params:
         plot=lambda wc: list(DENSE_MAPS[wc.map].plot),
         title=lambda wc: DENSE_MAPS[wc.map].title,

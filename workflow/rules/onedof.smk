@@ -25,7 +25,7 @@ for _scene, _runs in onedof_runs().items():
             "../scripts/simulate_onedof.py"
 
 
-for _figure, _spec in ONEDOF["figures"].items():
+for _figure, _spec in CFG.onedof.figures.items():
 
     rule:
         """One paper figure (time series, phase plot or velocity) for every reading, methods overlaid."""
@@ -42,16 +42,19 @@ for _figure, _spec in ONEDOF["figures"].items():
         conda:
             CONDA_ENV
         params:
-            figure=_spec,
+            figure=as_params(_spec),
             datasets={
-                r: {m: onedof_dataset(_spec["scene"], r, m) for m in _spec["methods"]}
-                for r in _spec["readings"]
+                r: {m: onedof_dataset(_spec.scene, r, m) for m in _spec.methods} for r in _spec.readings
             },
         script:
             "../scripts/plot_onedof_figure.py"
 
 
-ALL_TARGETS.extend(products_of(*(f"onedof_figure_{fig}" for fig in ONEDOF["figures"])))
+ALL_TARGETS.extend(products_of(*(f"onedof_figure_{fig}" for fig in CFG.onedof.figures)))
+
+
+#: The run the friction table is measured along (onedof.friction_table: scene, reading, method).
+TABLE_RUN = CFG.onedof.friction_table
 
 
 rule friction_table:
@@ -66,12 +69,7 @@ rule friction_table:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(
-            ONEDOF["friction_table"]["reading"],
-            ONEDOF["friction_table"]["scene"],
-            ONEDOF["friction_table"]["method"],
-            study="friction_table",
-        ),
+        config=onedof_subconfig(TABLE_RUN.reading, TABLE_RUN.scene, TABLE_RUN.method, study="friction_table"),
         ensemble=ENSEMBLE,
     script:
         "../scripts/friction_table.py"

@@ -1,11 +1,10 @@
 # 1-DOF studies beyond single scenes: Fig. 4 (Eq. 6), the parameter sweeps of Figs. 10-14, the critical belt
 # speed (Section 13) and the interpretation study (readings ranked by the claims they reproduce).
-SWEEPS = ONEDOF.get("sweeps", {})
-SWEEP_FIGURES = ONEDOF.get("sweep_figures", {})
-SWEEP_METHODS = sorted({sw.get("method", BASELINE["method"]) for sw in SWEEPS.values()})
-SWEEP_SCENES = sorted({sw.get("scene", BASELINE["scene"]) for sw in SWEEPS.values()})
-CRITICAL = ONEDOF.get("critical_speed")
-CRITICAL_READINGS = CRITICAL["readings"] if CRITICAL else []
+BASE = CFG.onedof.baseline
+SWEEPS, SWEEP_FIGURES = CFG.onedof.sweeps, CFG.onedof.sweep_figures
+SWEEP_METHODS = sorted({sw.method or BASE.method for sw in SWEEPS.values()})
+SWEEP_SCENES = sorted({sw.scene or BASE.scene for sw in SWEEPS.values()})
+CRITICAL_READINGS = critical_speed_readings()
 
 
 rule eq6_curve:
@@ -19,7 +18,7 @@ rule eq6_curve:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(BASELINE["reading"], BASELINE["scene"], BASELINE["method"], study="eq6"),
+        config=onedof_subconfig(BASE.reading, BASE.scene, BASE.method, study="eq6"),
         ensemble=ENSEMBLE,
     script:
         "../scripts/eq6_curve.py"
@@ -34,7 +33,7 @@ rule onedof_sweeps:
     benchmark:
         paths.benchmark("onedof_sweeps", "{reading}")
     wildcard_constraints:
-        reading="|".join(ONEDOF["readings"]),
+        reading="|".join(CFG.onedof.readings),
     priority: PRIORITY["onedof_sweeps"]
     conda:
         CONDA_ENV
@@ -57,7 +56,7 @@ for _figure, _spec in SWEEP_FIGURES.items():
         name:
             f"sweep_figure_{_figure}"
         input:
-            [sweep_dataset(_spec["sweep"], r, d) for r in _spec["readings"] for d in (False, True)],
+            [sweep_dataset(_spec.sweep, r, d) for r in _spec.readings for d in (False, True)],
         output:
             **outputs(f"sweep_figure_{_figure}"),
         log:
@@ -67,11 +66,9 @@ for _figure, _spec in SWEEP_FIGURES.items():
         conda:
             CONDA_ENV
         params:
-            title=_spec.get("title", _figure),
-            readings=_spec["readings"],
-            datasets={
-                r: [sweep_dataset(_spec["sweep"], r, d) for d in (False, True)] for r in _spec["readings"]
-            },
+            title=_spec.title or _figure,
+            readings=_spec.readings,
+            datasets={r: [sweep_dataset(_spec.sweep, r, d) for d in (False, True)] for r in _spec.readings},
         script:
             "../scripts/plot_sweep_figure.py"
 
@@ -87,12 +84,7 @@ rule critical_speed:
     conda:
         CONDA_ENV
     params:
-        config=onedof_subconfig(
-            CRITICAL_READINGS,
-            BASELINE["scene"],
-            BASELINE["method"],
-            study="critical_speed",
-        ),
+        config=onedof_subconfig(CRITICAL_READINGS, BASE.scene, BASE.method, study="critical_speed"),
         ensemble=ENSEMBLE,
         ensemble_outputs=sorted(CLAIMED_DATASETS & set(products_of("critical_speed"))),
     script:
@@ -129,16 +121,14 @@ rule reading_ranking:
     conda:
         CONDA_ENV
     params:
-        readings=config["claims"]["readings"],
+        readings=CFG.claims.readings,
     script:
         "../scripts/reading_ranking.py"
 
 
 ALL_TARGETS.append(paths.eq6_curve())
-ALL_TARGETS.extend(
-    sweep_dataset(s, r, d) for s in SWEEPS for r in config["claims"]["readings"] for d in (False, True)
-)
+ALL_TARGETS.extend(sweep_dataset(s, r, d) for s in SWEEPS for r in CFG.claims.readings for d in (False, True))
 ALL_TARGETS.extend(products_of(*(f"sweep_figure_{fig}" for fig in SWEEP_FIGURES)))
-if CRITICAL:
+if CFG.onedof.critical_speed is not None:
     ALL_TARGETS.append(paths.critical_speed_summary("csv"))
 ALL_TARGETS.append(paths.reading_ranking("csv"))

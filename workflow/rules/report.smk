@@ -2,17 +2,6 @@
 # never a verdict) and the statuses of its claims (read from the deviations table of the same run).
 
 
-def notebook_paper_figures(name):
-    """The paper figures a notebook sits beside, from what it shows: the paper figures of each image it
-    reads (the catalogue's, from the config's paper_figures maps) and of the rows of each claims file it
-    reads. A dataset it reads to compare with is not a figure it shows."""
-    inputs = notebook_inputs(name)
-    images = [CATALOGUE[path] for path in inputs if path in CATALOGUE and CATALOGUE[path].kind == "figure"]
-    figures = {n for entry in images for n in entry.figures}
-    figures |= {n for claim in CLAIMS if claim.file in inputs for n in claim.figures}
-    return sorted(figures)
-
-
 rule report_captions:
     input:
         table=paths.claims_table(),
@@ -41,4 +30,3 @@ rule report_captions:
 
 
 ALL_TARGETS.append(REPORT_CAPTIONS)
-
