@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import PipelineConfig
+    from ..schema import MethodsStudy, PipelineConfig
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -110,7 +110,7 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     try:
         _check_ensemble(config)
         _check_onedof(config)
-        check_methods_config(config["methods_study"])
+        check_methods_config(typed.methods_study)
         _check_dense_maps(config)
         from ..studies.fe_config import effective_fe_config
 
@@ -342,32 +342,26 @@ def check_friction_table(path, key: str) -> None:
         speeds.append(speed)
 
 
-def check_methods_config(cfg: dict) -> None:
+def check_methods_config(study: MethodsStudy) -> None:
     """Build every scene model and every swept method of the methods study, so a bad value fails before
-    any job starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from ..model import BeltModel, BeltParams
+    any job starts with the config key named (what the schema cannot see: a scene's parameters together,
+    an unknown solver setting)."""
     from ..solvers import make_solver
-    from ..studies.methods import expand_methods
+    from ..studies.methods import expand_methods, scene_model
 
-    fm = cfg["failure_map"]
-    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
+    fm = study.failure_map
+    runs = [(f"methods_study.scenes.{s}", s, {}) for s in study.scenes]
     runs += [
-        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
-        for i, v in enumerate(fm["values"])
+        (f"methods_study.failure_map.values[{i}]", fm.scene, {fm.parameter: v})
+        for i, v in enumerate(fm.values)
     ]
     for key, scene, overrides in runs:
-        if scene not in cfg["scenes"]:
-            raise ConfigError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
-        spec = cfg["scenes"][scene]
         try:
-            BeltModel.build(
-                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
-                spec["variant"],
-            )
-        except (ParameterError, ValueError, TypeError, KeyError) as exc:
+            scene_model(study, scene, **overrides)
+        except (ValueError, TypeError) as exc:  # ParameterError among them
             raise ConfigError(f"{key} (with methods_study.base_params): {exc}") from None
-    groups = [("methods", cfg["methods"]), ("failure_map.methods", fm["methods"])]
-    groups.append(("paper_method", [cfg["paper_method"]]))
+    groups = [("methods", study.methods), ("failure_map.methods", fm.methods)]
+    groups.append(("paper_method", [study.paper_method]))
     for key, entries in groups:  # every swept combination of settings, not only the fixed ones
         for solver, settings, label in expand_methods(entries):
             try:

@@ -34,6 +34,7 @@ from .base import (  # noqa: F401  (re-exported)
     Variant,
     belt_parameter,
     check_refs,
+    given,
     linked_parameters,
     needs_switch,
 )

@@ -59,6 +59,12 @@ def check_refs(refs, known: dict, section: str) -> None:
             raise ValueError(f"{key}: {name!r} is not an entry of {section} ({sorted(known)})")
 
 
+def given(section: BaseModel | None) -> dict:
+    """The values a config mapping sets, as a mapping: a key left out (None in the model) is absent, so
+    the consumer's own default applies; no mapping: nothing set."""
+    return section.model_dump(exclude_none=True) if section is not None else {}
+
+
 class Section(BaseModel):
     """A config mapping: unknown keys are errors (a misspelt key must not be silently ignored)."""
 
