@@ -81,7 +81,7 @@ LEDGER: dict[str, int] = {
     "workflow/rules/onedof_studies.smk": 2,
     "workflow/rules/page.smk": 6,
     "workflow/rules/report.smk": 3,
-    "workflow/rules/validation.smk": 4,
+    "workflow/rules/validation.smk": 3,
     "workflow/scripts/eq6_curve.py": 1,
     "workflow/scripts/fe_comparison.py": 1,
     "workflow/scripts/fe_continuum_window.py": 1,
@@ -91,7 +91,6 @@ LEDGER: dict[str, int] = {
     "workflow/scripts/fe_studies.py": 3,
     "workflow/scripts/inverse_study.py": 1,
     "workflow/scripts/report_captions.py": 8,
-    "workflow/scripts/validation_methods.py": 7,
     "workflow/scripts/validation_round_trip.py": 4,
 }
 

@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import MethodsStudy, PipelineConfig
+    from ..schema import MethodsStudy, PipelineConfig, Validation
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -119,7 +119,7 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
             list(producible),
             allow_expensive=config.get("allow_expensive", False),
         )
-        _check_validation(config, list(producible))
+        _check_validation(typed.validation, list(producible))
         _check_inverse_claims(config, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
@@ -136,10 +136,10 @@ def _check_ensemble(config: dict) -> None:
         raise ConfigError(str(exc) if str(exc).startswith("ensemble") else f"ensemble: {exc}") from None
 
 
-def _check_validation(config: dict, producible: list[str]) -> None:
-    from ..validation.setup import ValidationSetup
+def _check_validation(validation: Validation, producible: list[str]) -> None:
+    from ..validation.setup import check
 
-    ValidationSetup(config["validation"]).check(producible)
+    check(validation, producible)
 
 
 def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> None:

@@ -109,9 +109,13 @@ from .onedof import (  # noqa: F401  (re-exported)
     merged_run_lengths,
 )
 from .validation import (  # noqa: F401  (re-exported)
+    LawMethod,
+    LawMethodsJob,
+    LawRuns,
     LawTiming,
     MethodsPerLaw,
     Peer,
+    PeerJob,
     RoundTrip,
     SwitchSettings,
     Tolerance,

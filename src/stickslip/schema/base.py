@@ -70,6 +70,12 @@ class Section(BaseModel):
 
     model_config = ConfigDict(extra="forbid", strict=True)  # no "5" for 5: YAML types are meant
 
+    @classmethod
+    def part_of(cls, mapping: dict) -> dict:
+        """The entries of a config mapping this model reads: a job's params, when the job reads part of a
+        section (Snakemake re-runs it when one of them changes, not when the rest does)."""
+        return {key: mapping[key] for key in cls.model_fields if key in mapping}
+
 
 class Open(BaseModel):
     """A mapping whose extra keys are settings checked elsewhere (solver settings: ``check_settings``)."""

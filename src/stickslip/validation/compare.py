@@ -4,6 +4,7 @@ form), and the Fig. 17 round trip (the 1-DOF model driven by the table extracted
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -17,24 +18,11 @@ from .closed_form import coulomb_cycle
 from .cycle import QUANTITIES, cycle_quantities, record_from_segments
 from .peer import PeerSettings, peer_events
 
+if TYPE_CHECKING:
+    from ..schema import Tolerance
+
 #: Which tolerance (config ``validation.tolerances``) applies to each quantity, by its units.
 TOLERANCE_CLASS = {q: ("time" if units == "s" else "position") for q, (units, _) in QUANTITIES.items()}
-
-
-@dataclass(frozen=True)
-class Tolerance:
-    abs: float
-    reason: str
-
-    @classmethod
-    def from_config(cls, key: str, entry: dict) -> Tolerance:
-        try:
-            value, reason = float(entry["abs"]), str(entry["reason"])
-        except (KeyError, TypeError, ValueError) as exc:
-            raise ParameterError(f"{key}: needs 'abs' (a number) and 'reason' ({exc})") from None
-        if not (np.isfinite(value) and value > 0) or not reason.strip():
-            raise ParameterError(f"{key}.abs: must be a finite number > 0 with a reason, got {value!r}")
-        return cls(value, reason)
 
 
 def compare_row(law: str, quantity: str, reference: str, value, ref_value, tol: Tolerance) -> dict:
