@@ -62,8 +62,6 @@ def current_reads() -> dict[str, int]:
 LEDGER: dict[str, int] = {
     "src/stickslip/api.py": 26,
     "src/stickslip/cli.py": 5,
-    "src/stickslip/inverse/problem.py": 6,
-    "src/stickslip/inverse/study.py": 3,
     "src/stickslip/studies/fe_config.py": 9,
     "src/stickslip/studies/fe_convergence.py": 1,
     "src/stickslip/studies/fe_peer.py": 2,
@@ -89,7 +87,6 @@ LEDGER: dict[str, int] = {
     "workflow/scripts/fe_peer_calculix.py": 3,
     "workflow/scripts/fe_reading.py": 2,
     "workflow/scripts/fe_studies.py": 3,
-    "workflow/scripts/inverse_study.py": 1,
     "workflow/scripts/report_captions.py": 8,
     "workflow/scripts/validation_round_trip.py": 4,
 }

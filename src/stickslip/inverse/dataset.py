@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 import xarray as xr
@@ -28,6 +29,9 @@ from .identify import (
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem
 from .profile import PL_THRESHOLD, ProfileIdentification, quantity_ranges
 from .structure import fibre_extent, identifiable_in_structure
+
+if TYPE_CHECKING:
+    from ..schema import InverseSettings
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "
@@ -543,7 +547,15 @@ def _coords(families: list, problem: Problem, quantities: list) -> dict:
     }
 
 
-def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> xr.Dataset:
+def settings_record(settings: InverseSettings, mode: str) -> dict:
+    """The settings as configured (a value left to its default is not listed) and the mode: what the
+    datasets record and the notebook shows."""
+    return {**settings.model_dump(exclude_unset=True), "mode": mode}
+
+
+def figure_dataset(
+    name: str, results: dict[str, FamilyFit], settings: InverseSettings, mode: str
+) -> xr.Dataset:
     """One figure (or the joint problem): the families' datasets along ``family``; each variable has units."""
     parts = [r.to_dataset() for r in results.values()]
     ds = xr.concat(
@@ -558,7 +570,7 @@ def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> 
     # every family's quantities in the order first profiled ([""]: none); the ragged dimensions at least one
     # long, the walkers and the coordinates (a parameter each) whole
     quantities = list(dict.fromkeys(q for part in parts for q in part.quantity.values)) or [""]
-    whole = {"walker": int(settings["walkers"]), "coordinate": len(PARAMS), "direction": len(PARAMS)}
+    whole = {"walker": settings.walkers, "coordinate": len(PARAMS), "direction": len(PARAMS)}
     lengths = {dim: max(ds.sizes[dim], 1) for dim in RAGGED} | whole
     ds = ds.reindex(
         {"quantity": quantities, **{d: np.arange(n) for d, n in lengths.items()}}, fill_value=ABSENT
@@ -572,7 +584,7 @@ def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> 
         title=f"FIT (inverse study): {first.title}",
         interpretation=INTERPRETATION,
         figure=name,
-        settings=json.dumps(settings, sort_keys=True),
+        settings=json.dumps(settings_record(settings, mode), sort_keys=True),
         runs=json.dumps([{"name": r.name, "overrides": r.overrides} for r in first.runs], default=str),
         identifiability_method=IDENTIFIABILITY_METHOD,
         conflict_method=CONFLICT_METHOD,

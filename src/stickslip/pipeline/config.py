@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import MethodsStudy, PipelineConfig, Validation
+    from ..schema import Inverse, MethodsStudy, PipelineConfig, Validation
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -120,7 +120,7 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
             allow_expensive=config.get("allow_expensive", False),
         )
         _check_validation(typed.validation, list(producible))
-        _check_inverse_claims(config, claims)
+        _check_inverse_claims(typed.inverse, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
     return typed
@@ -142,7 +142,7 @@ def _check_validation(validation: Validation, producible: list[str]) -> None:
     check(validation, producible)
 
 
-def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> None:
+def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None) -> None:
     """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names. ``read``:
     rows already read, each with its file; the glob's files are read here only when it names one that
     no row came from (or nothing was read)."""
@@ -150,13 +150,13 @@ def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> 
 
     from ..inverse.problem import by_id, load_claim_rows
 
-    files = {Path(p) for p in glob(config["inverse"]["claims_glob"])}
+    files = {Path(p) for p in glob(inverse.claims_glob)}
     if read is None or not files <= {Path(c.file) for c in read}:
         # read as the inverse study reads them: every file of the glob together (ids unique across them)
         read = list(load_claim_rows(sorted(str(f) for f in files)).values())
     claims = by_id(c for c in read if Path(c.file) in files)
-    for name, figure in config["inverse"]["figures"].items():
-        for claim in figure["claims"]:
+    for name, figure in inverse.figures.items():
+        for claim in figure.claims:
             if claim not in claims:
                 raise ConfigError(f"inverse.figures.{name}.claims: {claim!r} is not a claim id")
 

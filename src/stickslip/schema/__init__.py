@@ -73,6 +73,8 @@ from .inverse import (  # noqa: F401  (re-exported)
     Hypothesis,
     Inverse,
     InverseFigure,
+    InverseJob,
+    InverseOnedof,
     InverseParameter,
     InverseSettings,
     MuKRatio,

@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from .base import Finite, Names, NonNegative, Positive, Section, Units, Variant, check_refs
+from .onedof import Baseline, OnedofDefaults, Scene, Sweep
 
 #: Parameters the inverse study may free (``stickslip.inverse.problem.PARAMS``; a test keeps them equal).
 InverseParameter = Literal["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
@@ -72,12 +73,17 @@ class InverseSettings(Section):
     joint_steps: Annotated[int, Field(ge=0)] = Field(description="0: the joint region is the Laplace one")
     scan_points: Annotated[int, Field(ge=2)]
     loo: Literal["linear", "refit"]
-    loo_nfev: Annotated[int, Field(ge=1)] | None = None
+    loo_nfev: Annotated[int, Field(ge=1)] | None = Field(None, description="default: max_nfev")
     corner: list[str] = []
     profile: list[str] | None = Field(
         None, description="figures whose fits get the profile likelihood (default: every figure)"
     )
     seed: int
+
+    @property
+    def refit_nfev(self) -> int:
+        """Least-squares iterations of each leave-one-out refit."""
+        return self.max_nfev if self.loo_nfev is None else self.loo_nfev
 
 
 class Inverse(Section):
@@ -91,6 +97,15 @@ class Inverse(Section):
     joint: Names
     hypotheses: dict[str, Hypothesis] = {}
     settings: dict[Literal["default", "long"], InverseSettings]
+
+    @property
+    def mode(self) -> Literal["default", "long"]:
+        """The settings in use (``long``: longer chains, exact leave-one-out refits)."""
+        return "long" if self.long else "default"
+
+    @property
+    def mode_settings(self) -> InverseSettings:
+        return self.settings[self.mode]
 
     @model_validator(mode="after")
     def complete_and_consistent(self):
@@ -106,3 +121,21 @@ class Inverse(Section):
             check_refs(profiled, self.figures, "inverse.figures")
         check_refs([("inverse.joint", f) for f in self.joint], self.figures, "inverse.figures")
         return self
+
+
+class InverseOnedof(Section):
+    """The part of the ``onedof`` section the inverse study reads (its job's params): the baseline, the
+    defaults, and the scenes and sweeps its claims and figures name. A part: the whole section was checked
+    at parse time (``Onedof``)."""
+
+    baseline: Baseline
+    defaults: OnedofDefaults
+    scenes: dict[str, Scene]
+    sweeps: dict[str, Sweep] = {}
+
+
+class InverseJob(Section):
+    """The inverse study's params: its section and its part of the 1-DOF one."""
+
+    onedof: InverseOnedof
+    inverse: Inverse
