@@ -25,7 +25,7 @@ from stickslip.solvers.exact import ExactSwitchSolver, sample_segments
 from stickslip.solvers.switch import SwitchSolver
 from stickslip.validation.cycle import cycle_quantities, record_from_segments
 from stickslip.validation.peer import peer_events
-from stickslip.validation.setup import law_model, peer_settings, switch_solver
+from stickslip.validation.setup import law_model, switch_solver
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -68,7 +68,7 @@ def affine_table(repeats: int, t_end: float = 40.0) -> None:
 def law_table(repeats: int) -> None:
     section = yaml.safe_load((ROOT / "config" / "validation.yaml").read_text())["validation"]
     job = PeerJob.model_validate(PeerJob.part_of(section))
-    solver, t_end, peer = switch_solver(job.solver, "validation.solver"), job.t_end, peer_settings(job.peer)
+    solver, t_end, peer = switch_solver(job.solver, "validation.solver"), job.t_end, job.peer
     print(f"\nEvery law of config/validation.yaml ({t_end:g} s): switch solver and CVODE peer")
     print(
         f"{'law':>10} {'switch CPU [s]':>14} {'phases':>7} {'RHS':>8} {'CVODE CPU [s]':>14} {'CVODE RHS':>10}"

@@ -22,7 +22,7 @@ from stickslip.validation.compare import (
     table_from_segments,
 )
 from stickslip.validation.cycle import EventRecord, cycle_quantities
-from stickslip.validation.peer import PeerSettings, peer_events
+from stickslip.validation.peer import peer_events
 
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "validation.yaml").read_text())["validation"]
 VALIDATION = Validation.model_validate(CONFIG)
@@ -44,7 +44,7 @@ def test_switch_solver_agrees_with_cvode_within_the_configured_tolerance(name, m
         model,
         25.0,
         setup.switch_solver(VALIDATION.solver, "validation.solver"),
-        setup.peer_settings(VALIDATION.peer),
+        VALIDATION.peer,
         dict(VALIDATION.tolerances),
     )
     assert len(rows) == 7 and runs["cvode_counters"]["rhs_evaluations"] > 100
@@ -55,7 +55,7 @@ def test_switch_solver_agrees_with_cvode_within_the_configured_tolerance(name, m
 def test_cvode_alone_reproduces_the_textbook_coulomb_cycle():
     """The peer program against the closed form, with the switch solver out of the loop."""
     p = BASE.with_(damping=0.0)
-    record, _ = peer_events(LawModel(p, CoulombLaw(0.5, 0.3)), 25.0, PeerSettings())
+    record, _ = peer_events(LawModel(p, CoulombLaw(0.5, 0.3)), 25.0, VALIDATION.peer)
     q = cycle_quantities(record)
     cf = coulomb_cycle(p.mass, p.stiffness, p.normal_force, p.belt_velocity, 0.5, 0.3)
     for key in ("period", "stick_duration", "release_position", "onset_position", "x_max", "x_min"):

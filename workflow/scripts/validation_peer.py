@@ -4,7 +4,7 @@ from stickslip.io.netcdf import write_dataset
 from stickslip.schema import PeerJob, given
 from stickslip.validation.compare import peer_comparison
 from stickslip.validation.datasets import peer_dataset, write_csv
-from stickslip.validation.setup import law_model, peer_settings, switch_solver
+from stickslip.validation.setup import law_model, switch_solver
 
 job = PeerJob.model_validate(snakemake.params.validation)  # noqa: F821
 solver = switch_solver(job.solver, "validation.solver")
@@ -16,9 +16,9 @@ for name, csv_path in zip(job.laws, snakemake.output.csv, strict=True):  # noqa:
         law_model(job, name),
         job.t_end,
         solver,
-        peer_settings(job.peer),
+        job.peer,
         tolerances,
-        bool(job.laws[name].closed_form),
+        job.laws[name].closed_form,
     )
     write_csv(law_rows, csv_path)
     rows += law_rows

@@ -10,11 +10,11 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 import numpy as np
 import xarray as xr
 
+from ..schema import InverseSettings
 from .conflicts import CONFLICT_NFEV, ConflictSearch
 from .fit import BestFit, Region, laplace_sd
 from .forward import Forward
@@ -29,9 +29,6 @@ from .identify import (
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem
 from .profile import PL_THRESHOLD, ProfileIdentification, quantity_ranges
 from .structure import fibre_extent, identifiable_in_structure
-
-if TYPE_CHECKING:
-    from ..schema import InverseSettings
 
 INTERPRETATION = (
     "FIT, not a replication: parameter sets of the model family under which the paper's reported numbers "

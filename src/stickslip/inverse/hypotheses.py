@@ -13,15 +13,12 @@ unit reading), the Eq. 4 sigma V_b term, and a kinetic coefficient mu_k = r mu_s
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..schema import Hypothesis
 from .forward import Forward
 from .problem import Problem
-
-if TYPE_CHECKING:
-    from ..schema import Hypothesis
 
 
 @dataclass(frozen=True)

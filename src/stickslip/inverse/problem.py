@@ -21,7 +21,6 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -29,10 +28,7 @@ from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..claims.rows import Claim
 from ..model.params import BeltParams, ParameterError
-from ..schema import given
-
-if TYPE_CHECKING:
-    from ..schema import InverseJob, InverseOnedof
+from ..schema import InverseJob, InverseOnedof, given
 
 #: Free parameters the study may vary, in a fixed order (BeltParams field names).
 PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import math
 import time
-from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..schema import Inverse, InverseJob, InverseSettings
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
 from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
@@ -23,17 +23,9 @@ from .problem import COMBINATIONS, Problem, build_problem
 from .profile import PL_CLOSE, PL_THRESHOLD, profile_identify
 from .structure import problem_structure
 
-if TYPE_CHECKING:
-    from ..schema import Inverse, InverseJob, InverseSettings
-
 
 def fit_problem(
-    problem: Problem,
-    settings: InverseSettings,
-    steps: int,
-    loo: bool = False,
-    candidates=(),
-    conflicts: bool = True,
+    problem: Problem, settings: InverseSettings, steps: int, loo=False, candidates=(), conflicts=True
 ) -> FamilyFit:
     """Best fit, region, minimal conflicting subsets (if inconsistent and ``conflicts``), identifiable
     dimensions and (optionally) leave-one-out residuals of one problem.

@@ -77,7 +77,7 @@ from .inverse import (  # noqa: F401  (re-exported)
     InverseOnedof,
     InverseParameter,
     InverseSettings,
-    MuKRatio,
+    Range,
 )
 from .methods import (  # noqa: F401  (re-exported)
     Budget,

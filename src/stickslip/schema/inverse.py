@@ -13,16 +13,19 @@ from .onedof import Baseline, OnedofDefaults, Scene, Sweep
 InverseParameter = Literal["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
 
 
-class Bound(Section):
+class Range(Section):
     min: Positive
     max: Positive
-    reason: Annotated[str, Field(min_length=1)]
 
     @model_validator(mode="after")
     def ordered(self):
         if not self.min < self.max:
             raise ValueError(f"need min < max, got {self.min!r}, {self.max!r}")
         return self
+
+
+class Bound(Range):
+    reason: Annotated[str, Field(min_length=1)]
 
 
 class Family(Section):
@@ -43,17 +46,6 @@ class InverseFigure(Section):
         return self
 
 
-class MuKRatio(Section):
-    min: Positive
-    max: Positive
-
-    @model_validator(mode="after")
-    def ordered(self):
-        if not self.min < self.max:
-            raise ValueError(f"need min < max, got {self.min!r}, {self.max!r}")
-        return self
-
-
 class Hypothesis(Section):
     """Values applied to every run of the joint problem (every other parameter as stated)."""
 
@@ -62,7 +54,7 @@ class Hypothesis(Section):
     units: Units | None = None
     output_dt: Positive | None = None
     eq4_term: bool | None = None
-    mu_k_ratio: MuKRatio | None = None
+    mu_k_ratio: Range | None = Field(None, description="mu_k / mu_s scanned over [min, max]")
 
 
 class InverseSettings(Section):

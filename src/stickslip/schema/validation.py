@@ -40,7 +40,7 @@ class ValidationLaw(Section):
     description: str | None = None
     law: Law
     params: BeltParameters | None = None
-    closed_form: bool | None = None
+    closed_form: bool = Field(False, description="compare with the textbook Coulomb cycle too")
 
 
 class RoundTrip(Section):

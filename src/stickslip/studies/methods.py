@@ -12,13 +12,11 @@ import numpy as np
 from ..analysis.errors import measure_run, segment_cycle_metrics
 from ..analysis.failure import FAILURE_KINDS, classify
 from ..model import BeltModel, BeltParams
-from ..schema import Timing, given
+from ..schema import MethodsStudy, StudyMethod, Timing, given
 from ..solvers import make_solver
 
 if TYPE_CHECKING:  # the config check expands the methods at parse time: xarray only where data is made
     import xarray as xr
-
-    from ..schema import MethodsStudy, StudyMethod
 
 
 def expand_methods(entries: Iterable[StudyMethod]) -> list[tuple[str, dict, str]]:

@@ -4,22 +4,19 @@ form), and the Fig. 17 round trip (the 1-DOF model driven by the table extracted
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..analysis.friction_curve import friction_table
 from ..model.laws import FrictionLaw, LawModel, TabulatedLaw
 from ..model.params import ParameterError
+from ..schema import Peer, Tolerance
 from ..solvers.base import STICK
 from ..solvers.exact import sample_segments
 from ..solvers.switch import SwitchSolver
 from .closed_form import coulomb_cycle
 from .cycle import QUANTITIES, cycle_quantities, record_from_segments
-from .peer import PeerSettings, peer_events
-
-if TYPE_CHECKING:
-    from ..schema import Tolerance
+from .peer import peer_events
 
 #: Which tolerance (config ``validation.tolerances``) applies to each quantity, by its units.
 TOLERANCE_CLASS = {q: ("time" if units == "s" else "position") for q, (units, _) in QUANTITIES.items()}
@@ -47,7 +44,7 @@ def peer_comparison(
     model: LawModel,
     t_end: float,
     solver: SwitchSolver,
-    peer: PeerSettings,
+    peer: Peer,
     tolerances: dict[str, Tolerance],
     closed_form: bool = False,
 ) -> tuple[list[dict], dict]:

@@ -13,15 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..model.laws import LawModel
+from ..schema import LawMethod, MethodsPerLaw
 from ..solvers import make_solver
-
-if TYPE_CHECKING:
-    from ..schema import LawMethod, MethodsPerLaw
 
 
 @dataclass(frozen=True)

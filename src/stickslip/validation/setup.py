@@ -4,17 +4,12 @@ parameters and the peer's settings, each checking its physics at construction, t
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
-from ..schema import given
+from ..schema import LawRuns, SwitchSettings, Validation, given
 from ..solvers import make_solver
 from ..solvers.switch import SwitchSolver
-from .peer import PeerSettings
-
-if TYPE_CHECKING:
-    from ..schema import LawRuns, Peer, SwitchSettings, Validation
 
 
 def switch_solver(settings: SwitchSettings | None, key: str) -> SwitchSolver:
@@ -23,10 +18,6 @@ def switch_solver(settings: SwitchSettings | None, key: str) -> SwitchSolver:
         return SwitchSolver(**given(settings))
     except (TypeError, ParameterError) as exc:
         raise ParameterError(f"{key}: {exc}") from None
-
-
-def peer_settings(peer: Peer) -> PeerSettings:
-    return PeerSettings(method=peer.method, rtol=peer.rtol, atol=peer.atol)
 
 
 def law(job: LawRuns, name: str) -> FrictionLaw:
