@@ -235,6 +235,16 @@ COMBINATION_KINDS = {
     "flat_upper": "{c}: highest over the flat set",
     "stated": "{c} as stated",
 }
+
+
+def _both_roles(combination: str) -> dict:
+    """A one-parameter combination named as its parameter (sigma) shares that parameter's variables: one
+    variable holds both, written as the combination (NaN where the value moves along a ridge)."""
+    if COMBINATION_KEYS[combination] not in PARAMS:
+        return {}
+    return {"comment": f"both the parameter {combination} and its one-parameter combination"}
+
+
 #: Per-direction variables of the straight-line profiles (getter on ``identify.Profile``).
 DIRECTION_FIELDS = {
     "direction_singular_value": lambda pr: pr.singular_value,
@@ -278,7 +288,7 @@ VARIABLES = {
         **OPEN_FLAGS,
     ),
     **{
-        f"{kind}_{COMBINATION_KEYS[c]}": _cf(text.format(c=c), COMBINATION_UNITS[c])
+        f"{kind}_{COMBINATION_KEYS[c]}": _cf(text.format(c=c), COMBINATION_UNITS[c], **_both_roles(c))
         for c in COMBINATIONS
         for kind, text in COMBINATION_KINDS.items()
     },
@@ -430,12 +440,13 @@ class FamilyFit:
         )
         ds = ds.assign_coords({dim: np.arange(ds.sizes[dim]) for dim in RAGGED})
         ds = ds.reindex(parameter=list(PARAMS), fill_value=ABSENT | {"direction_vector": 0.0})
+        combinations = self._combinations()  # sigma's written once, as the combination (``_both_roles``)
         for kind in (*PARAMETER_KINDS, "samples"):  # one variable per parameter: each has its own units
             for j, param in enumerate(PARAMS):
-                ds[f"{kind}_{param}"] = ds[kind].isel(parameter=j, drop=True)
+                if f"{kind}_{param}" not in combinations:
+                    ds[f"{kind}_{param}"] = ds[kind].isel(parameter=j, drop=True)
         ds = ds.drop_vars([*PARAMETER_KINDS, "samples"])
-        # sigma is a parameter and a one-parameter combination: its combination variables (same names) win
-        ds = ds.assign({name: _variable(name, v) for name, v in self._combinations().items()})
+        ds = ds.assign({name: _variable(name, v) for name, v in combinations.items()})
         ds = ds.assign({name: ds[name].assign_attrs(VARIABLES[name]) for name in ds.data_vars})
         ds["loo_residual"].attrs["comment"] = LOO_COMMENT.format(self.loo_method)
         return ds
