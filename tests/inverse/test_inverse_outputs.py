@@ -132,7 +132,7 @@ def test_each_family_keeps_its_own_values_in_a_figure_dataset_and_is_padded_beyo
         fam: fit_problem(build_problem(config, claims, "fig02", fam), settings, steps=0)
         for fam in ("consistent", "plateau")
     }
-    ds = figure_dataset("fig02", results, settings, config.inverse.mode)
+    ds = figure_dataset("fig02", results, config.inverse)
     own = {fam: r.to_dataset() for fam, r in results.items()}
     ragged = [d for d in RAGGED if own["consistent"].sizes[d] != own["plateau"].sizes[d]]
     assert {"profile_point", "conflict"} <= set(ragged) and ds.sizes["sample"] == 1

@@ -313,8 +313,7 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
     settings = inv.mode_settings
     figures = list(figures or inv.figures)
     families = list(families or inv.families)
-    out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "cpu": {}}
-    out |= {"settings": settings, "mode": inv.mode}
+    out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "inverse": inv, "cpu": {}}
     fitted = {fam: [] for fam in families}  # per-figure fits: the joint fit's candidate starts
     for name in figures + ["joint"]:
         steps = settings.joint_steps if name == "joint" else settings.steps
@@ -331,7 +330,7 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
                 conflicts=name != "joint",
             )
             fitted[fam].append(dict(zip(problem.free, results[fam].fit.free_values)))
-        out["datasets"][name] = figure_dataset(name, results, settings, inv.mode)
+        out["datasets"][name] = figure_dataset(name, results, inv)
         out["summary"] += summary_rows(name, results)
         out["numbers"] += number_rows(name, results)
         out["conflicts"] += conflict_rows(name, results)

@@ -99,6 +99,12 @@ class Inverse(Section):
     def mode_settings(self) -> InverseSettings:
         return self.settings[self.mode]
 
+    @property
+    def settings_record(self) -> dict:
+        """The settings in use as configured (a value left to its default is not listed) and the mode: what
+        the results record and the notebook shows."""
+        return {**self.mode_settings.model_dump(exclude_unset=True), "mode": self.mode}
+
     @model_validator(mode="after")
     def complete_and_consistent(self):
         missing = [p for p in InverseParameter.__args__ if p not in self.bounds]
