@@ -24,25 +24,26 @@ from stickslip.inverse.conflicts import minimal_conflicts
 from stickslip.inverse.forward import Forward
 from stickslip.inverse.outputs import write_study
 from stickslip.inverse.problem import build_problem, load_claim_rows
-from stickslip.inverse.study import fit_problem, run_study, settings_of
+from stickslip.inverse.study import fit_problem, run_study
+from stickslip.schema import InverseJob, InverseOnedof
 
 ROOT = Path(__file__).resolve().parents[1]
 BUDGET = 90.0
 
 
-def conflict_check(config, claims) -> int:
+def conflict_check(job: InverseJob, claims) -> int:
     """Minimal conflicting subsets with 10, 20 and 40 iterations per subset fit: identical or not."""
-    settings = settings_of(config)
+    settings = job.inverse.mode_settings
     differ = 0
     print(f"{'figure / family':28s} {'sets (nfev 10, 20, 40)':>24s} {'CPU [s]':>22s}  identical")
-    for name in config["inverse"]["figures"]:
-        for fam in config["inverse"]["families"]:
-            p = build_problem(config, claims, name, fam)
-            r = fit_problem(p, settings, settings["steps"], conflicts=False)
-            if r["fit"].consistent:
+    for name in job.inverse.figures:
+        for fam in job.inverse.families:
+            p = build_problem(job, claims, name, fam)
+            r = fit_problem(p, settings, settings.steps, conflicts=False)
+            if r.fit.consistent:
                 continue
-            seeds = [r["fit"].free_values, p.stated_free]
-            seeds += list(r["region"].samples_free) if r["region"] is not None else []
+            seeds = [r.fit.free_values, p.stated_free]
+            seeds += list(r.region.samples_free) if r.region is not None else []
             sets, cpu = [], []
             for nfev in (10, 20, 40):
                 t0 = time.process_time()
@@ -63,13 +64,15 @@ def main():
     ap.add_argument("--out", default=None)
     ap.add_argument("--conflict-check", action="store_true")
     args = ap.parse_args()
-    config = {}
+    sections = {}
     for name in ("config.yaml", "inverse.yaml"):
-        config.update(yaml.safe_load((ROOT / "config" / name).read_text()))
-    config["inverse"]["long"] = bool(args.long)
+        sections.update(yaml.safe_load((ROOT / "config" / name).read_text()))
+    sections["inverse"]["long"] = bool(args.long)
+    onedof = InverseOnedof.part_of(sections["onedof"])
+    job = InverseJob.model_validate({"onedof": onedof, "inverse": sections["inverse"]})
     claims = load_claim_rows(sorted(glob.glob(str(ROOT / "config" / "claims" / "*.yaml"))))
     if args.conflict_check:
-        return conflict_check(config, claims)
+        return conflict_check(job, claims)
 
     # cost of one forward evaluation (all runs of a problem), the unit everything else is made of
     rows = []
@@ -79,7 +82,7 @@ def main():
         ("joint", "consistent"),
         ("joint", "plateau"),
     ):
-        p = build_problem(config, claims, name, fam)
+        p = build_problem(job, claims, name, fam)
         fw = Forward(p)
         t0 = time.process_time()
         for k in range(5):
@@ -87,7 +90,7 @@ def main():
         rows.append((f"one evaluation: {name}/{fam} ({len(p.runs)} runs)", (time.process_time() - t0) / 5))
 
     t0 = time.process_time()
-    out = run_study(config, claims)
+    out = run_study(job, claims)
     study = time.process_time() - t0
     t1 = time.process_time()
     target = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="bench_inverse_"))

@@ -19,12 +19,13 @@ import numpy as np
 import yaml
 
 from stickslip.model import PAPER_BASELINE, BeltModel
+from stickslip.schema import PeerJob
 from stickslip.solvers.base import SolverStats
 from stickslip.solvers.exact import ExactSwitchSolver, sample_segments
 from stickslip.solvers.switch import SwitchSolver
 from stickslip.validation.cycle import cycle_quantities, record_from_segments
 from stickslip.validation.peer import peer_events
-from stickslip.validation.setup import ValidationSetup
+from stickslip.validation.setup import law_model, switch_solver
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -65,22 +66,23 @@ def affine_table(repeats: int, t_end: float = 40.0) -> None:
 
 
 def law_table(repeats: int) -> None:
-    cfg = yaml.safe_load((ROOT / "config" / "validation.yaml").read_text())["validation"]
-    setup = ValidationSetup(cfg)
-    print(f"\nEvery law of config/validation.yaml ({setup.t_end:g} s): switch solver and CVODE peer")
+    section = yaml.safe_load((ROOT / "config" / "validation.yaml").read_text())["validation"]
+    job = PeerJob.model_validate(PeerJob.part_of(section))
+    solver, t_end, peer = switch_solver(job.solver, "validation.solver"), job.t_end, job.peer
+    print(f"\nEvery law of config/validation.yaml ({t_end:g} s): switch solver and CVODE peer")
     print(
         f"{'law':>10} {'switch CPU [s]':>14} {'phases':>7} {'RHS':>8} {'CVODE CPU [s]':>14} {'CVODE RHS':>10}"
     )
-    for name in setup.law_names():
+    for name in job.laws:
         try:
-            model = setup.model(name)
+            model = law_model(job, name)
         except (OSError, ValueError) as exc:  # the Fig. 17 table is a pipeline output
             print(f"{name:>10} skipped: {exc}")
             continue
         stats = SolverStats()
-        elapsed, seg = cpu(lambda m=model: setup.solver().segments(m, setup.t_end), repeats)
-        setup.solver().segments(model, setup.t_end, stats)
-        peer_cpu, (_, counters) = cpu(lambda m=model: peer_events(m, setup.t_end, setup.peer()), repeats)
+        elapsed, seg = cpu(lambda m=model: solver.segments(m, t_end), repeats)
+        solver.segments(model, t_end, stats)
+        peer_cpu, (_, counters) = cpu(lambda m=model: peer_events(m, t_end, peer), repeats)
         print(
             f"{name:>10} {elapsed:14.4f} {len(seg):7d} {stats.rhs_evaluations:8d} {peer_cpu:14.4f}"
             f" {counters['rhs_evaluations']:10d}"

@@ -179,10 +179,11 @@ def test_a_claim_dataset_is_looked_up_in_the_config_not_parsed(config, claims):
     from stickslip.inverse.problem import claim_run, runs_by_dataset
     from stickslip.model.params import ParameterError
 
-    onedof = config["onedof"]
+    onedof = config.onedof
     row = claims["s5_fig6_frequency"]
-    assert runs_by_dataset(onedof)[row.dataset] == ("scene", "fig06")
+    assert runs_by_dataset(onedof.scenes, onedof.sweeps)[row.dataset] == ("scene", "fig06")
     assert claim_run(row, onedof)[:2] == ("fig06", "frequency_peaks")
-    without = {**onedof, "scenes": {k: v for k, v in onedof["scenes"].items() if k != "fig06"}}
+    scenes = {k: v for k, v in onedof.scenes.items() if k != "fig06"}
+    without = onedof.model_copy(update={"scenes": scenes})
     with pytest.raises(ParameterError, match=r"claim s5_fig6_frequency\.dataset: .* onedof\.scenes"):
         claim_run(row, without)

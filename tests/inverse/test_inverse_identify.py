@@ -12,7 +12,7 @@ from stickslip.inverse.conflicts import minimal_conflicts
 from stickslip.inverse.forward import Forward
 from stickslip.inverse.identify import PROFILE_THRESHOLD, identify, on_ridge, parameter_ranges
 from stickslip.inverse.problem import build_problem
-from stickslip.inverse.study import fit_problem, settings_of, summary_rows
+from stickslip.inverse.study import fit_problem, summary_rows
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def fig02(config, claims):
     """Fig. 2 under the consistent reading, fitted as the study fits it (default settings)."""
     problem = build_problem(config, claims, "fig02", "consistent")
-    return fit_problem(problem, settings_of(config), steps=0, conflicts=False)
+    return fit_problem(problem, config.inverse.mode_settings, steps=0, conflicts=False)
 
 
 def _chi2(forward, values):
@@ -271,7 +271,7 @@ def test_an_unprofiled_fig02_still_gives_the_fibre_as_ranges(config, claims):
     C/M and mu_s N/M are still ranges: the fibre of the fit, from the equations (at least half a decade
     each: the Fig. 2 curve alone spans sigma 0.22-0.58 at the stated set's K/M), and K/M is still a point."""
     problem = build_problem(config, claims, "fig02", "consistent")
-    settings = {**settings_of(config), "profile": ["no_figure"]}
+    settings = config.inverse.mode_settings.model_copy(update={"profile": ["no_figure"]})
     r = fit_problem(problem, settings, steps=0, conflicts=False)
     assert r.profile is None and r.structural_dimensions == 3
     row = summary_rows("fig02", {"consistent": r})[0]

@@ -14,8 +14,9 @@ import yaml
 from stickslip.inverse.dataset import ABSENT, RAGGED, figure_dataset
 from stickslip.inverse.outputs import write_study
 from stickslip.inverse.problem import PARAMS, build_problem, load_claim_rows
-from stickslip.inverse.study import fit_problem, run_study, settings_of
+from stickslip.inverse.study import fit_problem, run_study
 from stickslip.io.netcdf import read_dataset
+from stickslip.schema import InverseJob, InverseOnedof
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -40,17 +41,19 @@ def unitless_variables(path: Path) -> list[str]:
     return bad
 
 
-def ci_config_and_claims() -> tuple[dict, list]:
+def ci_config_and_claims() -> tuple[InverseJob, dict]:
     """The study's configuration at CI size (config/test/inverse.yaml, no corner plots) and the claims."""
     from stickslip.pipeline.config import merge
 
-    config = {}
+    sections = {}
     for name in ("config.yaml", "inverse.yaml"):
-        config.update(yaml.safe_load((ROOT / "config" / name).read_text()))
+        sections.update(yaml.safe_load((ROOT / "config" / name).read_text()))
     test = yaml.safe_load((ROOT / "config" / "test" / "inverse.yaml").read_text())
-    config["inverse"] = merge(config["inverse"], test["inverse"])
-    config["inverse"]["settings"]["default"]["corner"] = []
-    return config, load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+    sections["inverse"] = merge(sections["inverse"], test["inverse"])
+    sections["inverse"]["settings"]["default"]["corner"] = []
+    job = {"onedof": InverseOnedof.part_of(sections["onedof"]), "inverse": sections["inverse"]}
+    claims = load_claim_rows(sorted((ROOT / "config" / "claims").glob("*.yaml")))
+    return InverseJob.model_validate(job), claims
 
 
 @pytest.fixture(scope="module")
@@ -124,12 +127,12 @@ def test_each_family_keeps_its_own_values_in_a_figure_dataset_and_is_padded_beyo
     points and find different numbers of conflicts; concatenated, each keeps exactly its own values, and
     where another family has more entries it reads as none (flags 0, no conflict, NaN)."""
     config, claims = ci_config_and_claims()
-    settings = settings_of(config)
+    settings = config.inverse.mode_settings
     results = {
         fam: fit_problem(build_problem(config, claims, "fig02", fam), settings, steps=0)
         for fam in ("consistent", "plateau")
     }
-    ds = figure_dataset("fig02", results, settings)
+    ds = figure_dataset("fig02", results, config.inverse)
     own = {fam: r.to_dataset() for fam, r in results.items()}
     ragged = [d for d in RAGGED if own["consistent"].sizes[d] != own["plateau"].sizes[d]]
     assert {"profile_point", "conflict"} <= set(ragged) and ds.sizes["sample"] == 1

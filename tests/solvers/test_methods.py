@@ -134,18 +134,25 @@ def test_moreau_handles_printed_and_decelerating_scenes():
 def test_stall_budget_counts_rhs_evaluations_of_adaptive_methods_only():
     """The methods study's budget is a count (the same on every machine), and a fixed-step method, whose
     work t_end / h is known before it runs, is never stopped by it."""
+    from stickslip.pipeline.config import load_config
+    from stickslip.schema import Budget, MethodsStudy, Timing
     from stickslip.studies.methods import run_scene
 
-    cfg = {
-        "output_dt": 0.05,
-        "budget": {"max_rhs": 3000, "max_cpu": 60.0},
-        "timing": {"min_repeats": 1, "max_repeats": 1, "min_total_cpu": 0.0},
-    }
+    from project_run import ROOT
+
+    small = load_config([ROOT / "config/methods.yaml", ROOT / "config/test/methods.yaml"])["methods_study"]
+    study = MethodsStudy.model_validate(small).model_copy(
+        update={
+            "output_dt": 0.05,
+            "budget": Budget(max_rhs=3000, max_cpu=60.0),
+            "timing": Timing(min_repeats=1, max_repeats=1, min_total_cpu=0.0),
+        }
+    )
     methods = [
         ("moreau", {"h": 1e-3}, "moreau h=1e-3"),  # 10 000 steps
         ("sign_rk", {"method": "RK45", "rtol": 1e-5, "atol": 1e-8}, "chattering RK45"),
     ]
-    records, *_ = run_scene(cfg, scene(), 10.0, methods, paper=False)
+    records, *_ = run_scene(study, scene(), 10.0, methods, paper=False)
     moreau, rk = records
     assert moreau["status"] == "ok" and moreau["rhs_evaluations"] >= 10_000
     assert rk["status"] == "failed" and rk["rhs_evaluations"] == 3001 and "3000 RHS" in rk["message"]

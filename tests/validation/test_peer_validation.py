@@ -6,25 +6,26 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from pydantic import ValidationError
 
 from stickslip.model import PAPER_BASELINE
 from stickslip.model.laws import AffineLaw, CoulombLaw, LawModel, RationalLaw, StribeckLaw
 from stickslip.model.params import ParameterError
+from stickslip.schema import Validation, ValidationLaw
 from stickslip.solvers.switch import SwitchSolver
+from stickslip.validation import setup
 from stickslip.validation.closed_form import coulomb_cycle
 from stickslip.validation.compare import (
-    Tolerance,
     extended_table,
     peer_comparison,
     round_trip,
     table_from_segments,
 )
 from stickslip.validation.cycle import EventRecord, cycle_quantities
-from stickslip.validation.peer import PeerSettings, peer_events
-from stickslip.validation.setup import ValidationSetup
+from stickslip.validation.peer import peer_events
 
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "validation.yaml").read_text())["validation"]
-SETUP = ValidationSetup(CONFIG)
+VALIDATION = Validation.model_validate(CONFIG)
 BASE = PAPER_BASELINE.with_(sigma=0.5)
 
 
@@ -38,7 +39,14 @@ BASE = PAPER_BASELINE.with_(sigma=0.5)
     ],
 )
 def test_switch_solver_agrees_with_cvode_within_the_configured_tolerance(name, model):
-    rows, runs = peer_comparison(name, model, 25.0, SETUP.solver(), SETUP.peer(), SETUP.tolerances())
+    rows, runs = peer_comparison(
+        name,
+        model,
+        25.0,
+        setup.switch_solver(VALIDATION.solver, "validation.solver"),
+        VALIDATION.peer,
+        dict(VALIDATION.tolerances),
+    )
     assert len(rows) == 7 and runs["cvode_counters"]["rhs_evaluations"] > 100
     bad = [(r["quantity"], r["abs_difference"], r["tolerance"]) for r in rows if r["status"] != "within"]
     assert not bad
@@ -47,7 +55,7 @@ def test_switch_solver_agrees_with_cvode_within_the_configured_tolerance(name, m
 def test_cvode_alone_reproduces_the_textbook_coulomb_cycle():
     """The peer program against the closed form, with the switch solver out of the loop."""
     p = BASE.with_(damping=0.0)
-    record, _ = peer_events(LawModel(p, CoulombLaw(0.5, 0.3)), 25.0, PeerSettings())
+    record, _ = peer_events(LawModel(p, CoulombLaw(0.5, 0.3)), 25.0, VALIDATION.peer)
     q = cycle_quantities(record)
     cf = coulomb_cycle(p.mass, p.stiffness, p.normal_force, p.belt_velocity, 0.5, 0.3)
     for key in ("period", "stick_duration", "release_position", "onset_position", "x_max", "x_min"):
@@ -112,16 +120,19 @@ def test_binning_error_of_a_curved_law_is_second_order():
 
 
 def test_validation_config_errors_name_the_key():
-    with pytest.raises(ParameterError, match=r"^validation\.tolerances\.time"):
-        ValidationSetup(
-            {**CONFIG, "tolerances": {**CONFIG["tolerances"], "time": {"abs": 1e-7}}}
-        ).tolerances()
-    with pytest.raises(ParameterError, match=r"^validation\.tolerances\.position\.abs"):
-        Tolerance.from_config("validation.tolerances.position", {"abs": float("nan"), "reason": "x"})
-    bad_law = {**CONFIG, "laws": {"x": {"law": {"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.9, "v_s": 1}}}}
+    tolerances = CONFIG["tolerances"]
+    for bad, key in [
+        ({"abs": 1e-7}, r"tolerances\.time\.reason"),
+        ({"abs": 1e-7, "reason": "  "}, r"tolerances\.time\.reason"),
+        ({"abs": float("nan"), "reason": "x"}, r"tolerances\.time\.abs"),
+    ]:
+        with pytest.raises(ValidationError, match=key):
+            Validation.model_validate({**CONFIG, "tolerances": {**tolerances, "time": bad}})
+    stribeck = {"kind": "stribeck", "mu_s": 0.5, "mu_k": 0.9, "v_s": 1}
+    bad_law = VALIDATION.model_copy(update={"laws": {"x": ValidationLaw.model_validate({"law": stribeck})}})
     with pytest.raises(ParameterError, match=r"^validation\.laws\.x\.law\.mu_k"):
-        ValidationSetup(bad_law).check(producible=[])
-    missing_table = {**CONFIG, "laws": {"t": {"law": {"kind": "tabulated", "path": "nowhere.csv"}}}}
+        setup.check(bad_law, producible=[])
+    table = ValidationLaw.model_validate({"law": {"kind": "tabulated", "path": "nowhere.csv"}})
     with pytest.raises(ParameterError, match=r"^validation\.laws\.t\.law\.path"):
-        ValidationSetup(missing_table).check(producible=[])
-    ValidationSetup(CONFIG).check(producible=["results/onedof/friction_mu_vr.csv"])  # the shipped config
+        setup.check(VALIDATION.model_copy(update={"laws": {"t": table}}), producible=[])
+    setup.check(VALIDATION, producible=["results/onedof/friction_mu_vr.csv"])  # the shipped config

@@ -324,7 +324,7 @@ def inverse_onedof_config():
     keep = {k: ONEDOF[k] for k in ("baseline", "defaults", "scenes", "sweeps")}
     if not ids <= set(rows):
         return canonical(keep)
-    runs = runs_by_dataset(ONEDOF)
+    runs = runs_by_dataset(ONEDOF["scenes"], ONEDOF.get("sweeps", {}))
     named = [runs[rows[i].dataset] for i in sorted(ids) if rows[i].dataset in runs]
     sweeps = sorted({name for kind, name in named if kind == "sweep"})
     scenes = {name for kind, name in named if kind == "scene"} | {BASELINE["scene"]}

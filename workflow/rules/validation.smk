@@ -1,8 +1,10 @@
 # Issue 13: the switch-model solver for any friction law, checked against an independent program
 # (SUNDIALS CVODE), the textbook Coulomb cycle, and the Fig. 17 round trip.
-from stickslip.validation.setup import ValidationSetup
+from stickslip.schema import LawMethodsJob, PeerJob
+from stickslip.validation.setup import table_paths
 
-VALIDATION = ValidationSetup(config["validation"])
+#: The part of the section the peer job reads (its params, and its tables are inputs).
+VALIDATION_PEER = PeerJob.part_of(config["validation"])
 
 ALL_TARGETS.extend(products_of("validation_peer", "validation_methods", "validation_round_trip"))
 
@@ -10,7 +12,7 @@ ALL_TARGETS.extend(products_of("validation_peer", "validation_methods", "validat
 rule validation_peer:
     """Last-cycle quantities of every law: switch solver vs CVODE (and the closed form), tolerances from config."""
     input:
-        VALIDATION.table_paths(),
+        table_paths(PeerJob.model_validate(VALIDATION_PEER)),
     output:
         **outputs("validation_peer"),
     log:
@@ -20,7 +22,7 @@ rule validation_peer:
     conda:
         CONDA_ENV
     params:
-        validation={k: v for k, v in config["validation"].items() if k != "round_trip"},
+        validation=VALIDATION_PEER,
     script:
         "../scripts/validation_peer.py"
 
@@ -65,8 +67,6 @@ rule validation_methods:
     conda:
         CONDA_ENV
     params:
-        validation={
-            k: v for k, v in config["validation"].items() if k not in ("round_trip", "peer", "tolerances")
-        },
+        validation=LawMethodsJob.part_of(config["validation"]),
     script:
         "../scripts/validation_methods.py"

@@ -4,24 +4,24 @@ import numpy as np
 
 from stickslip.io.netcdf import read_dataset, write_dataset
 from stickslip.model.laws import LawModel, TabulatedLaw, law_from_config
-from stickslip.schema import FrictionTable, OnedofJob, RoundTrip
+from stickslip.schema import FrictionTable, OnedofJob, RoundTrip, SwitchSettings
 from stickslip.solvers.switch import SwitchSolver
 from stickslip.studies.specs import run_spec
 from stickslip.validation.compare import round_trip_cases
 from stickslip.validation.datasets import round_trip_dataset, round_trip_rows, write_csv
-from stickslip.validation.setup import ValidationSetup
+from stickslip.validation.setup import switch_solver
 
 params = snakemake.params  # noqa: F821
 table = FrictionTable.model_validate(params.table)
 spec = run_spec(OnedofJob.model_validate(params.onedof).onedof, table.scene, table.reading, table.method)
-setup = ValidationSetup(params.validation)
+solver = switch_solver(SwitchSettings.model_validate(params.validation["solver"]), "validation.solver")
 round_trip = RoundTrip.model_validate(params.validation["round_trip"])
 cases = round_trip_cases(
     LawModel.from_belt_model(spec.model),
     TabulatedLaw.from_file(snakemake.input.table),  # noqa: F821
     spec.t_end,
     spec.t_eval,
-    setup.solver(),
+    solver,
     round_trip.extension_factor,
     law_from_config(round_trip.curved_law.model_dump(), key="validation.round_trip.curved_law"),
     round_trip.bins,
@@ -39,6 +39,6 @@ write_dataset(
         "round_trip": round_trip.model_dump(exclude_none=True),
         "table": snakemake.input.table,  # noqa: F821
     },
-    method={"name": "switch", **setup.solver().settings},
+    method={"name": "switch", **solver.settings},
     title="Fig. 17 round trip: the 1-DOF model driven by its own friction table",
 )

@@ -14,6 +14,7 @@ from functools import cached_property
 import numpy as np
 import xarray as xr
 
+from ..schema import Inverse
 from .conflicts import CONFLICT_NFEV, ConflictSearch
 from .fit import BestFit, Region, laplace_sd
 from .forward import Forward
@@ -234,6 +235,13 @@ COMBINATION_KINDS = {
     "flat_upper": "{c}: highest over the flat set",
     "stated": "{c} as stated",
 }
+
+#: A one-parameter combination named as its parameter (sigma) has one set of variables for both roles.
+BOTH_ROLES = {
+    c: {"comment": f"both the parameter {c} and its one-parameter combination"}
+    for c, key in COMBINATION_KEYS.items()
+    if key in PARAMS
+}
 #: Per-direction variables of the straight-line profiles (getter on ``identify.Profile``).
 DIRECTION_FIELDS = {
     "direction_singular_value": lambda pr: pr.singular_value,
@@ -277,7 +285,7 @@ VARIABLES = {
         **OPEN_FLAGS,
     ),
     **{
-        f"{kind}_{COMBINATION_KEYS[c]}": _cf(text.format(c=c), COMBINATION_UNITS[c])
+        f"{kind}_{COMBINATION_KEYS[c]}": _cf(text.format(c=c), COMBINATION_UNITS[c], **BOTH_ROLES.get(c, {}))
         for c in COMBINATIONS
         for kind, text in COMBINATION_KINDS.items()
     },
@@ -429,12 +437,13 @@ class FamilyFit:
         )
         ds = ds.assign_coords({dim: np.arange(ds.sizes[dim]) for dim in RAGGED})
         ds = ds.reindex(parameter=list(PARAMS), fill_value=ABSENT | {"direction_vector": 0.0})
+        combinations = self._combinations()  # sigma's variables written once, as the combination
         for kind in (*PARAMETER_KINDS, "samples"):  # one variable per parameter: each has its own units
             for j, param in enumerate(PARAMS):
-                ds[f"{kind}_{param}"] = ds[kind].isel(parameter=j, drop=True)
+                if f"{kind}_{param}" not in combinations:
+                    ds[f"{kind}_{param}"] = ds[kind].isel(parameter=j, drop=True)
         ds = ds.drop_vars([*PARAMETER_KINDS, "samples"])
-        # sigma is a parameter and a one-parameter combination: its combination variables (same names) win
-        ds = ds.assign({name: _variable(name, v) for name, v in self._combinations().items()})
+        ds = ds.assign({name: _variable(name, v) for name, v in combinations.items()})
         ds = ds.assign({name: ds[name].assign_attrs(VARIABLES[name]) for name in ds.data_vars})
         ds["loo_residual"].attrs["comment"] = LOO_COMMENT.format(self.loo_method)
         return ds
@@ -543,7 +552,7 @@ def _coords(families: list, problem: Problem, quantities: list) -> dict:
     }
 
 
-def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> xr.Dataset:
+def figure_dataset(name: str, results: dict[str, FamilyFit], inverse: Inverse) -> xr.Dataset:
     """One figure (or the joint problem): the families' datasets along ``family``; each variable has units."""
     parts = [r.to_dataset() for r in results.values()]
     ds = xr.concat(
@@ -558,7 +567,7 @@ def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> 
     # every family's quantities in the order first profiled ([""]: none); the ragged dimensions at least one
     # long, the walkers and the coordinates (a parameter each) whole
     quantities = list(dict.fromkeys(q for part in parts for q in part.quantity.values)) or [""]
-    whole = {"walker": int(settings["walkers"]), "coordinate": len(PARAMS), "direction": len(PARAMS)}
+    whole = {"walker": inverse.mode_settings.walkers, "coordinate": len(PARAMS), "direction": len(PARAMS)}
     lengths = {dim: max(ds.sizes[dim], 1) for dim in RAGGED} | whole
     ds = ds.reindex(
         {"quantity": quantities, **{d: np.arange(n) for d, n in lengths.items()}}, fill_value=ABSENT
@@ -572,7 +581,7 @@ def figure_dataset(name: str, results: dict[str, FamilyFit], settings: dict) -> 
         title=f"FIT (inverse study): {first.title}",
         interpretation=INTERPRETATION,
         figure=name,
-        settings=json.dumps(settings, sort_keys=True),
+        settings=json.dumps(inverse.settings_record, sort_keys=True),
         runs=json.dumps([{"name": r.name, "overrides": r.overrides} for r in first.runs], default=str),
         identifiability_method=IDENTIFIABILITY_METHOD,
         conflict_method=CONFLICT_METHOD,

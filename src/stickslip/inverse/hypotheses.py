@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..schema import Hypothesis
 from .forward import Forward
 from .problem import Problem
 
@@ -121,15 +122,15 @@ def stated_score(problem: Problem, hypothesis: dict | None = None, label="stated
     )
 
 
-def named_hypotheses(problem: Problem, specs: dict, points: int) -> list[Score]:
-    """The text's own alternatives (config inverse.hypotheses), each with every other parameter stated."""
+def named_hypotheses(problem: Problem, hypotheses: dict[str, Hypothesis], points: int) -> list[Score]:
+    """The text's own alternatives (config inverse.hypotheses), each with every other parameter stated; a
+    hypothesis is listed under the first value it sets (in the order of ``Hypothesis``'s fields)."""
     out = []
-    for label, spec in specs.items():
-        spec = dict(spec)
-        description = str(spec.pop("description", ""))
-        ratio = spec.pop("mu_k_ratio", None)
-        if isinstance(ratio, dict):
-            grid = np.linspace(float(ratio["min"]), float(ratio["max"]), points)
+    for label, hypothesis in hypotheses.items():
+        spec = hypothesis.model_dump(exclude_none=True, exclude={"description", "mu_k_ratio"})
+        description, ratio = hypothesis.description, hypothesis.mu_k_ratio
+        if ratio is not None:
+            grid = np.linspace(ratio.min, ratio.max, points)
             forward = Forward(problem, {})
             results = []
             for r in grid:

@@ -86,14 +86,15 @@ def _ranges(samples, stated, best, margin=0.05):
 def write_study(out: dict, outdir) -> list[Path]:
     outdir = Path(outdir)
     written = []
-    scene = {"study": "inverse", "mode": out["settings"]["mode"]}
+    inverse = out["inverse"]
+    scene = {"study": "inverse", "mode": inverse.mode}
     method = {
         "forward": "exact event-driven solver",
         "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
         "region": "emcee EnsembleSampler (seeded)",
         "identifiability": "chi-square profiles along the flat and near-flat directions (identify)",
         "conflicts": "minimal conflicting subsets by increasing size (conflicts)",
-        **{k: v for k, v in out["settings"].items() if k != "mode"},
+        **{k: v for k, v in inverse.settings_record.items() if k != "mode"},
     }
     for name, ds in out["datasets"].items():
         written.append(
@@ -106,7 +107,7 @@ def write_study(out: dict, outdir) -> list[Path]:
                 title=ds.attrs["title"],
             )
         )
-        if name in out["settings"].get("corner", []):
+        if name in inverse.mode_settings.corner:
             for family in ds.family.values:
                 written.append(corner_plot(ds, str(family), outdir / "corner" / f"{name}_{family}.png"))
     return written + [write_csv(out[table], outdir / f"{table}.csv") for table in INVERSE_TABLES]

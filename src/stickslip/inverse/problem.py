@@ -19,6 +19,7 @@ all sets giving the same motion: stated + B w, with B an orthonormal basis of th
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -27,6 +28,7 @@ from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..claims.rows import Claim
 from ..model.params import BeltParams, ParameterError
+from ..schema import InverseJob, InverseOnedof, given
 
 #: Free parameters the study may vary, in a fixed order (BeltParams field names).
 PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")
@@ -230,10 +232,10 @@ def sweep_dataset(sweep: str) -> str:
     return catalogue.sweep_dataset(sweep, ANY_READING)
 
 
-def runs_by_dataset(onedof: dict) -> dict[str, tuple[str, str]]:
-    """Dataset path -> ("scene" | "sweep", its name in onedof.scenes / onedof.sweeps), from the config."""
-    out = {scene_dataset(name): ("scene", name) for name in onedof["scenes"]}
-    out.update({sweep_dataset(name): ("sweep", name) for name in onedof.get("sweeps") or {}})
+def runs_by_dataset(scenes: Iterable[str], sweeps: Iterable[str]) -> dict[str, tuple[str, str]]:
+    """Dataset path -> ("scene" | "sweep", its name), for the named 1-DOF scenes and sweeps."""
+    out = {scene_dataset(name): ("scene", name) for name in scenes}
+    out.update({sweep_dataset(name): ("sweep", name) for name in sweeps})
     return out
 
 
@@ -241,7 +243,7 @@ def _value_tag(value: float) -> str:
     return f"{value:g}".replace(".", "p")  # as workflow/scripts/onedof_sweeps.py names the variables
 
 
-def claim_run(row: Claim, onedof: dict) -> tuple[str, str, dict]:
+def claim_run(row: Claim, onedof: InverseOnedof) -> tuple[str, str, dict]:
     """(run name, metric, overrides relative to the defaults) of a value claim: its dataset looked up among
     the datasets the config's scenes and sweeps produce (``runs_by_dataset``)."""
     where = f"claim {row.id}"
@@ -250,13 +252,13 @@ def claim_run(row: Claim, onedof: dict) -> tuple[str, str, dict]:
     if row.comparable is False:
         raise ParameterError(f"{where}.comparable: false (the paper contradicts itself there); not fitted")
     path, variable = row.dataset, row.variable
-    kind, name = runs_by_dataset(onedof).get(path, (None, None))
+    kind, name = runs_by_dataset(onedof.scenes, onedof.sweeps).get(path, (None, None))
     if kind == "scene":
         if variable not in METRICS:
             raise ParameterError(f"{where}.variable: {variable!r} is not one of {METRICS}")
-        return name, variable, dict(onedof["scenes"][name].get("params", {}))
+        return name, variable, given(onedof.scenes[name].params)
     if kind == "sweep":
-        sweep = onedof["sweeps"][name]
+        sweep = onedof.sweeps[name]
         metric, _, tag = variable.rpartition("_at_")
         try:  # the paper's value is in the variable's name (0p9 = 0.9), whatever values a config sweeps
             value = float(tag.replace("p", "."))
@@ -264,39 +266,35 @@ def claim_run(row: Claim, onedof: dict) -> tuple[str, str, dict]:
             value = None
         if metric not in METRICS or value is None or _value_tag(value) != tag:
             raise ParameterError(f"{where}.variable: {variable!r} is not <metric>_at_<sweep value>")
-        param = sweep["parameter"]
-        overrides = {param: value, **{k: f * value for k, f in (sweep.get("linked") or {}).items()}}
-        base = dict(onedof["scenes"][sweep.get("scene") or onedof["baseline"]["scene"]].get("params", {}))
-        return f"{name}:{param}={value:g}", metric, {**base, **overrides}
+        overrides = {sweep.parameter: value, **{k: f * value for k, f in (sweep.linked or {}).items()}}
+        base = given(onedof.scenes[sweep.scene or onedof.baseline.scene].params)
+        return f"{name}:{sweep.parameter}={value:g}", metric, {**base, **overrides}
     raise ParameterError(
         f"{where}.dataset: {path!r} is neither the exact-solver dataset of a scene in onedof.scenes "
         f"({scene_dataset('<scene>')}) nor a sweep in onedof.sweeps ({sweep_dataset('<sweep>')})"
     )
 
 
-def _bounds(cfg: dict) -> dict:
-    return {name: (float(cfg["bounds"][name]["min"]), float(cfg["bounds"][name]["max"])) for name in PARAMS}
-
-
-def build_problem(config: dict, claims: dict[str, Claim], name: str, family: str) -> Problem:
+def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: str) -> Problem:
     """The identification problem of one figure (or ``joint``) for one model family."""
-    inv, onedof = config["inverse"], config["onedof"]
-    fam = inv["families"][family]
-    figures = inv["joint"] if name == "joint" else [name]
-    stated = {**onedof["defaults"]["params"], **inv.get("stated", {})}
-    if "plateau_speed" not in fam["free"]:
+    inv, onedof = job.inverse, job.onedof
+    fam = inv.families[family]
+    figures = inv.joint if name == "joint" else [name]
+    stated = {**given(onedof.defaults.params), **(inv.stated or {})}
+    if "plateau_speed" not in fam.free:
         stated["plateau_speed"] = math.inf
     runs: list[RunDef] = []
     observations = []
     fixed_everywhere: set[str] | None = None
     for fig in figures:
-        fig_cfg = inv["figures"][fig]
-        for cid in fig_cfg["claims"]:
+        figure = inv.figures[fig]
+        one_scene = name != "joint" and figure.scene is not None
+        for cid in figure.claims:
             if cid not in claims:
                 raise ParameterError(f"inverse.figures.{fig}.claims: {cid!r} is not a claim id")
             row = claims[cid]
             run_name, metric, overrides = claim_run(row, onedof)
-            if name != "joint" and "scene" in fig_cfg:
+            if one_scene:
                 overrides = {}  # one scene: every parameter free, its caption values the stated ones
             names = [r.name for r in runs]
             if run_name not in names:
@@ -316,31 +314,30 @@ def build_problem(config: dict, claims: dict[str, Claim], name: str, family: str
                     quote=row.quote,
                 )
             )
-        if name != "joint" and "scene" in fig_cfg:
-            stated.update(onedof["scenes"][fig_cfg["scene"]].get("params", {}))
+        if one_scene:
+            stated.update(given(onedof.scenes[figure.scene].params))
     for run in runs:
-        keys = {k for k in run.overrides if k in fam["free"]}
+        keys = {k for k in run.overrides if k in fam.free}
         fixed_everywhere = keys if fixed_everywhere is None else fixed_everywhere & keys
-    free = tuple(p for p in PARAMS if p in fam["free"] and p not in (fixed_everywhere or set()))
-    defaults = onedof["defaults"]
-    title = "Sections 3-5 jointly" if name == "joint" else inv["figures"][name]["title"]
+    free = tuple(p for p in PARAMS if p in fam.free and p not in (fixed_everywhere or set()))
+    defaults = onedof.defaults
     return Problem(
         name=name,
-        title=title,
+        title="Sections 3-5 jointly" if name == "joint" else inv.figures[name].title,
         family=family,
-        variant=fam["variant"],
+        variant=fam.variant,
         stated=stated,
         free=free,
-        bounds=_bounds(inv),
+        bounds={p: (inv.bounds[p].min, inv.bounds[p].max) for p in PARAMS},
         runs=tuple(runs),
         observations=tuple(observations),
         run_settings={
-            "t_end": float(defaults["t_end"]),
-            "output_dt": float(defaults["output_dt"]),
-            "transient": float(defaults.get("transient", 0.0)),
-            "count_window": float(defaults.get("count_window", PAPER_COUNT_WINDOW)),
+            "t_end": defaults.t_end,
+            "output_dt": defaults.output_dt,
+            "transient": defaults.transient or 0.0,
+            "count_window": defaults.count_window or PAPER_COUNT_WINDOW,
         },
-        nonnegative_plateau="nonnegative_plateau_friction" in (inv.get("constraints") or {}),
+        nonnegative_plateau="nonnegative_plateau_friction" in (inv.constraints or {}),
     )
 
 

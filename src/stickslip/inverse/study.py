@@ -12,6 +12,7 @@ import time
 
 import numpy as np
 
+from ..schema import Inverse, InverseJob, InverseSettings
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
 from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
@@ -23,15 +24,8 @@ from .profile import PL_CLOSE, PL_THRESHOLD, profile_identify
 from .structure import problem_structure
 
 
-def settings_of(config: dict) -> dict:
-    """The settings of the configured mode (``inverse.long``), checked by the typed config layer."""
-    inv = config["inverse"]
-    mode = "long" if inv.get("long", False) else "default"
-    return {**inv["settings"][mode], "mode": mode}
-
-
 def fit_problem(
-    problem: Problem, settings: dict, steps: int, loo: bool = False, candidates=(), conflicts: bool = True
+    problem: Problem, settings: InverseSettings, steps: int, loo=False, candidates=(), conflicts=True
 ) -> FamilyFit:
     """Best fit, region, minimal conflicting subsets (if inconsistent and ``conflicts``), identifiable
     dimensions and (optionally) leave-one-out residuals of one problem.
@@ -41,16 +35,16 @@ def fit_problem(
     """
     t0 = time.process_time()
     forward = Forward(problem)
-    seed = int(settings["seed"])
-    fit = best_fit(forward, settings["starts"], settings["max_nfev"], seed, candidates=candidates)
+    seed = settings.seed
+    fit = best_fit(forward, settings.starts, settings.max_nfev, seed, candidates=candidates)
     sampled = steps > 0 and np.isfinite(fit.chi2)  # an infeasible best fit has no region to sample from
-    region = sample_region(forward, fit, settings["walkers"], steps, seed) if sampled else None
+    region = sample_region(forward, fit, settings.walkers, steps, seed) if sampled else None
     search, source = None, "least squares"
     if conflicts and not fit.consistent:
         seeds = [fit.free_values, problem.stated_free] + (list(region.samples_free) if region else [])
         # a subset fit gets at most twice a full fit's iterations: the default build's CONFLICT_NFEV, fewer in
         # a build whose fits are token ones (CI size)
-        nfev = min(CONFLICT_NFEV, 2 * int(settings["max_nfev"]))
+        nfev = min(CONFLICT_NFEV, 2 * settings.max_nfev)
         search = minimal_conflicts(forward, seeds, max_nfev=nfev)
         if search.witness is not None:
             closest = problem.closest_equivalent(search.witness)
@@ -59,7 +53,7 @@ def fit_problem(
     # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
     # the straight-line analysis only, as does a figure the settings leave out (``profile``: the CI-size
     # configuration profiles one figure, to test the path, not all eight)
-    chosen = settings.get("profile")
+    chosen = settings.profile
     wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
     profiled = np.isfinite(fit.chi2) and wanted
     # the structure the data can at most bound: derived from the equations of the phases the fit visits; the
@@ -70,7 +64,7 @@ def fit_problem(
     # any profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled
     # again, for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken
     # from the deepest point they saw, and they judge a point to that resolution themselves)
-    restarts, nfev = 0, MINIMUM_NFEV_FACTOR * int(settings["max_nfev"])
+    restarts, nfev = 0, MINIMUM_NFEV_FACTOR * settings.max_nfev
     for round_ in range(MINIMUM_ROUNDS + 1 if profile is not None else 0):
         deeper = profile.floor < fit.chi2 - MINIMUM_TOL
         start = deepest_point(profile) if deeper else fit.free_values
@@ -89,9 +83,9 @@ def fit_problem(
     # the straight-line analysis, once, at the fit the profiles end at
     ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
-    refit = loo and settings["loo"] == "refit"
+    refit = loo and settings.loo == "refit"
     if refit:
-        loo_r = loo_refit(forward, fit, settings.get("loo_nfev", settings["max_nfev"]), seed)
+        loo_r = loo_refit(forward, fit, settings.refit_nfev, seed)
     else:
         loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
@@ -101,7 +95,7 @@ def fit_problem(
         fit=fit,
         region=region,
         loo=loo_r,
-        loo_method=settings["loo"] if loo else "linear",
+        loo_method=settings.loo if loo else "linear",
         stated_residuals=stated_r,
         residual_noise=noise,
         conflicts=search,
@@ -294,17 +288,14 @@ def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
     }
 
 
-def misprint_tables(
-    config: dict, claims: dict, joint: dict[str, FamilyFit], settings: dict
-) -> tuple[list, list]:
+def misprint_tables(inverse: Inverse, joint: dict[str, FamilyFit]) -> tuple[list, list]:
     """(hypothesis rows, ranking rows) on the joint problem of each family."""
     hyp_rows, rank_rows = [], []
+    points = inverse.mode_settings.scan_points
     for fam, r in joint.items():
         p = r.problem
-        rows = [stated_score(p)] + named_hypotheses(
-            p, config["inverse"]["hypotheses"], settings["scan_points"]
-        )
-        rows += single_changes(p, settings["scan_points"])
+        rows = [stated_score(p)] + named_hypotheses(p, inverse.hypotheses, points)
+        rows += single_changes(p, points)
         hyp_rows += [s.row(fam) for s in rows]
         sd = r.region.sd_log10 if r.region is not None else laplace_sd(p, r.fit.jacobian)
         rank_rows += [{"family": fam, **row} for row in ranking(p, r.fit.free_values, sd)]
@@ -316,19 +307,19 @@ def _as_free(problem: Problem, values: dict) -> np.ndarray:
     return np.array([values.get(p, problem.stated[p]) for p in problem.free], dtype=float)
 
 
-def run_study(config: dict, claims: dict, figures=None, families=None) -> dict:
+def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dict:
     """Everything the study writes, as datasets and rows (no files)."""
-    settings = settings_of(config)
-    inv = config["inverse"]
-    figures = list(figures or inv["figures"])
-    families = list(families or inv["families"])
-    out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "settings": settings, "cpu": {}}
+    inv = job.inverse
+    settings = inv.mode_settings
+    figures = list(figures or inv.figures)
+    families = list(families or inv.families)
+    out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "inverse": inv, "cpu": {}}
     fitted = {fam: [] for fam in families}  # per-figure fits: the joint fit's candidate starts
     for name in figures + ["joint"]:
-        steps = settings["joint_steps"] if name == "joint" else settings["steps"]
+        steps = settings.joint_steps if name == "joint" else settings.steps
         results = {}
         for fam in families:
-            problem = build_problem(config, claims, name, fam)
+            problem = build_problem(job, claims, name, fam)
             candidates = [_as_free(problem, c) for c in fitted[fam]] if name == "joint" else ()
             results[fam] = fit_problem(
                 problem,
@@ -339,13 +330,13 @@ def run_study(config: dict, claims: dict, figures=None, families=None) -> dict:
                 conflicts=name != "joint",
             )
             fitted[fam].append(dict(zip(problem.free, results[fam].fit.free_values)))
-        out["datasets"][name] = figure_dataset(name, results, settings)
+        out["datasets"][name] = figure_dataset(name, results, inv)
         out["summary"] += summary_rows(name, results)
         out["numbers"] += number_rows(name, results)
         out["conflicts"] += conflict_rows(name, results)
         out["cpu"][name] = sum(r.cpu for r in results.values())
         if name == "joint":
             t0 = time.process_time()
-            out["hypotheses"], out["ranking"] = misprint_tables(config, claims, results, settings)
+            out["hypotheses"], out["ranking"] = misprint_tables(inv, results)
             out["cpu"]["misprint scans"] = time.process_time() - t0
     return out

@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import PipelineConfig
+    from ..schema import Inverse, MethodsStudy, PipelineConfig, Validation
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -110,7 +110,7 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     try:
         _check_ensemble(config)
         _check_onedof(typed)
-        check_methods_config(config["methods_study"])
+        check_methods_config(typed.methods_study)
         _check_dense_maps(typed)
         from ..studies.fe_config import effective_fe_config
 
@@ -119,8 +119,8 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
             list(producible),
             allow_expensive=config.get("allow_expensive", False),
         )
-        _check_validation(config, list(producible))
-        _check_inverse_claims(config, claims)
+        _check_validation(typed.validation, list(producible))
+        _check_inverse_claims(typed.inverse, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
     return typed
@@ -136,13 +136,13 @@ def _check_ensemble(config: dict) -> None:
         raise ConfigError(str(exc) if str(exc).startswith("ensemble") else f"ensemble: {exc}") from None
 
 
-def _check_validation(config: dict, producible: list[str]) -> None:
-    from ..validation.setup import ValidationSetup
+def _check_validation(validation: Validation, producible: list[str]) -> None:
+    from ..validation.setup import check
 
-    ValidationSetup(config["validation"]).check(producible)
+    check(validation, producible)
 
 
-def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> None:
+def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None) -> None:
     """Every claim the inverse study fits to is a claim of the files ``inverse.claims_glob`` names. ``read``:
     rows already read, each with its file; the glob's files are read here only when it names one that
     no row came from (or nothing was read)."""
@@ -150,13 +150,13 @@ def _check_inverse_claims(config: dict, read: Sequence[Claim] | None = None) -> 
 
     from ..inverse.problem import by_id, load_claim_rows
 
-    files = {Path(p) for p in glob(config["inverse"]["claims_glob"])}
+    files = {Path(p) for p in glob(inverse.claims_glob)}
     if read is None or not files <= {Path(c.file) for c in read}:
         # read as the inverse study reads them: every file of the glob together (ids unique across them)
         read = list(load_claim_rows(sorted(str(f) for f in files)).values())
     claims = by_id(c for c in read if Path(c.file) in files)
-    for name, figure in config["inverse"]["figures"].items():
-        for claim in figure["claims"]:
+    for name, figure in inverse.figures.items():
+        for claim in figure.claims:
             if claim not in claims:
                 raise ConfigError(f"inverse.figures.{name}.claims: {claim!r} is not a claim id")
 
@@ -342,32 +342,26 @@ def check_friction_table(path, key: str) -> None:
         speeds.append(speed)
 
 
-def check_methods_config(cfg: dict) -> None:
+def check_methods_config(study: MethodsStudy) -> None:
     """Build every scene model and every swept method of the methods study, so a bad value fails before
-    any job starts with the config key named (the schema cannot see NaN or an unknown solver setting)."""
-    from ..model import BeltModel, BeltParams
+    any job starts with the config key named (what the schema cannot see: a scene's parameters together,
+    an unknown solver setting)."""
     from ..solvers import make_solver
-    from ..studies.methods import expand_methods
+    from ..studies.methods import expand_methods, scene_model
 
-    fm = cfg["failure_map"]
-    runs = [(f"methods_study.scenes.{s}", s, {}) for s in cfg["scenes"]]
+    fm = study.failure_map
+    runs = [(f"methods_study.scenes.{s}", s, {}) for s in study.scenes]
     runs += [
-        (f"methods_study.failure_map.values[{i}]", fm["scene"], {fm["parameter"]: v})
-        for i, v in enumerate(fm["values"])
+        (f"methods_study.failure_map.values[{i}]", fm.scene, {fm.parameter: v})
+        for i, v in enumerate(fm.values)
     ]
     for key, scene, overrides in runs:
-        if scene not in cfg["scenes"]:
-            raise ConfigError(f"{key}: {scene!r} is not a scene of methods_study.scenes")
-        spec = cfg["scenes"][scene]
         try:
-            BeltModel.build(
-                BeltParams.from_mapping({**cfg["base_params"], **spec.get("params", {}), **overrides}),
-                spec["variant"],
-            )
-        except (ParameterError, ValueError, TypeError, KeyError) as exc:
+            scene_model(study, scene, **overrides)
+        except (ValueError, TypeError) as exc:  # ParameterError among them
             raise ConfigError(f"{key} (with methods_study.base_params): {exc}") from None
-    groups = [("methods", cfg["methods"]), ("failure_map.methods", fm["methods"])]
-    groups.append(("paper_method", [cfg["paper_method"]]))
+    groups = [("methods", study.methods), ("failure_map.methods", fm.methods)]
+    groups.append(("paper_method", [study.paper_method]))
     for key, entries in groups:  # every swept combination of settings, not only the fixed ones
         for solver, settings, label in expand_methods(entries):
             try:

@@ -34,6 +34,7 @@ from .base import (  # noqa: F401  (re-exported)
     Variant,
     belt_parameter,
     check_refs,
+    given,
     linked_parameters,
     needs_switch,
 )
@@ -74,9 +75,11 @@ from .inverse import (  # noqa: F401  (re-exported)
     Hypothesis,
     Inverse,
     InverseFigure,
+    InverseJob,
+    InverseOnedof,
     InverseParameter,
     InverseSettings,
-    MuKRatio,
+    Range,
 )
 from .methods import (  # noqa: F401  (re-exported)
     Budget,
@@ -114,9 +117,13 @@ from .onedof import (  # noqa: F401  (re-exported)
     scene_run_lengths,
 )
 from .validation import (  # noqa: F401  (re-exported)
+    LawMethod,
+    LawMethodsJob,
+    LawRuns,
     LawTiming,
     MethodsPerLaw,
     Peer,
+    PeerJob,
     RoundTrip,
     SwitchSettings,
     Tolerance,

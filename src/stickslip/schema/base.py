@@ -59,10 +59,22 @@ def check_refs(refs, known: dict, section: str) -> None:
             raise ValueError(f"{key}: {name!r} is not an entry of {section} ({sorted(known)})")
 
 
+def given(section: BaseModel | None) -> dict:
+    """The values a config mapping sets, as a mapping: a key left out (None in the model) is absent, so
+    the consumer's own default applies; no mapping: nothing set."""
+    return section.model_dump(exclude_none=True) if section is not None else {}
+
+
 class Section(BaseModel):
     """A config mapping: unknown keys are errors (a misspelt key must not be silently ignored)."""
 
     model_config = ConfigDict(extra="forbid", strict=True)  # no "5" for 5: YAML types are meant
+
+    @classmethod
+    def part_of(cls, mapping: dict) -> dict:
+        """The entries of a config mapping this model reads: a job's params, when the job reads part of a
+        section (Snakemake re-runs it when one of them changes, not when the rest does)."""
+        return {key: mapping[key] for key in cls.model_fields if key in mapping}
 
 
 class Open(BaseModel):

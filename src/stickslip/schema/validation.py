@@ -13,7 +13,7 @@ from .onedof import BeltParameters, Law, check_run_lengths, merged_run_lengths
 
 class Tolerance(Section):
     abs: Positive
-    reason: Annotated[str, Field(min_length=1)]
+    reason: Annotated[str, Field(pattern=r"\S", description="why this tolerance (not blank)")]
 
 
 class ValidationTolerances(Section):
@@ -40,7 +40,7 @@ class ValidationLaw(Section):
     description: str | None = None
     law: Law
     params: BeltParameters | None = None
-    closed_form: bool | None = None
+    closed_form: bool = Field(False, description="compare with the textbook Coulomb cycle too")
 
 
 class RoundTrip(Section):
@@ -55,12 +55,17 @@ class LawTiming(Timing):
     max_cpu: Positive
 
 
+class LawMethod(StudyMethod):
+    #: the methods whose right-hand side is one sign equation, which any law fits, and the switch solver
+    solver: Literal["sign_rk", "smooth", "switch"]
+
+
 class MethodsPerLaw(Section):
     laws: list[str]
     t_end: Positive
     output_dt: Positive
     timing: LawTiming
-    methods: Annotated[list[StudyMethod], Field(min_length=1)]
+    methods: Annotated[list[LawMethod], Field(min_length=1)]
     paper_method: str
 
     @model_validator(mode="after")
@@ -69,14 +74,26 @@ class MethodsPerLaw(Section):
         return self
 
 
-class Validation(Section):
+# A job reads part of the section (its params): each part is a model, the whole section all of them.
+class LawRuns(Section):
+    """What a job solving the configured laws reads: the scene, the laws, the reference solver."""
+
     base_params: BeltParameters
-    t_end: Positive
     solver: SwitchSettings
+    laws: Annotated[dict[str, ValidationLaw], Field(min_length=1)]
+
+
+class PeerJob(LawRuns):
+    """The peer comparison's part: every law against CVODE and the closed form."""
+
+    t_end: Positive
     peer: Peer
     tolerances: ValidationTolerances
-    laws: Annotated[dict[str, ValidationLaw], Field(min_length=1)]
-    round_trip: RoundTrip
+
+
+class LawMethodsJob(LawRuns):
+    """The methods study on nonlinear laws' part."""
+
     methods_per_law: MethodsPerLaw
 
     @model_validator(mode="after")
@@ -84,3 +101,7 @@ class Validation(Section):
         refs = [("validation.methods_per_law.laws", name) for name in self.methods_per_law.laws]
         check_refs(refs, self.laws, "validation.laws")
         return self
+
+
+class Validation(PeerJob, LawMethodsJob):
+    round_trip: RoundTrip

@@ -3,8 +3,8 @@ config entries expanded to methods, one study run per scene, and the datasets th
 
 from __future__ import annotations
 
-import itertools
 import json
+from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -12,27 +12,20 @@ import numpy as np
 from ..analysis.errors import measure_run, segment_cycle_metrics
 from ..analysis.failure import FAILURE_KINDS, classify
 from ..model import BeltModel, BeltParams
+from ..schema import MethodsStudy, StudyMethod, Timing, given
 from ..solvers import make_solver
 
 if TYPE_CHECKING:  # the config check expands the methods at parse time: xarray only where data is made
     import xarray as xr
 
 
-def expand_methods(entries) -> list[tuple[str, dict, str]]:
-    """Config method entries -> list of (solver name, settings dict, label), one per swept combination."""
+def expand_methods(entries: Iterable[StudyMethod]) -> list[tuple[str, dict, str]]:
+    """Method entries -> (solver name, settings, label), one per swept combination."""
     out = []
     for entry in entries:
-        fixed = dict(entry.get("settings", {}))
-        sweep = entry.get("sweep", {})
-        keys = list(sweep)
-        for combo in itertools.product(*(sweep[k] for k in keys)) if keys else [()]:
-            settings = dict(fixed, **dict(zip(keys, combo)))
-            if "atol_per_rtol" in entry and "rtol" in settings:
-                settings["atol"] = settings["rtol"] * entry["atol_per_rtol"]
-            label = entry["solver"] + (
-                "[" + ",".join(f"{k}={v}" for k, v in settings.items()) + "]" if settings else ""
-            )
-            out.append((entry["solver"], settings, label))
+        for settings in entry.combinations():
+            shown = ",".join(f"{k}={v}" for k, v in settings.items())
+            out.append((entry.solver, settings, entry.solver + (f"[{shown}]" if settings else "")))
     return out
 
 
@@ -41,23 +34,23 @@ INTERPRETATION = (
 )
 
 
-def scene_model(cfg, scene: str, **overrides) -> BeltModel:
-    sc = cfg["scenes"][scene]
-    params = BeltParams.from_mapping({**cfg["base_params"], **sc.get("params", {}), **overrides})
-    return BeltModel.build(params, sc["variant"])
+def scene_model(study: MethodsStudy, scene: str, **overrides) -> BeltModel:
+    sc = study.scenes[scene]
+    params = BeltParams.from_mapping({**given(study.base_params), **given(sc.params), **overrides})
+    return BeltModel.build(params, sc.variant)
 
 
-def run_scene(cfg, model, t_end, methods, paper=True, timing=None):
+def run_scene(study: MethodsStudy, model, t_end, methods, paper=True, timing: Timing | None = None):
     """Reference + every method; returns (records, reference, ref_cycle, paper_record). ``timing`` replaces
-    ``cfg['timing']`` (the repeats of a timed run)."""
-    n = int(round(t_end / cfg["output_dt"])) + 1
+    the study's (the repeats of a timed run)."""
+    n = int(round(t_end / study.output_dt)) + 1
     t_eval = np.linspace(0.0, t_end, n)
     exact = make_solver("exact")
     ref = exact.solve(model, t_end, t_eval)
     if not ref.ok:
         raise RuntimeError(f"exact reference failed: {ref.stats.message}")
     ref_cycle = segment_cycle_metrics(exact.segments(model, t_end))
-    kw = dict(cfg["budget"], **(timing if timing is not None else cfg["timing"]))
+    kw = {**study.budget.model_dump(), **(timing or study.timing).model_dump()}
     records = []
     for name, settings, label in methods:
         traj, rec = measure_run(make_solver(name, **settings), model, t_end, t_eval, ref, ref_cycle, **kw)
@@ -66,17 +59,16 @@ def run_scene(cfg, model, t_end, methods, paper=True, timing=None):
         records.append(rec)
     paper_rec = None
     if paper:
-        pm = cfg["paper_method"]
-        paper_settings = pm.get("settings", {})
+        solver, paper_settings = study.paper_method.solver, study.paper_method.settings or {}
         # The paper's method is usually one of the listed settings: a deterministic run, so not run twice
         # (in the decelerating scene it stalls: 2.6 s of CPU to the budget).
         paper_rec = next(
-            (r for r, (name, s, _) in zip(records, methods) if name == pm["solver"] and s == paper_settings),
+            (r for r, (name, s, _) in zip(records, methods) if name == solver and s == paper_settings),
             None,
         )
         if paper_rec is None:
             _, paper_rec = measure_run(
-                make_solver(pm["solver"], **paper_settings), model, t_end, t_eval, ref, ref_cycle, **kw
+                make_solver(solver, **paper_settings), model, t_end, t_eval, ref, ref_cycle, **kw
             )
     return records, ref, ref_cycle, paper_rec
 
@@ -127,11 +119,11 @@ def records_dataset(records, dim="run") -> xr.Dataset:
     return ds
 
 
-def work_precision_dataset(cfg: dict, scene: str) -> tuple[xr.Dataset, BeltModel]:
+def work_precision_dataset(study: MethodsStudy, scene: str) -> tuple[xr.Dataset, BeltModel]:
     """Every method of ``methods_study.methods`` on one scene, against the exact reference, with each run's
     CPU time relative to the paper's method on the same machine and run."""
-    model = scene_model(cfg, scene)
-    records, _, ref_cycle, paper = run_scene(cfg, model, cfg["t_end"], expand_methods(cfg["methods"]))
+    model = scene_model(study, scene)
+    records, _, ref_cycle, paper = run_scene(study, model, study.t_end, expand_methods(study.methods))
     ds = records_dataset(records)
     ds["cpu_ratio_to_paper"] = (
         "run",
@@ -144,35 +136,35 @@ def work_precision_dataset(cfg: dict, scene: str) -> tuple[xr.Dataset, BeltModel
         paper_method_rhs_evaluations=paper["rhs_evaluations"],
         reference_period=ref_cycle["period"],
         reference_amplitude=ref_cycle["amplitude"],
-        t_end=cfg["t_end"],
+        t_end=study.t_end,
     )
     return ds, model
 
 
 #: The failure map records which runs fail and how, not how fast they are: each run once (a third of the
 #: map's CPU went to repeating its short runs for a timing no chart shows).
-FAILURE_MAP_TIMING = {"min_repeats": 1, "max_repeats": 1, "min_total_cpu": 0.0, "slow_run": 0.0}
+FAILURE_MAP_TIMING = Timing(min_repeats=1, max_repeats=1, min_total_cpu=0.0)
 
 
-def failure_map_dataset(cfg: dict) -> xr.Dataset:
+def failure_map_dataset(study: MethodsStudy) -> xr.Dataset:
     """``methods_study.failure_map``: every method's run and failure flags over one swept parameter."""
     import xarray as xr
 
-    fm = cfg["failure_map"]
-    methods = expand_methods(fm["methods"])
+    fm = study.failure_map
+    methods = expand_methods(fm.methods)
     rows = []
-    for value in fm["values"]:
-        model = scene_model(cfg, fm["scene"], **{fm["parameter"]: value})
-        records, *_ = run_scene(cfg, model, fm["t_end"], methods, paper=False, timing=FAILURE_MAP_TIMING)
+    for value in fm.values:
+        model = scene_model(study, fm.scene, **{fm.parameter: value})
+        records, *_ = run_scene(study, model, fm.t_end, methods, paper=False, timing=FAILURE_MAP_TIMING)
         rows.append(records_dataset(records))
     ds = xr.concat(rows, dim="parameter")
     ds = ds.assign_coords(
         parameter=(
             "parameter",
-            np.array(fm["values"], dtype=float),
+            np.array(fm.values, dtype=float),
             {
-                "long_name": f"swept parameter {fm['parameter']}",
-                "units": "s mm-1" if fm["parameter"] == "sigma" else "1",
+                "long_name": f"swept parameter {fm.parameter}",
+                "units": "s mm-1" if fm.parameter == "sigma" else "1",
             },
         ),
         run=("run", np.arange(len(methods))),
@@ -181,8 +173,8 @@ def failure_map_dataset(cfg: dict) -> xr.Dataset:
     ds["label"] = ("run", labels, {"long_name": "method and settings"})
     ds.attrs.update(
         title="Failure map of integration methods",
-        swept_parameter=fm["parameter"],
-        t_end=fm["t_end"],
+        swept_parameter=fm.parameter,
+        t_end=fm.t_end,
         timing="each run once: cpu_time is a single measurement",
     )
     return ds

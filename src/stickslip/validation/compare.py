@@ -10,31 +10,16 @@ import numpy as np
 from ..analysis.friction_curve import friction_table
 from ..model.laws import FrictionLaw, LawModel, TabulatedLaw
 from ..model.params import ParameterError
+from ..schema import Peer, Tolerance
 from ..solvers.base import STICK
 from ..solvers.exact import sample_segments
 from ..solvers.switch import SwitchSolver
 from .closed_form import coulomb_cycle
 from .cycle import QUANTITIES, cycle_quantities, record_from_segments
-from .peer import PeerSettings, peer_events
+from .peer import peer_events
 
 #: Which tolerance (config ``validation.tolerances``) applies to each quantity, by its units.
 TOLERANCE_CLASS = {q: ("time" if units == "s" else "position") for q, (units, _) in QUANTITIES.items()}
-
-
-@dataclass(frozen=True)
-class Tolerance:
-    abs: float
-    reason: str
-
-    @classmethod
-    def from_config(cls, key: str, entry: dict) -> Tolerance:
-        try:
-            value, reason = float(entry["abs"]), str(entry["reason"])
-        except (KeyError, TypeError, ValueError) as exc:
-            raise ParameterError(f"{key}: needs 'abs' (a number) and 'reason' ({exc})") from None
-        if not (np.isfinite(value) and value > 0) or not reason.strip():
-            raise ParameterError(f"{key}.abs: must be a finite number > 0 with a reason, got {value!r}")
-        return cls(value, reason)
 
 
 def compare_row(law: str, quantity: str, reference: str, value, ref_value, tol: Tolerance) -> dict:
@@ -59,7 +44,7 @@ def peer_comparison(
     model: LawModel,
     t_end: float,
     solver: SwitchSolver,
-    peer: PeerSettings,
+    peer: Peer,
     tolerances: dict[str, Tolerance],
     closed_form: bool = False,
 ) -> tuple[list[dict], dict]:

@@ -11,17 +11,14 @@ sign form only knows mu(0+), so it is studied with continuous laws (Stribeck, 1/
 
 from __future__ import annotations
 
-import itertools
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..model.laws import LawModel
-from ..model.params import ParameterError
+from ..schema import LawMethod, MethodsPerLaw
 from ..solvers import make_solver
-
-#: Methods that take a single-equation model (``SignLawModel``); "switch" takes the law model itself.
-SIGN_METHODS = ("sign_rk", "smooth")
 
 
 @dataclass(frozen=True)
@@ -60,28 +57,13 @@ class SignLawModel:
         return np.array([y[1], self.acceleration(t, y[0], y[1], sign=sign)])
 
 
-def expand_methods(entries: list[dict]) -> list[tuple[str, dict, str]]:
-    """Config entries {solver, settings, sweep, atol_per_rtol} -> (solver, settings, label) per run."""
+def expand_methods(entries: Iterable[LawMethod]) -> list[tuple[str, dict, str]]:
+    """Method entries -> (solver, settings, label), one per swept combination."""
     out = []
-    for i, entry in enumerate(entries):
-        solver = entry.get("solver")
-        if solver not in SIGN_METHODS + ("switch",):
-            raise ParameterError(
-                f"validation.methods_per_law.methods[{i}].solver: {solver!r} is not one of "
-                f"{SIGN_METHODS + ('switch',)} (the methods that accept any law)"
-            )
-        fixed, sweep = dict(entry.get("settings", {})), dict(entry.get("sweep", {}))
-        for combo in itertools.product(*sweep.values()):
-            settings = {**fixed, **dict(zip(sweep, combo))}
-            if "atol_per_rtol" in entry:
-                settings["atol"] = settings["rtol"] * entry["atol_per_rtol"]
-            try:
-                make_solver(solver, **settings)
-            except (ValueError, TypeError) as exc:
-                raise ParameterError(f"validation.methods_per_law.methods[{i}]: {exc}") from None
+    for entry in entries:
+        for settings in entry.combinations():
             shown = (f"{k}={v:g}" if isinstance(v, float) else f"{k}={v}" for k, v in settings.items())
-            label = solver + "[" + ",".join(shown) + "]"
-            out.append((solver, settings, label))
+            out.append((entry.solver, settings, entry.solver + "[" + ",".join(shown) + "]"))
     return out
 
 
@@ -90,14 +72,16 @@ def model_for(solver: str, law_model: LawModel):
     return law_model if solver == "switch" else SignLawModel(law_model)
 
 
-def methods_study(law_model: LawModel, entries: list[dict], t_end: float, t_eval, reference, timing: dict):
+def methods_study(law_model: LawModel, study: MethodsPerLaw, reference):
     """One record per method run: errors against the switch-solver reference, CPU time, work counters."""
     from ..analysis.errors import measure_run, segment_cycle_metrics
 
+    t_end = study.t_end
+    t_eval = np.linspace(0.0, t_end, int(round(t_end / study.output_dt)) + 1)
     ref = reference.solve(law_model, t_end, t_eval)
     ref_cycle = segment_cycle_metrics(reference.segments(law_model, t_end))  # to machine precision
     records = []
-    for solver, settings, label in expand_methods(entries):
+    for solver, settings, label in expand_methods(study.methods):
         _, record = measure_run(
             make_solver(solver, **settings),
             model_for(solver, law_model),
@@ -105,7 +89,7 @@ def methods_study(law_model: LawModel, entries: list[dict], t_end: float, t_eval
             t_eval,
             ref,
             ref_cycle,
-            **timing,
+            **study.timing.model_dump(),
         )
         records.append({"label": label, "solver": solver, **record})
     return records, ref_cycle

@@ -17,23 +17,17 @@ law's formula (``law.mu_continued``, a one-line expression tested against its de
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from ..model.laws import LawModel
+from ..schema import Peer
 from .cycle import EventRecord
 
-
-@dataclass(frozen=True)
-class PeerSettings:
-    method: str = "Adams"
-    rtol: float = 1e-11
-    atol: float = 1e-13
-    max_num_steps: int = 200_000
+#: CVODE steps of one phase at most (a phase of a 60 s run takes ~1e2).
+MAX_NUM_STEPS = 200_000
 
 
-def _cvode(rhs, events, n_events, terminal, direction, settings: PeerSettings):
+def _cvode(rhs, events, n_events, terminal, direction, settings: Peer):
     import sksundae as sun
 
     events.terminal = terminal
@@ -45,7 +39,7 @@ def _cvode(rhs, events, n_events, terminal, direction, settings: PeerSettings):
         atol=settings.atol,
         eventsfn=events,
         num_events=n_events,
-        max_num_steps=settings.max_num_steps,
+        max_num_steps=MAX_NUM_STEPS,
     )
 
 
@@ -63,7 +57,7 @@ def _slip_functions(s: int, law, m, c, k, n, vb):
     return rhs, events
 
 
-def peer_events(model: LawModel, t_end: float, settings: PeerSettings = PeerSettings()):
+def peer_events(model: LawModel, t_end: float, settings: Peer):
     """Run the hybrid system to ``t_end`` with CVODE; (EventRecord, counters). Constant belt speed only."""
     p = model.params
     if p.belt_deceleration != 0.0:

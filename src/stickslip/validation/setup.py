@@ -1,99 +1,65 @@
-"""The ``validation`` config section (typed by ``stickslip.schema``) as objects: solvers, laws,
-parameters and tolerances, each checking its physics at construction, the error naming its key."""
+"""The ``validation`` section (typed by ``stickslip.schema``) as the objects a job runs: solvers, laws,
+parameters and the peer's settings, each checking its physics at construction, the error naming its key."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 
 from ..model.laws import FrictionLaw, LawModel, law_from_config
 from ..model.params import BeltParams, ParameterError
+from ..schema import LawRuns, SwitchSettings, Validation, given
+from ..solvers import make_solver
 from ..solvers.switch import SwitchSolver
-from .compare import Tolerance
-from .peer import PeerSettings
 
 
-@dataclass(frozen=True)
-class ValidationSetup:
-    cfg: dict
+def switch_solver(settings: SwitchSettings | None, key: str) -> SwitchSolver:
+    """The switch solver with these settings (None: its defaults); an unknown setting names ``key``."""
+    try:
+        return SwitchSolver(**given(settings))
+    except (TypeError, ParameterError) as exc:
+        raise ParameterError(f"{key}: {exc}") from None
 
-    def _section(self, *keys):
-        node = self.cfg
-        for key in keys:
-            node = node[key]
-        return node
 
-    @property
-    def t_end(self) -> float:
-        return float(self._section("t_end"))
+def law(job: LawRuns, name: str) -> FrictionLaw:
+    return law_from_config(given(job.laws[name].law), key=f"validation.laws.{name}.law")
 
-    def solver(self) -> SwitchSolver:
+
+def law_params(job: LawRuns, name: str) -> BeltParams:
+    """The scene of one law: the section's base parameters, then the law entry's own."""
+    try:
+        return BeltParams.from_mapping({**given(job.base_params), **given(job.laws[name].params)})
+    except ParameterError as exc:
+        raise ParameterError(f"validation.laws.{name}.params.{exc}") from None
+
+
+def law_model(job: LawRuns, name: str) -> LawModel:
+    return LawModel(law_params(job, name), law(job, name))
+
+
+def table_paths(job: LawRuns) -> list[str]:
+    """Friction tables the laws read (DAG inputs of the peer rule)."""
+    return [entry.law.path for entry in job.laws.values() if entry.law.kind == "tabulated"]
+
+
+def check(validation: Validation, producible: list[str]) -> None:
+    """Build everything that can be built before any job runs; tables must exist or be rule outputs."""
+    from .methods import expand_methods
+
+    switch_solver(validation.solver, "validation.solver")
+    for name, entry in validation.laws.items():
+        law_params(validation, name)
+        path = getattr(entry.law, "path", None)
+        if entry.law.kind != "tabulated" or path is None:
+            law(validation, name)
+        elif path not in producible and not Path(str(path)).is_file():  # a rule's table is read by the job
+            raise ParameterError(
+                f"validation.laws.{name}.law.path: {path!r} neither exists nor is made by a rule"
+            )
+    rt = validation.round_trip
+    law_from_config(given(rt.curved_law), key="validation.round_trip.curved_law")
+    switch_solver(rt.curved_solver, "validation.round_trip.curved_solver")
+    for solver, settings, label in expand_methods(validation.methods_per_law.methods):
         try:
-            return SwitchSolver(**self._section("solver"))
-        except (TypeError, ParameterError) as exc:
-            raise ParameterError(f"validation.solver.{exc}") from None
-
-    def peer(self) -> PeerSettings:
-        entry = {k: v for k, v in self._section("peer").items() if k != "program"}
-        try:
-            return PeerSettings(**entry)
-        except TypeError as exc:
-            raise ParameterError(f"validation.peer: {exc}") from None
-
-    def tolerances(self) -> dict[str, Tolerance]:
-        tol = self._section("tolerances")
-        return {
-            k: Tolerance.from_config(f"validation.tolerances.{k}", tol.get(k))
-            for k in ("time", "position", "closed_form")
-        }
-
-    def closed_form(self, name: str) -> bool:
-        return bool(self._section("laws", name).get("closed_form", False))
-
-    def law_names(self) -> list[str]:
-        return list(self._section("laws"))
-
-    def law(self, name: str) -> FrictionLaw:
-        return law_from_config(self._section("laws", name, "law"), key=f"validation.laws.{name}.law")
-
-    def params(self, name: str) -> BeltParams:
-        overrides = self._section("laws", name).get("params", {})
-        try:
-            return BeltParams.from_mapping({**self._section("base_params"), **overrides})
-        except ParameterError as exc:
-            raise ParameterError(f"validation.laws.{name}.params.{exc}") from None
-
-    def model(self, name: str) -> LawModel:
-        return LawModel(self.params(name), self.law(name))
-
-    def table_paths(self) -> list[str]:
-        """Friction tables the laws read (DAG inputs of the peer rule)."""
-        return [
-            self._section("laws", n, "law")["path"]
-            for n in self.law_names()
-            if self._section("laws", n, "law").get("kind") == "tabulated"
-        ]
-
-    def check(self, producible: list[str]) -> None:
-        """Build everything that can be built before any job runs; tables must exist or be rule outputs."""
-        self.t_end, self.solver(), self.peer(), self.tolerances()
-        for name in self.law_names():
-            self.params(name)
-            entry = self._section("laws", name, "law")
-            if isinstance(entry, dict) and entry.get("kind") == "tabulated":
-                path = entry.get("path")
-                if path not in producible and not Path(str(path)).is_file():
-                    raise ParameterError(
-                        f"validation.laws.{name}.law.path: {path!r} neither exists nor is made by a rule"
-                    )
-            else:
-                self.law(name)
-        rt = self._section("round_trip")
-        law_from_config(rt["curved_law"], key="validation.round_trip.curved_law")
-        try:
-            SwitchSolver(**(rt.get("curved_solver") or {}))
-        except (TypeError, ParameterError) as exc:
-            raise ParameterError(f"validation.round_trip.curved_solver: {exc}") from None
-        from .methods import expand_methods
-
-        expand_methods(self._section("methods_per_law")["methods"])
+            make_solver(solver, **settings)
+        except (ValueError, TypeError) as exc:
+            raise ParameterError(f"validation.methods_per_law.methods: {label}: {exc}") from None
