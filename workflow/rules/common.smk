@@ -11,7 +11,7 @@ from stickslip.io.run_variables import run_dataset_variables
 import stickslip.catalogue as paths
 from stickslip.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
-from stickslip.studies.fe_config import effective_fe_config, job_config as fe_job_config
+from stickslip.studies.fe_config import effective_fe, job_config as fe_job_config
 from stickslip.studies.specs import dense_map
 
 #: Files a rule writes that the config may name as inputs before they exist.
@@ -25,7 +25,7 @@ CLAIMS = load_claims(CLAIM_FILES)
 # An override file removes an entry by setting it to null; then every config value is checked, before any
 # job starts, an error naming its key (stickslip.pipeline.config).
 drop_removed(config)
-validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
+CONFIG = validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).
 ENSEMBLE = config.get("ensemble")
