@@ -695,6 +695,7 @@ def simulate_fe(
     from . import catalogue as paths
     from .catalogue import friction_table as rule_friction_table
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
+    from .fe.params import SolverParams
     from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError, merge, validate_config
@@ -741,7 +742,8 @@ def simulate_fe(
     if ensemble and model == "beam":
         given = typed.ensemble.model_dump(exclude_none=True) if typed.ensemble else None
         spec = replace(EnsembleSpec.from_mapping(given).without_blas(), step_factor=HALF_STEP)
-        _check_fe_ensemble_cost(config, mapping, spec)
+        solver = SolverParams.from_mapping(mapping["solver"])  # samples per run: t_end / output_dt
+        check_ensemble_cost(spec, solver.t_end / solver.output_dt + 1, config)
     friction = _fe_friction_table(config, fe.friction_table, base_root, friction_table)
     if model == "continuum":
         nx, ny = fe.comparison.mesh
@@ -761,15 +763,6 @@ def simulate_fe(
     ds.attrs["fe_reading"] = reading
     attrs = {"scene": mapping, "interpretation": INTERPRETATION, "method": {"fe_reading": reading}}
     return _finish(ds, attrs, output)
-
-
-def _check_fe_ensemble_cost(config: dict, mapping: Mapping, spec) -> None:
-    """``check_ensemble_cost`` of an FE scene's ensemble (samples per run: t_end / output_dt)."""
-    solver = mapping.get("solver") or {}
-    samples = (
-        solver["t_end"] / solver["output_dt"] + 1 if solver.get("t_end") and solver.get("output_dt") else 0
-    )
-    check_ensemble_cost(spec, samples, config)
 
 
 def _fe_friction_table(config: dict, configured: str, root: Path, given):

@@ -19,7 +19,8 @@ from ..schema.fe import Fe, FeJob, FeScene
 #: The fields of an FE mapping (a scene's, or the ``fe`` section a study reads) that the perturbation
 #: ensemble perturbs (stickslip.ensemble.declared): the physical parameters and the numerical settings.
 #: Never the windows and samplings of the output (t_end, output_dt, bin_width, windows, e-fold budgets) nor
-#: counts (element numbers, meshes).
+#: counts (element numbers, meshes), nor the increment study's grid (a safety factor of 1 is its bound, and
+#: the study never read its members' grid: their base scene is what moves).
 PERTURBED_FIELDS = (
     "beam.length",
     "beam.thickness",
@@ -41,8 +42,6 @@ PERTURBED_FIELDS = (
     "stability.slopes",
     "stability.crosscheck",
     "convergence.safety_factors",
-    "increments.safety_factors",
-    "increments.betas",
 )
 
 
