@@ -708,16 +708,6 @@ def simulate_fe(
     output = check_output(output, base_root, force=force, config=config)
     if model not in ("beam", "continuum"):
         raise ConfigError(f"model: {model!r} is not one of ['beam', 'continuum']")
-    if t_end is not None:
-        import math
-
-        if (
-            isinstance(t_end, bool)
-            or not isinstance(t_end, (int, float))
-            or not math.isfinite(t_end)
-            or t_end <= 0
-        ):
-            raise ConfigError(f"t_end: the simulated window [s] must be a finite number > 0, got {t_end!r}")
     # the config as given (not yet validated): your scene and window go on top of it, as a config file would
     name, entry = fe_scene_name(config["fe"]["scenes"], scene, speed, rpm)
     yours: dict = {"scenes": {name: entry}} if entry is not None else {}
@@ -725,7 +715,7 @@ def simulate_fe(
         window = {"scenes": {name: {"solver": {"t_end": t_end}}}, "control_readings_t_end": t_end}
         yours = merge(yours, window)
     config = merge(config, {"fe": yours})
-    try:  # the whole config checked as the Snakefile checks it (scenes, readings, cost)
+    try:  # the whole config checked as the Snakefile checks it (your window and scene, readings, cost)
         typed = validate_config(config, producible=[rule_friction_table()])
     except ConfigError as exc:
         costly = ("samples over solver.t_end", "element-increments")

@@ -4,8 +4,7 @@
 #: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
 #: resolved (stickslip.studies.fe_config.job_config): a value re-runs exactly the jobs that read it.
 FE_EFFECTIVE = effective_fe(CONFIG)
-#: the section as a mapping, for the rules files that read it so (page.smk)
-FE = CONFIG.fe.model_dump(exclude_none=True)
+FE = CONFIG.fe.model_dump(exclude_none=True)  # as a mapping, for the rules files that read it so (page.smk)
 FE_SCENES = list(FE_EFFECTIVE.scenes)
 FE_READINGS = list(FE_EFFECTIVE.readings)
 FE_DEFAULT_READING = FE_READINGS[0]

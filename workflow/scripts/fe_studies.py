@@ -16,7 +16,7 @@ from stickslip.studies.fe_sweeps import sweep_dataset, sweep_half_step
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 # the studies' sections and base scenes (studies.fe_config.job_config): the ensemble perturbs this mapping,
-# and each study reads its part of a member typed (study_job)
+# each study reads its part of a member typed (study_job), and a dataset records its section as given
 params = snakemake.params.config  # noqa: F821
 job = FeJob.model_validate(params)
 out = snakemake.output  # noqa: F821
@@ -30,11 +30,9 @@ for name, path in zip(snakemake.params.sweeps, out.sweeps, strict=True):  # noqa
         run_id=path,
         fields=PERTURBED_FIELDS,
     )
-    sweep = job.sweeps[name]
-    ds = apply_step_halving(ds, sweep_half_step(job, name, friction), along=sweep.coord)
+    ds = apply_step_halving(ds, sweep_half_step(job, name, friction), along=job.sweeps[name].coord)
     method = {"integrator": "central_difference", "sweep": name}
-    scene = sweep.model_dump(exclude_none=True)
-    write_dataset(ds, path, scene=scene, interpretation=INTERPRETATION, method=method)
+    write_dataset(ds, path, scene=params["sweeps"][name], interpretation=INTERPRETATION, method=method)
     print(
         f"sweep {name} written; not converged at half step: {ds.attrs['step_halving_not_converged']}",
         flush=True,
@@ -48,8 +46,7 @@ for kind, build in (("convergence", convergence_dataset), ("stability", stabilit
         run_id=out[kind],
         fields=PERTURBED_FIELDS,
     )
-    scene = getattr(job, kind).model_dump(exclude_none=True)
-    write_dataset(ds, out[kind], scene=scene, interpretation=INTERPRETATION, method={"study": kind})
+    write_dataset(ds, out[kind], scene=params[kind], interpretation=INTERPRETATION, method={"study": kind})
     print(f"{kind} written", flush=True)
 ds = ensemble_dataset(
     lambda c: increments_dataset(study_job(c, "increments")),
@@ -58,5 +55,6 @@ ds = ensemble_dataset(
     run_id=out.increments,
     fields=PERTURBED_FIELDS,
 )
-inc = job.increments.model_dump(exclude_none=True)
-write_dataset(ds, out.increments, scene=inc, interpretation=INTERPRETATION, method={"kind": "eigen"})
+write_dataset(
+    ds, out.increments, scene=params["increments"], interpretation=INTERPRETATION, method={"kind": "eigen"}
+)
