@@ -36,14 +36,16 @@ CHILD = r"""
 import json, sys, yaml
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
 cases, scale = json.loads(sys.argv[1])
 cfg = yaml.safe_load(open("config/fe.yaml"))["fe"]
+FE = Fe.model_validate(cfg)  # the typed section: scenes resolve over its defaults and readings
 fr = FrictionTable.paper_fig17()
 out = {}
 for label, kind, name, window, extra in cases:
     window *= scale
-    m = scene_mapping(cfg, name)
+    m = scene_mapping(FE, name)
     if kind == "beam":
         from stickslip.fe.explicit import integrate
         from stickslip.fe.reduced import contact_boundary, craig_bampton

@@ -20,14 +20,16 @@ from stickslip.fe.explicit import integrate
 from stickslip.fe.metrics import trajectory_metrics
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.scene import SceneParams, build_scene
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import deep_merge, scene_mapping
 from stickslip.studies.fe_continuum import continuum_scene_from_mapping
 from stickslip.studies.fe_scene import run_scene
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 0.05
 cfg = yaml.safe_load(open("config/fe.yaml"))["fe"]
+FE = Fe.model_validate(cfg)  # the typed section: scenes resolve over its defaults and readings
 fr = FrictionTable.paper_fig17()
-base = scene_mapping(cfg, "section9_kinematic_0p5mm_s")
+base = scene_mapping(FE, "section9_kinematic_0p5mm_s")
 p = SceneParams.from_mapping({k: base[k] for k in ("beam", "disc", "contact", "solver")})
 sc = build_scene(p, fr)
 kw = dict(initial_state="drop", stiffness_damping=p.solver.stiffness_damping, output_interval=2.5e-6)
@@ -54,7 +56,7 @@ hdr += f" {'stick':>6s}"
 print(hdr)
 print("-" * len(hdr))
 for scene in ("section9_kinematic_0p5mm_s", "section11_penalty_15p2rpm", "section12_angle30_15p2rpm"):
-    mp = deep_merge(scene_mapping(cfg, scene), {"solver": {"t_end": WINDOW}})
+    mp = deep_merge(scene_mapping(FE, scene), {"solver": {"t_end": WINDOW}})
     ps = SceneParams.from_mapping({k: mp[k] for k in ("beam", "disc", "contact", "solver")})
     cs = continuum_scene_from_mapping(mp, fr, 100, 1)
     integrate_continuum(cs, 1e-5)  # compile outside the timing

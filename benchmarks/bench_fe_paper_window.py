@@ -19,12 +19,14 @@ import yaml
 
 from stickslip.fe import mechanics as mc
 from stickslip.fe.params import BeamParams, DiscParams, FrictionTable
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import deep_merge, scene_mapping
 from stickslip.studies.fe_scene import run_scene
 
 WINDOW = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 ROOT = Path(__file__).resolve().parents[1]
 cfg = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
+FE = Fe.model_validate(cfg)  # the typed section: scenes resolve over its defaults and readings
 table = ROOT / cfg["friction_table"]
 friction = FrictionTable.from_csv(table) if table.exists() else FrictionTable.paper_fig17()
 b = BeamParams()
@@ -40,7 +42,7 @@ head = f"{'scene':34s} {'model':8s} {'cpu/s sim':>9s} {'amplitude':>10s} {'centr
 print(head + f" {'closed-form growth':>19s}")
 cost = {"full": 0.0, "reduced": 0.0}
 for name in cfg["scenes"]:
-    mp = deep_merge(scene_mapping(cfg, name), {"solver": {"t_end": WINDOW}})
+    mp = deep_merge(scene_mapping(FE, name), {"solver": {"t_end": WINDOW}})
     speed = DiscParams.from_mapping(mp["disc"]).surface_speed
     rate = mc.negative_damping_growth_rate(n0, friction.slope(speed), a_tip, omega, beta)
     for model, reduced in (("full", None), ("reduced", cfg["reduced"])):

@@ -176,15 +176,6 @@ def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path
     return config
 
 
-def _validated(config: dict) -> dict:
-    """The whole config checked as the Snakefile checks it (a beam-on-disc run: scenes, readings, cost)."""
-    from .catalogue import friction_table
-    from .pipeline.config import validate_config
-
-    validate_config(config, producible=[friction_table()])  # the one input that is some rule's output
-    return config
-
-
 def onedof_project(config: Mapping) -> OnedofProject:
     """The sections a 1-DOF run reads, typed (``stickslip.schema.OnedofProject``): ``ConfigError`` naming the
     key of every bad value."""
@@ -635,18 +626,17 @@ def _stem(scene: str) -> str:
 
 
 def fe_scene_name(
-    fe_cfg: Mapping, scene: str, speed: float | None = None, rpm: float | None = None
+    scenes: Mapping[str, Mapping], scene: str, speed: float | None = None, rpm: float | None = None
 ) -> tuple[str, dict | None]:
-    """(name, entry) of the scene to run: a scene of ``fe.scenes`` by its name, or by its stem and a disc
-    speed, ``speed`` (surface speed [mm/s]) or ``rpm`` [rev/min]. A configured speed is that scene
-    (``section9_kinematic`` with speed 0.5 is ``section9_kinematic_0p5mm_s``, entry None); any other speed
-    is a new scene (entry: the stem's scene with its disc speed replaced), named as the config names them
-    (``section9_kinematic_2mm_s``, ``section9_kinematic_30rpm``)."""
+    """(name, entry) of the scene to run: a scene of ``scenes`` (``fe.scenes`` as given) by its name, or by
+    its stem and a disc speed, ``speed`` (surface speed [mm/s]) or ``rpm`` [rev/min]. A configured speed
+    is that scene (``section9_kinematic`` with speed 0.5 is ``section9_kinematic_0p5mm_s``, entry None); any
+    other speed is a new scene (entry: the stem's scene with its disc speed replaced), named as the config
+    names them (``section9_kinematic_2mm_s``, ``section9_kinematic_30rpm``)."""
     import math
 
     from .pipeline.config import ConfigError
 
-    scenes = fe_cfg.get("scenes", {})
     given = [(k, v) for k, v in (("speed", speed), ("rpm", rpm)) if v is not None]
     if len(given) > 1:
         raise ConfigError("speed: give --speed (mm/s) or --rpm (rev/min), not both")
@@ -713,11 +703,13 @@ def simulate_fe(
     from dataclasses import replace
 
     from . import catalogue as paths
+    from .catalogue import friction_table as rule_friction_table
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
+    from .fe.params import SolverParams, bounds
     from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
-    from .pipeline.config import ConfigError
-    from .studies.fe_config import PERTURBED_FIELDS, effective_fe_config, scene_mapping
+    from .pipeline.config import ConfigError, merge, validate_config
+    from .studies.fe_config import PERTURBED_FIELDS, effective_fe, scene_mapping
     from .studies.fe_continuum import continuum_dataset
     from .studies.fe_scene import scene_dataset
 
@@ -726,48 +718,38 @@ def simulate_fe(
     output = check_output(output, base_root, force=force, config=config)
     if model not in ("beam", "continuum"):
         raise ConfigError(f"model: {model!r} is not one of ['beam', 'continuum']")
-    if t_end is not None:
-        import math
-
-        if (
-            isinstance(t_end, bool)
-            or not isinstance(t_end, (int, float))
-            or not math.isfinite(t_end)
-            or t_end <= 0
-        ):
-            raise ConfigError(f"t_end: the simulated window [s] must be a finite number > 0, got {t_end!r}")
-    name, entry = fe_scene_name(config["fe"], scene, speed, rpm)
-    if entry is not None or t_end is not None:
-        config = copy.deepcopy(config)
-    if entry is not None:
-        config["fe"]["scenes"][name] = entry
-    if t_end is not None:
-        config["fe"]["scenes"][name] = {**config["fe"]["scenes"][name]}
-        solver = dict(config["fe"]["scenes"][name].get("solver") or {})
-        config["fe"]["scenes"][name]["solver"] = {**solver, "t_end": t_end}
-        config.setdefault("fe", {})["control_readings_t_end"] = t_end  # the window of every reading
-    try:
-        _validated(config)
+    t_end_bound = bounds(SolverParams)["t_end"]  # your t_end's own key, checked by the config's bound
+    if t_end is not None and not t_end_bound.accepts(t_end):
+        raise ConfigError(f"t_end: must be {t_end_bound.wanted()} (the simulated window [s]), got {t_end!r}")
+    # the config as given (not yet validated): your scene and window go on top of it, as a config file would
+    name, entry = fe_scene_name(config["fe"]["scenes"], scene, speed, rpm)
+    yours: dict = {"scenes": {name: entry}} if entry is not None else {}
+    if t_end is not None:  # the window of your scene under every reading
+        window = {"scenes": {name: {"solver": {"t_end": t_end}}}, "control_readings_t_end": t_end}
+        yours = merge(yours, window)
+    config = merge(config, {"fe": yours})
+    try:  # the whole config checked as the Snakefile checks it (your window and scene, readings, cost)
+        typed = validate_config(config, producible=[rule_friction_table()])
     except ConfigError as exc:
         costly = ("samples over solver.t_end", "element-increments")
         if t_end is not None and any(c in str(exc) for c in costly):  # the guard met your window
             raise ConfigError(f"t_end: {t_end!r} s is beyond the pipeline's cost guard: {exc}") from None
         raise
-    cfg = effective_fe_config(config)
-    readings = list(cfg.get("readings") or {})
-    reading = reading or (readings[0] if readings else None)
+    fe = effective_fe(typed)
+    reading = reading or next(iter(fe.readings))
     try:
-        mapping = scene_mapping(cfg, name, reading)
+        mapping = scene_mapping(fe, name, reading)
     except ValueError as exc:
         raise ConfigError(f"fe.{exc}") from None
     spec = None
     if ensemble and model == "beam":
-        spec = EnsembleSpec.from_mapping(config.get("ensemble")).without_blas()
-        spec = replace(spec, step_factor=HALF_STEP)
-        _check_fe_ensemble_cost(config, mapping, spec)
-    friction = _fe_friction_table(config, cfg, base_root, friction_table)
+        given = typed.ensemble.model_dump(exclude_none=True) if typed.ensemble else None
+        spec = replace(EnsembleSpec.from_mapping(given).without_blas(), step_factor=HALF_STEP)
+        solver = SolverParams.from_mapping(mapping["solver"])  # samples per run: t_end / output_dt
+        check_ensemble_cost(spec, solver.t_end / solver.output_dt + 1, config)
+    friction = _fe_friction_table(config, fe.friction_table, base_root, friction_table)
     if model == "continuum":
-        nx, ny = cfg["comparison"]["mesh"]
+        nx, ny = fe.comparison.mesh
         ds = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
         attrs = {"scene": mapping, "interpretation": INTERPRETATION, "method": {"mesh": [nx, ny]}}
         return _finish(ds, attrs, output)
@@ -786,27 +768,19 @@ def simulate_fe(
     return _finish(ds, attrs, output)
 
 
-def _check_fe_ensemble_cost(config: dict, mapping: Mapping, spec) -> None:
-    """``check_ensemble_cost`` of an FE scene's ensemble (samples per run: t_end / output_dt)."""
-    solver = mapping.get("solver") or {}
-    samples = (
-        solver["t_end"] / solver["output_dt"] + 1 if solver.get("t_end") and solver.get("output_dt") else 0
-    )
-    check_ensemble_cost(spec, samples, allow_expensive=bool(config.get("allow_expensive")))
-
-
-def _fe_friction_table(config: dict, cfg: Mapping, root: Path, given):
-    """The FE friction law: ``given``, else ``fe.friction_table`` of the project; the pipeline's own table
-    (rule friction_table's output) computed here as that rule computes it when no build has written it."""
+def _fe_friction_table(config: dict, configured: str, root: Path, given):
+    """The FE friction law: ``given``, else ``configured`` (the project's ``fe.friction_table``); the
+    pipeline's own table (rule friction_table's output) computed here as that rule computes it when no build
+    has written it."""
     import tempfile
 
     from . import catalogue as paths
     from .fe.params import FrictionTable
 
-    table = Path(given) if given is not None else root / cfg["friction_table"]
+    table = Path(given) if given is not None else root / configured
     if table.is_file():
         return FrictionTable.from_csv(table)
-    if given is not None or cfg["friction_table"] != paths.friction_table():
+    if given is not None or configured != paths.friction_table():
         raise FileNotFoundError(f"fe.friction_table: {table} does not exist")
     from .studies.onedof import friction_table_from_config
 

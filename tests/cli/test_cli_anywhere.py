@@ -65,11 +65,11 @@ def test_fe_at_a_disc_speed_no_scene_has_runs_from_an_empty_folder(tmp_path):
 
 def test_fe_rpm_names_the_scene_as_the_config_names_its_speeds():
     config = api.load_project_config()
-    name, entry = api.fe_scene_name(config["fe"], "section11_penalty", rpm=30.0)
+    name, entry = api.fe_scene_name(config["fe"]["scenes"], "section11_penalty", rpm=30.0)
     assert name == "section11_penalty_30rpm"
     assert entry["disc"] == {"speed_rev_per_min": 30.0} and entry["contact"]["method"] == "penalty"
     # a configured speed is that scene, unchanged
-    assert api.fe_scene_name(config["fe"], "section11_penalty", speed=0.5) == (
+    assert api.fe_scene_name(config["fe"]["scenes"], "section11_penalty", speed=0.5) == (
         "section11_penalty_0p5mm_s",
         None,
     )
@@ -79,11 +79,10 @@ def test_the_computed_friction_table_is_the_one_rule_friction_table_writes(tmp_p
     """Same study function, same CSV format: equal to the table the pipeline's script writes."""
     from stickslip.fe.params import FrictionTable
     from stickslip.schema import Onedof
-    from stickslip.studies.fe_config import effective_fe_config
     from stickslip.studies.onedof import friction_table_from_config
 
     config = api.load_project_config()
-    computed = api._fe_friction_table(config, effective_fe_config(config), tmp_path, None)
+    computed = api._fe_friction_table(config, config["fe"]["friction_table"], tmp_path, None)
     ds = friction_table_from_config(Onedof.model_validate(config["onedof"]))
     assert computed.speeds[0] == 0.0 and len(computed.speeds) == ds.sizes["relative_speed"]
     np.testing.assert_allclose(computed.mu, ds.mu.values, rtol=1e-9)

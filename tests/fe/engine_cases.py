@@ -30,6 +30,7 @@ from stickslip.fe.explicit import integrate, stable_time_step
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
 from stickslip.fe.reduced import contact_boundary, craig_bampton
 from stickslip.fe.scene import build_scene
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -51,8 +52,8 @@ CHAOTIC = 1e-6
 
 # ------------------------------------------------------------------------------------------------ cases
 @functools.cache
-def _fe_config() -> dict:
-    return yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
+def _fe_config() -> Fe:
+    return Fe.model_validate(yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"])
 
 
 def _beam(scene, start, reduced=False, record=False, beta=None, alpha=0.0, dt_factor=None, steps=STEPS):
@@ -61,7 +62,7 @@ def _beam(scene, start, reduced=False, record=False, beta=None, alpha=0.0, dt_fa
     return {
         "kind": "beam",
         "scene": {k: copy.deepcopy(m[k]) for k in ("beam", "disc", "contact", "solver")},
-        "reduced": dict(fe["reduced"]) if reduced else None,
+        "reduced": fe.reduced.model_dump(exclude_none=True) if reduced else None,
         "start": start,
         "record": record,
         "beta": beta,

@@ -17,14 +17,15 @@ from stickslip.fe.abaqus_deck import (
     scene_deck,
 )
 from stickslip.fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
 from stickslip.studies.fe_continuum import continuum_scene_from_mapping
 
 from project_run import ROOT
 
 BEAM = BeamParams()
-FE = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
-SCENES = list(FE["scenes"])
+FE = Fe.model_validate(yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"])
+SCENES = list(FE.scenes)
 #: a friction table of the Fig. 17 kind with irregular speeds (what the CSV of rule friction_table holds)
 TABLE = FrictionTable((0.0, 0.021968952, 0.094, 0.6, 1.506563), (0.5, 0.4945, 0.4765, 0.3, 0.1233592))
 
@@ -79,7 +80,7 @@ def test_linear_deck_rejects_an_unknown_support():
 @pytest.mark.parametrize("scene", SCENES)
 def test_scene_deck_is_the_continuum_model_of_the_scene(scene):
     mapping = scene_mapping(FE, scene)
-    nx, ny = FE["comparison"]["mesh"]
+    nx, ny = FE.comparison.mesh
     deck = read_deck(scene_deck(scene, mapping, TABLE, nx, ny))
     model = continuum_scene_from_mapping(mapping, TABLE, nx, ny)
     assert len(deck.elements["CPS4R"]) == model.mesh.quads.shape[0] == nx * ny

@@ -102,14 +102,22 @@ def test_response_converges_in_element_count_and_step(n_el):
 
 
 def test_readings_layer_between_defaults_and_scene():
-    cfg = {
+    import yaml
+
+    from stickslip.schema.fe import Fe
+
+    from project_run import ROOT
+
+    layers = {
         "defaults": {"solver": {"initial_state": "drop"}, "contact": {"surface_offset": True}},
         "readings": {
             "a": {},
             "b": {"contact": {"surface_offset": False}, "solver": {"initial_state": "static"}},
         },
-        "scenes": {"s": {"solver": {"initial_state": "drop"}}},
     }
+    fe = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
+    scenes = {**fe["scenes"], "s": {"solver": {"initial_state": "drop"}}}
+    cfg = Fe.model_validate({**fe, **layers, "scenes": scenes})
     assert scene_mapping(cfg, "s")["contact"]["surface_offset"] is True  # first reading is the default
     mb = scene_mapping(cfg, "s", "b")
     assert mb["contact"]["surface_offset"] is False and mb["solver"]["initial_state"] == "drop"

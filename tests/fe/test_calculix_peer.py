@@ -4,6 +4,8 @@ output parsed, and the failures (ccx missing, a deck ccx refuses) named.
 The tests that run ccx skip, naming why, only when ccx is missing outside CI; under CI=true a missing ccx
 fails them (.ci/run installs Debian's calculix-ccx)."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import yaml
@@ -11,24 +13,27 @@ import yaml
 from stickslip.fe.abaqus_deck import friction_table_of, read_deck, scene_deck
 from stickslip.fe.params import BeamParams, FrictionTable
 from stickslip.io.netcdf import read_dataset, write_dataset
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
 from stickslip.studies.fe_peer import MODELS, PAIRS, QUANTITIES, closed_form_values, peer_study
 from stickslip.validation.calculix import CalculixError, parse_dat, run_ccx, static_block
 
 from project_run import ROOT, require_ccx
 
-FE = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
+FE = Fe.model_validate(yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"])
+#: the strip the peer study solves (fe.defaults.beam)
+STRIP = BeamParams.from_mapping(FE.defaults.beam.model_dump(exclude_none=True))
 
 
 @pytest.fixture(scope="module")
 def peer(tmp_path_factory):
     require_ccx()
-    return peer_study(FE, workdir=tmp_path_factory.mktemp("ccx"))
+    return peer_study(STRIP, FE.peer, workdir=tmp_path_factory.mktemp("ccx"))
 
 
 def test_closed_form_continuum_and_calculix_agree_within_the_config_tolerance(peer):
     rows, ds, _ = peer
-    tolerance = FE["peer"]["tolerance"]
+    tolerance = FE.peer.tolerance
     assert [r["quantity"] for r in rows] == list(QUANTITIES)
     for r in rows:
         for a, b in PAIRS:
@@ -43,11 +48,11 @@ def test_the_closed_forms_are_the_config_strips_and_the_decks_carry_its_material
     """The closed-form column is the config's strip (and moves with it: twice the thickness, twice the
     frequencies), and the decks ccx ran hold the config's E, nu and rho."""
     rows, _, _ = peer
-    beam = BeamParams.from_mapping(FE["defaults"]["beam"])
+    beam = STRIP
     closed = closed_form_values(beam)
     for r in rows:
         assert r["closed_form"] == closed[r["quantity"]]
-    thick = closed_form_values(BeamParams.from_mapping({**FE["defaults"]["beam"], "thickness": 2.0}))
+    thick = closed_form_values(replace(STRIP, thickness=2.0))
     assert thick["free_f1"] == pytest.approx(2 * closed["free_f1"], rel=1e-12)
     assert closed["propped_f1"] == pytest.approx(366.39, abs=0.01)  # the documented closed form
     for deck in peer[2].values():
@@ -116,7 +121,7 @@ def test_parse_dat_reads_frequencies_mode_tables_and_static_tables():
 def test_a_missing_ccx_is_an_error_naming_ccx_its_package_and_the_scene(monkeypatch):
     monkeypatch.setenv("PATH", "")
     with pytest.raises(CalculixError, match=r"peer_free: the CalculiX solver 'ccx' is not on PATH.*-ccx"):
-        peer_study(FE)
+        peer_study(STRIP, FE.peer)
 
 
 def test_ccx_stops_on_a_scene_deck_and_the_error_names_the_scene(tmp_path):
@@ -143,12 +148,12 @@ def test_the_pipeline_writes_the_peer_and_one_deck_per_scene_with_the_fig17_tabl
 
     work = shared_small_run(tmp_path_factory)
     ds = read_dataset(work / "results" / "fe" / "peer_calculix.nc")
-    assert int(ds["peers_agree"]) == 1 and float(ds["max_abs_rel_diff"]) <= FE["peer"]["tolerance"]
+    assert int(ds["peers_agree"]) == 1 and float(ds["max_abs_rel_diff"]) <= FE.peer.tolerance
     fig17 = FrictionTable.from_csv(work / "results" / "onedof" / "friction_mu_vr.csv")
     decks = sorted(p.stem for p in (work / "results" / "fe" / "inp").glob("*.inp"))
     # each scene's ABAQUS deck and its CalculiX variant (stickslip.fe.ccx_deck)
-    scenes = list(FE["scenes"])
+    scenes = list(FE.scenes)
     assert decks == sorted(scenes + [f"{s}_ccx" for s in scenes] + ["peer_free", "peer_propped"])
-    for scene in FE["scenes"]:
+    for scene in FE.scenes:
         deck = read_deck((work / "results" / "fe" / "inp" / f"{scene}.inp").read_text())
         assert friction_table_of(deck) == fig17, scene

@@ -414,8 +414,8 @@ def test_both_explicit_integrators_refuse_a_step_factor_outside_0_1_naming_it(fa
     from stickslip.fe.params import SceneParams
     from stickslip.fe.scene import build_scene
 
-    with pytest.raises(ValueError, match="safety_factor: must lie in"):
+    with pytest.raises(ValueError, match="^safety_factor: "):
         integrate_continuum(scene(10, 1), 1e-4, safety_factor=factor)
     beam = build_scene(SceneParams.from_mapping({"disc": {"speed_rev_per_min": 15.2}}), FIG17)
-    with pytest.raises(ValueError, match="safety_factor: must lie in"):
+    with pytest.raises(ValueError, match="^safety_factor: "):
         integrate(beam.system, beam.law, 1e-4, safety_factor=factor)

@@ -21,14 +21,15 @@ from stickslip.fe.abaqus_deck import (
 )
 from stickslip.fe.ccx_deck import CCX_MAX_INCREMENT, CCX_SUFFIX, ccx_scene_deck, contact_frame
 from stickslip.fe.params import BeamParams, ContactParams, FrictionTable
+from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
 from stickslip.validation.calculix import dat_time_series, run_ccx
 
 from project_run import ROOT, require_ccx
 
-FE = yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"]
-SCENES = list(FE["scenes"])
-NX, NY = FE["comparison"]["mesh"]
+FE = Fe.model_validate(yaml.safe_load((ROOT / "config" / "fe.yaml").read_text())["fe"])
+SCENES = list(FE.scenes)
+NX, NY = FE.comparison.mesh
 TEST_T_END = 5.0e-6  # s: the reduced window ccx runs here (see the module docstring)
 
 #: Keyword -> {parameter: allowed values (None: any value, e.g. a name or a number)} of the ABAQUS/Explicit

@@ -179,11 +179,14 @@ def test_setup_fit_puts_the_static_corner_at_the_target():
     beam's static contact corner at the target within 2 %, on the side of the clamp."""
     import yaml
 
+    from stickslip.schema.fe import Fe, FeJob
+    from stickslip.studies.fe_config import job_config
     from stickslip.studies.fe_setup_fit import setup_fit_mapping
 
     with open("config/fe.yaml") as fh:
-        cfg = yaml.safe_load(fh)["fe"]
-    mp, k = setup_fit_mapping(cfg, "section11_penalty_15p2rpm", -1.5e-4)
+        fe = Fe.model_validate(yaml.safe_load(fh)["fe"])
+    job = FeJob.model_validate(job_config(fe, scenes=["section11_penalty_15p2rpm"]))
+    mp, k = setup_fit_mapping(job, "section11_penalty_15p2rpm", -1.5e-4)
     assert k == pytest.approx(0.0581, rel=0.01)
     sc = scene_of(mp, FIG17)
     q, n = static_state(sc.system, sc.law)

@@ -12,7 +12,8 @@ from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.explicit import contact_omega, stable_time_step
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import ABS_FLOOR, REL_TOL, apply_step_halving, converged
-from stickslip.studies.fe_config import PERTURBED_FIELDS
+from stickslip.schema.fe import Fe, FeJob
+from stickslip.studies.fe_config import PERTURBED_FIELDS, job_config
 from stickslip.studies.fe_scene import scene_of
 from stickslip.studies.fe_sweeps import sweep_dataset, sweep_half_step
 
@@ -89,16 +90,17 @@ def test_penalty_sweep_members_pass_step_halving_or_are_excluded():
     """Every member of a penalty sweep either keeps each claimed metric within the step-halving rule or
     carries NaN there (no claim reads it); the 1e7 N/mm member, an integration artefact, is excluded."""
     with open("config/fe.yaml") as fh:
-        cfg = yaml.safe_load(fh)["fe"]
-    cfg["sweeps"]["penalty_sweep"].update(values=[1e3, 1e5, 1e7], t_end=0.01)
+        fe = Fe.model_validate(yaml.safe_load(fh)["fe"])
+    job = job_config(fe, scenes=[fe.sweeps["penalty_sweep"].base], sections=["sweeps"])
+    job["sweeps"]["penalty_sweep"].update(values=[1e3, 1e5, 1e7], t_end=0.01)
     ds = ensemble_dataset(
-        lambda c: sweep_dataset(c, "penalty_sweep", FIG17),
-        cfg,
+        lambda c: sweep_dataset(FeJob.model_validate(c), "penalty_sweep", FIG17),
+        job,
         EnsembleSpec(seeds=()),
         run_id="results/fe/penalty_sweep.nc",
         fields=PERTURBED_FIELDS,
     )
-    half = sweep_half_step(cfg, "penalty_sweep", FIG17)
+    half = sweep_half_step(FeJob.model_validate(job), "penalty_sweep", FIG17)
     out = apply_step_halving(ds, half, along="penalty_stiffness")
     for q in CLAIMED:
         unit = ds[q].attrs["units"]

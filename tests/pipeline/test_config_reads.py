@@ -60,23 +60,11 @@ def current_reads() -> dict[str, int]:
 
 #: file -> config reads by key it still makes (the debt; lower an entry when you remove reads)
 LEDGER: dict[str, int] = {
-    "src/stickslip/api.py": 15,
-    "src/stickslip/studies/fe_config.py": 9,
-    "src/stickslip/studies/fe_convergence.py": 1,
-    "src/stickslip/studies/fe_peer.py": 2,
-    "src/stickslip/studies/fe_stability.py": 1,
-    "src/stickslip/studies/fe_sweeps.py": 2,
+    "src/stickslip/api.py": 3,
     "workflow/rules/common.smk": 1,
-    "workflow/rules/fe.smk": 2,
     "workflow/rules/inverse.smk": 2,
     "workflow/rules/methods.smk": 3,
     "workflow/rules/validation.smk": 3,
-    "workflow/scripts/fe_comparison.py": 1,
-    "workflow/scripts/fe_continuum_window.py": 1,
-    "workflow/scripts/fe_decks.py": 1,
-    "workflow/scripts/fe_peer_calculix.py": 3,
-    "workflow/scripts/fe_reading.py": 2,
-    "workflow/scripts/fe_studies.py": 3,
 }
 
 

@@ -11,7 +11,7 @@ from stickslip.io.run_variables import run_dataset_variables
 import stickslip.catalogue as paths
 from stickslip.catalogue import onedof_catalogue, onedof_dataset, sweep_dataset
 from stickslip.pipeline.code_deps import code_hash, module_file
-from stickslip.studies.fe_config import effective_fe_config, job_config as fe_job_config
+from stickslip.studies.fe_config import effective_fe, job_config as fe_job_config
 
 #: Files a rule writes that the config may name as inputs before they exist.
 PRODUCIBLE = [paths.friction_table("csv")]

@@ -1,23 +1,22 @@
-# Beam on rotating disc (paper Sections 9-12, issues 5 and 11). Scene and reading names come from config["fe"].
-# The config (schema and references) is checked once for the whole workflow by stickslip.pipeline.config.
+# Beam on rotating disc (paper Sections 9-12, issues 5 and 11). Scene and reading names come from the typed
+# fe section (CFG.fe, checked once for the whole workflow by stickslip.pipeline.config).
 
-FE = config["fe"]
-FE_SCENES = list(FE["scenes"])
-FE_READINGS = list(FE["readings"])
-FE_DEFAULT_READING = FE_READINGS[0]
-FE_SWEEPS = list(FE["sweeps"])
-FE_FRICTION = FE["friction_table"]
 #: The fe section with the long-run switch applied; each job's params are the part of it that job reads,
 #: resolved (stickslip.studies.fe_config.job_config): a value re-runs exactly the jobs that read it.
-FE_EFFECTIVE = effective_fe_config(config)
+FE_EFFECTIVE = effective_fe(CFG)
+FE_SCENES = list(FE_EFFECTIVE.scenes)
+FE_READINGS = list(FE_EFFECTIVE.readings)
+FE_DEFAULT_READING = FE_READINGS[0]
+FE_SWEEPS = list(FE_EFFECTIVE.sweeps)
+FE_FRICTION = FE_EFFECTIVE.friction_table
 #: The scenes the studies start from (sweeps, convergence, stability, increments).
 FE_STUDY_SECTIONS = ("sweeps", "convergence", "stability", "increments")
 #: The paper's beam-on-disc figures, one PNG each: the config's registry (fe.paper_figures: figure -> scenes).
-FE_PAPER_FIGURES = sorted(FE["paper_figures"])
+FE_PAPER_FIGURES = sorted(FE_EFFECTIVE.paper_figures)
 FE_STUDY_BASES = sorted(
-    {sw["base"] for sw in FE["sweeps"].values()}
-    | {FE[k]["base"] for k in FE_STUDY_SECTIONS[1:]}
-    | set((FE["stability"].get("speeds") or {}).values())
+    {sw.base for sw in FE_EFFECTIVE.sweeps.values()}
+    | {getattr(FE_EFFECTIVE, k).base for k in FE_STUDY_SECTIONS[1:]}
+    | set(FE_EFFECTIVE.stability.speeds.values())
 )
 
 
@@ -101,7 +100,7 @@ rule fe_setup_fit:
 
 
 #: scenes the continuum also runs over a claim's window (config fe.comparison.claim_windows)
-FE_WINDOW_SCENES = list(FE["comparison"].get("claim_windows") or {})
+FE_WINDOW_SCENES = list(FE_EFFECTIVE.comparison.claim_windows)
 
 
 rule fe_continuum_window:
@@ -172,7 +171,7 @@ rule fe_readings_claims:
     params:
         readings=FE_READINGS,
         scenes=FE_SCENES,
-        cross_scene=canonical(FE.get("cross_scene") or {}),
+        cross_scene=canonical(FE_EFFECTIVE.cross_scene),
     script:
         "../scripts/fe_readings_claims.py"
 
@@ -210,7 +209,7 @@ rule fe_figures:
         scenes=FE_SCENES,
         # the paper figures in the order of output.paper, and the scenes each draws (config fe.paper_figures)
         paper_figure_numbers=FE_PAPER_FIGURES,
-        paper_figures=FE["paper_figures"],
+        paper_figures=FE_EFFECTIVE.paper_figures,
         # the paper's Section 9 numbers the readings overview marks, from the claims files
         reported={
             c.variable: c.value

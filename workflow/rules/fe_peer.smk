@@ -1,8 +1,6 @@
 # CalculiX (ccx) as a peer of the continuum strip, and the strip's input decks as a product (issue 28).
 # Needs the `ccx` executable (Debian package calculix-ccx); without it the peer job fails naming ccx.
 
-#: what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of the FE config
-FE_PEER_CONFIG = canonical({"fe": {"defaults": {"beam": FE["defaults"]["beam"]}, "peer": FE.get("peer")}})
 FE_PEER_DECKS = list(paths.FE_PEER_DECKS)
 
 
@@ -18,7 +16,9 @@ rule fe_peer_calculix:
     conda:
         CONDA_ENV
     params:
-        config=FE_PEER_CONFIG,
+        # what the peer job reads: the strip (beam) and the peer's mesh and tolerance, nothing else of fe
+        beam=canonical(FE_EFFECTIVE.defaults.beam.model_dump(exclude_none=True)),
+        peer=canonical(FE_EFFECTIVE.peer.model_dump()),
         decks=FE_PEER_DECKS,  # the name of each deck output, in the same order
     script:
         "../scripts/fe_peer_calculix.py"

@@ -4,14 +4,15 @@ from stickslip.fe.params import FrictionTable
 from stickslip.fe.quantities import INTERPRETATION
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
+from stickslip.schema.fe import FeJob
 from stickslip.studies.fe_config import window_mapping
 from stickslip.studies.fe_continuum import continuum_window_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config  # noqa: F821  (the scene resolved, and the comparison section)
+job = FeJob.model_validate(snakemake.params.config)  # noqa: F821  (the scene resolved, the comparison)
 scene = snakemake.wildcards.scene  # noqa: F821
-mapping = window_mapping(cfg, scene)
-nx, ny = cfg["comparison"]["mesh"]
+mapping = window_mapping(job, scene)
+nx, ny = job.comparison.mesh
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 ds = continuum_window_dataset(mapping, friction, nx=nx, ny=ny, name=scene)
 print(

@@ -9,12 +9,13 @@ from stickslip.fe.quantities import INTERPRETATION
 from stickslip.fe.step_halving import HALF_STEP, apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
-from stickslip.studies.fe_config import PERTURBED_FIELDS, scene_mapping
+from stickslip.schema.fe import FeJob
+from stickslip.studies.fe_config import PERTURBED_FIELDS, as_mapping
 from stickslip.studies.fe_cross_scene import cross_scene_dataset
 from stickslip.studies.fe_scene import scene_dataset
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
-cfg = snakemake.params.config  # noqa: F821  (this reading's scenes, resolved: studies.fe_config.job_config)
+job = FeJob.model_validate(snakemake.params.config)  # noqa: F821  (this reading's scenes, resolved)
 reading = snakemake.wildcards.fe_reading  # noqa: F821
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
@@ -24,7 +25,7 @@ spec = replace(EnsembleSpec.from_mapping(snakemake.params.ensemble).without_blas
 built, mappings = {}, {}
 scene_paths = dict(zip(snakemake.params.scenes, snakemake.output.scenes, strict=True))  # noqa: F821
 for name, path in scene_paths.items():
-    mappings[name] = scene_mapping(cfg, name)
+    mappings[name] = as_mapping(job.scenes[name])
     ds = ensemble_dataset(
         lambda mp, n=name: scene_dataset(mp, friction, n),
         mappings[name],
@@ -40,7 +41,7 @@ for name, path in scene_paths.items():
         flush=True,
     )
     built[name] = ds
-cross = cross_scene_dataset(built, cfg["cross_scene"])
+cross = cross_scene_dataset(built, job.cross_scene)
 # Written only once every scene is computed: a job killed while integrating leaves no dataset behind.
 for name, path in scene_paths.items():
     method = {"fe_reading": reading}
@@ -48,7 +49,7 @@ for name, path in scene_paths.items():
 write_dataset(
     cross,
     snakemake.output.cross,  # noqa: F821
-    scene=dict(cfg["cross_scene"]),
+    scene=job.cross_scene,
     interpretation=INTERPRETATION,
     method={"kind": "ratio", "fe_reading": reading},
 )

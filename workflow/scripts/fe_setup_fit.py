@@ -8,18 +8,19 @@ from stickslip.fe.params import FrictionTable
 from stickslip.fe.step_halving import HALF_STEP, apply_step_halving
 from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file
+from stickslip.schema.fe import FeJob
 from stickslip.studies.fe_config import PERTURBED_FIELDS
 from stickslip.studies.fe_setup_fit import setup_fit_dataset, setup_fit_mapping
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 par = snakemake.params  # noqa: F821
-cfg = par.config  # the base scene, resolved (studies.fe_config.job_config)
+job = FeJob.model_validate(par.config)  # the base scene, resolved (studies.fe_config.job_config)
 friction = FrictionTable.from_csv(snakemake.input.friction)  # noqa: F821
 # the ensemble's second step size is the step-halving run (one run at dt/2 serves both); a scene's
 # dataset is bit-identical under any BLAS thread count (tests/fe/test_blas_independence.py), so the BLAS
 # member would only repeat the base run
 spec = replace(EnsembleSpec.from_mapping(par.ensemble).without_blas(), step_factor=HALF_STEP)
-fit, k = setup_fit_mapping(cfg, par.base, par.centre)
+fit, k = setup_fit_mapping(job, par.base, par.centre)
 out = snakemake.output[0]  # noqa: F821
 ds = ensemble_dataset(
     lambda mp: setup_fit_dataset(mp, friction, k), fit, spec, run_id=out, fields=PERTURBED_FIELDS

@@ -417,6 +417,3 @@ def friction_table_of(deck: Deck) -> FrictionTable:
         return FrictionTable((0.0,), (deck.friction[0][0],))
     return FrictionTable(tuple(r[1] for r in deck.friction), tuple(r[0] for r in deck.friction))
 
-
-def element_counts(deck: Deck) -> dict:
-    return {k: len(v) for k, v in deck.elements.items()}

@@ -153,12 +153,6 @@ def modal_analysis(K: np.ndarray, M: np.ndarray, n_modes: int | None = None):
     return np.sqrt(w2) / (2 * np.pi), phi
 
 
-def max_angular_frequency(K: np.ndarray, M: np.ndarray) -> float:
-    """Highest eigen angular frequency omega_max [rad s-1] of the assembled system."""
-    w2 = sla.eigh(K, M, eigvals_only=True, subset_by_index=[K.shape[0] - 1, K.shape[0] - 1])
-    return float(np.sqrt(max(w2[0], 0.0)))
-
-
 def cantilever_bending_frequencies(p: BeamParams, n: int = 3) -> np.ndarray:
     """Closed-form clamped-free bending frequencies [Hz]: f = (beta L)^2/(2 pi L^2) sqrt(EI/(rho A))."""
     bl = np.asarray(CANTILEVER_BETA_L[:n])

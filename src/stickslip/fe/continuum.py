@@ -44,8 +44,7 @@ from .params import (
     ContactParams,
     DiscParams,
     FrictionTable,
-    check_run,
-    initial_state_of,
+    run_settings,
 )
 
 OUTPUT_NODES = ("free_end_lower", "free_end_upper", "free_end_axis", "contact")
@@ -404,7 +403,7 @@ def increments(
     method: str = "global",
 ) -> int:
     """Number of explicit increments to reach ``duration`` at safety_factor * dt_crit."""
-    check_run(duration, safety_factor)
+    run_settings(duration, safety_factor)
     return int(math.ceil(duration / (safety_factor * stable_time_step(scene, method)) - 1e-9))
 
 
@@ -534,16 +533,13 @@ def integrate_continuum(
     (1e3 mm, not 1e6); no second-half counts, and a blow-up reports the end of its chunk as the
     steps done (``n_steps``).
     """
-    check_run(duration, safety_factor)
-    initial_state = initial_state_of(initial_state)
+    initial_state = run_settings(
+        duration, safety_factor, initial_state, output_interval=output_interval, dt=dt
+    ).initial_state
     dt_crit = stable_time_step(scene)
     if dt is None:
         dt = safety_factor * dt_crit
-    elif not (math.isfinite(dt) and dt > 0):
-        raise ValueError(f"dt: must be a positive finite number, got {dt!r}")
     n_steps = int(math.ceil(duration / dt - 1e-9))
-    if output_interval is not None and not (math.isfinite(output_interval) and output_interval > 0):
-        raise ValueError(f"output_interval: must be a positive finite number, got {output_interval!r}")
     every = max(1, int(round((output_interval or dt) / dt)))
     n_out = n_steps // every + 1
 

@@ -29,7 +29,7 @@ import scipy.sparse as sps
 
 from . import engine
 from .driver import SEPARATED, SLIP, STICK, ExplicitResult, drive, named_counts, pack_result
-from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, check_run, initial_state_of
+from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, run_settings
 
 __all__ = ["SEPARATED", "SLIP", "STICK", "ExplicitResult", "integrate", "integrate_python"]
 
@@ -143,10 +143,10 @@ class _Prepared:
 
 
 def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0, alpha, beta):
-    initial_state = initial_state_of(initial_state)
-    check_run(duration, safety_factor if dt is None else 1.0)  # a given dt makes the factor unused
-    if alpha < 0 or beta < 0:
-        raise ValueError("mass_damping: Rayleigh damping coefficients must be >= 0")
+    initial_state = run_settings(
+        duration, safety_factor, initial_state, output_interval=output_interval, dt=dt,
+        mass_damping=alpha, stiffness_damping=beta,
+    ).initial_state  # fmt: skip
     dt_crit = stable_time_step(system, law)
     if beta > 0:  # lagged stiffness damping: dt_crit = 2/w (sqrt(1+xi^2) - xi), xi = beta w / 2
         w = 2.0 / dt_crit

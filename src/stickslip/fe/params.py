@@ -11,7 +11,7 @@ import math
 import numbers
 import operator
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
@@ -233,16 +233,6 @@ def initial_state_of(state: str | None) -> str:
     return "drop" if state == "undeformed" else state
 
 
-def check_run(duration, safety_factor) -> None:
-    """An explicit run's window and step factor, checked before any work (ValueError naming the key)."""
-    if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
-        raise ValueError(f"duration: must be a positive finite number, got {duration!r}")
-    if not (isinstance(safety_factor, (int, float)) and 0 < safety_factor <= 1):
-        raise ValueError(
-            f"safety_factor: must lie in (0, 1] (a step above dt_crit is unstable), got {safety_factor!r}"
-        )
-
-
 @dataclass(frozen=True)
 class SolverParams:
     """Explicit central-difference settings."""
@@ -267,6 +257,41 @@ class SolverParams:
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> SolverParams:
         return _from_mapping(cls, data, "solver.")
+
+
+#: the solver section's keys that an integrator takes under another name
+RUN_ARGUMENTS = {"t_end": "duration", "output_dt": "output_interval"}
+
+
+def run_settings(
+    duration,
+    safety_factor=DEFAULT_SAFETY_FACTOR,
+    initial_state=DEFAULT_INITIAL_STATE,
+    *,
+    output_interval=None,
+    dt=None,
+    mass_damping=0.0,
+    stiffness_damping=0.0,
+) -> SolverParams:
+    """An explicit run's settings as the solver section they are (``t_end`` = ``duration``), checked by its
+    declared bounds before any work, so both integrators and the config refuse the same values naming the
+    same key. ``output_interval`` None: every step; a given ``dt`` (> 0) replaces safety_factor * dt_crit."""
+    if dt is not None and not POSITIVE.accepts(dt):
+        raise ValueError(f"dt: must be {POSITIVE.wanted()}, got {dt!r}")
+    given = {"output_dt": output_interval} if output_interval is not None else {}
+    try:
+        settings = SolverParams(
+            t_end=duration,
+            safety_factor=safety_factor,
+            initial_state=DEFAULT_INITIAL_STATE if initial_state is None else initial_state,
+            mass_damping=mass_damping,
+            stiffness_damping=stiffness_damping,
+            **given,
+        )
+    except ValueError as exc:  # named as the caller passed it
+        key, _, why = str(exc).partition(":")
+        raise ValueError(f"{RUN_ARGUMENTS.get(key, key)}:{why}") from None
+    return replace(settings, initial_state=initial_state_of(settings.initial_state))
 
 
 @dataclass(frozen=True)

@@ -21,6 +21,7 @@ from ..model.params import ParameterError
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
     from ..schema import Inverse, MethodsStudy, PipelineConfig, Validation
+    from ..schema.fe import Fe
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
 
@@ -112,13 +113,9 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
         _check_onedof(typed)
         check_methods_config(typed.methods_study)
         _check_dense_maps(typed)
-        from ..studies.fe_config import effective_fe_config
+        from ..studies.fe_config import effective_fe
 
-        check_fe_config(
-            effective_fe_config(config),
-            list(producible),
-            allow_expensive=config.get("allow_expensive", False),
-        )
+        check_fe_config(effective_fe(typed), list(producible), allow_expensive=typed.allow_expensive)
         _check_validation(typed.validation, list(producible))
         _check_inverse_claims(typed.inverse, claims)
     except ParameterError as exc:
@@ -189,16 +186,17 @@ def _check_dense_maps(typed: PipelineConfig) -> None:
 MAX_FE_ELEMENT_INCREMENTS = 2.0e9
 
 
-def fe_layer_key(fe_cfg: dict, scene: str, reading: str | None, dotted: str) -> str:
+def fe_layer_key(fe: Fe, scene: str, reading: str | None, dotted: str) -> str:
     """The config key that sets ``dotted`` (``solver.output_dt``) of a scene under a reading: the scene's own,
     else the reading's, else the defaults' (the layers of ``scene_mapping``)."""
     section, _, name = dotted.partition(".")
-    layers = [(f"fe.scenes.{scene}", fe_cfg["scenes"].get(scene))]
+    layers = [(f"fe.scenes.{scene}", fe.scenes.get(scene))]
     if reading:
-        layers.append((f"fe.readings.{reading}", fe_cfg.get("readings", {}).get(reading)))
-    layers.append(("fe.defaults", fe_cfg.get("defaults")))
+        layers.append((f"fe.readings.{reading}", fe.readings.get(reading)))
+    layers.append(("fe.defaults", fe.defaults))
     for prefix, layer in layers:
-        if name in ((layer or {}).get(section) or {}):
+        given = getattr(layer, section, None) if layer is not None else None
+        if given is not None and name in given.model_fields_set:
             return f"{prefix}.{dotted}"
     return f"fe.scenes.{scene}.{dotted}"
 
@@ -236,9 +234,9 @@ def check_fe_lengths(
     if allow_expensive or any(beam.get(k) is None for k in needed):
         return
     wave_speed = (beam["youngs_modulus_gpa"] * 1e9 / beam["density_kg_m3"]) ** 0.5 * 1e3  # mm/s
-    from ..fe.params import DEFAULT_SAFETY_FACTOR
+    from ..fe.params import SolverParams
 
-    factor = solver.get("safety_factor", DEFAULT_SAFETY_FACTOR)
+    factor = SolverParams.from_mapping(solver).safety_factor  # the scene's step factor, its default included
     step = factor * beam["length"] / beam["n_elements"] / wave_speed
     cost = beam["n_elements"] * t_end / step
     if cost > MAX_FE_ELEMENT_INCREMENTS:
@@ -249,43 +247,43 @@ def check_fe_lengths(
         )
 
 
-def check_fe_config(fe_cfg: dict, producible: list[str], allow_expensive: bool = False) -> None:
+def check_fe_config(fe: Fe, producible: list[str], allow_expensive: bool = False) -> None:
     """Resolve every FE scene (merged over the defaults) and find the friction table, so a bad value fails
     before any job starts with the config key named (references between entries: stickslip.schema)."""
     from ..fe.params import SceneParams
     from ..studies.fe_config import scene_mapping
 
-    for name in fe_cfg["scenes"]:
-        for reading in fe_cfg.get("readings") or [None]:
+    for name in fe.scenes:
+        for reading in fe.readings:
             check_fe_lengths(
-                scene_mapping(fe_cfg, name, reading),
+                scene_mapping(fe, name, reading),
                 f"fe.scenes.{name}",
                 reading,
                 allow_expensive,
-                key_of=lambda dotted, n=name, r=reading: fe_layer_key(fe_cfg, n, r, dotted),
+                key_of=lambda dotted, n=name, r=reading: fe_layer_key(fe, n, r, dotted),
             )
-        mapping = scene_mapping(fe_cfg, name)
+        mapping = scene_mapping(fe, name)
         try:
             SceneParams.from_mapping(mapping)
         except (ValueError, TypeError, KeyError) as exc:
             raise ConfigError(f"fe.scenes.{name}: {exc}") from None
     # the studies run their base scene over their own window: it must hold the scene's output sampling
-    windows = [(f"fe.sweeps.{n}", sw["base"], sw.get("t_end")) for n, sw in fe_cfg["sweeps"].items()]
-    windows += [("fe.convergence", fe_cfg["convergence"]["base"], fe_cfg["convergence"]["t_end"])]
-    windows += [(f"fe.comparison ({s})", s, fe_cfg["comparison"]["t_end"]) for s in fe_cfg["scenes"]]
+    windows = [(f"fe.sweeps.{n}", sw.base, sw.t_end) for n, sw in fe.sweeps.items()]
+    windows += [("fe.convergence", fe.convergence.base, fe.convergence.t_end)]
+    windows += [(f"fe.comparison ({s})", s, fe.comparison.t_end) for s in fe.scenes]
     for key, base, t_end in windows:
         if t_end is None:
             continue
-        mapping = scene_mapping(fe_cfg, base)
+        mapping = scene_mapping(fe, base)
         for dotted in ("solver.output_dt", "output.bin_width"):
             section, _, field = dotted.partition(".")
             value = (mapping.get(section) or {}).get(field)
             if value is not None and value > t_end:
                 raise ConfigError(
                     f"{key.split(' ')[0]}.t_end: {t_end!r} is shorter than {dotted} = {value!r} of its base "
-                    f"scene {base} ({fe_layer_key(fe_cfg, base, None, dotted)})"
+                    f"scene {base} ({fe_layer_key(fe, base, None, dotted)})"
                 )
-    table = fe_cfg["friction_table"]
+    table = fe.friction_table
     if table not in producible and not Path(table).is_file():
         raise ConfigError(
             f"fe.friction_table: {table!r} does not exist and no rule writes it (rule friction_table writes "

@@ -44,8 +44,12 @@ FeSolver = parameter_section("FeSolver", SolverParams)
 Angle = _annotation(bounds(ContactParams)["angle_deg"]).__args__[0]
 
 
+#: The bin width [s] of a scene's binned series when its output gives none
+DEFAULT_BIN_WIDTH = 1.0e-4
+
+
 class FeOutput(Section):
-    bin_width: Positive | None = Field(None, description="s")
+    bin_width: Positive = Field(DEFAULT_BIN_WIDTH, description="s")
     windows: list[Annotated[list[NonNegative], Field(min_length=2, max_length=2)]] | None = None
 
     @model_validator(mode="after")
@@ -62,7 +66,7 @@ class FeScene(Section):
     disc: Disc | None = None
     contact: Contact | None = None
     solver: FeSolver | None = None
-    output: FeOutput | None = None
+    output: FeOutput = FeOutput()
 
 
 def fe_scene_parameter(path: str) -> str:
@@ -92,9 +96,10 @@ class FeSweep(Section):
     base: str
     parameter: str
     coord: str
-    units: str | None = None
-    long_name: str | None = None
-    values: Annotated[list[Finite], Field(min_length=2)]
+    units: str = "1"
+    long_name: str | None = Field(None, description="the sweep coordinate's long name (default: coord)")
+    #: an integer stays one (a sweep of beam.n_elements)
+    values: Annotated[list[int | Finite], Field(min_length=2)]
     t_end: Positive | None = None
 
     _parameter = field_validator("parameter")(fe_scene_parameter)
@@ -111,15 +116,15 @@ class Stability(Section):
     base: str
     angles: Annotated[list[Angle], Field(min_length=1)]
     slopes: Annotated[list[Slope], Field(min_length=1)]
-    crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] | None = None
-    crosscheck_e_folds: Positive | None = None
-    crosscheck_max_t_end: Positive | None = None
+    crosscheck: list[Annotated[list[Finite], Field(min_length=2, max_length=2)]] = []
+    crosscheck_e_folds: Positive = Field(8.0, description="e-foldings of growth a cross-check transient runs")
+    crosscheck_max_t_end: Positive = Field(0.05, description="longest cross-check transient [s]")
     #: disc speed label (as the scene names spell it) -> the scene whose disc speed sets the table slope
-    speeds: dict[Annotated[str, Field(pattern=r"^[a-z0-9_]+$")], str] | None = None
+    speeds: dict[Annotated[str, Field(pattern=r"^[a-z0-9_]+$")], str] = {}
 
     @model_validator(mode="after")
     def crosscheck_slopes_bounded(self):
-        for i, (_, slope) in enumerate(self.crosscheck or []):
+        for i, (_, slope) in enumerate(self.crosscheck):
             if abs(slope) > MAX_FRICTION_SLOPE:
                 raise ValueError(
                     f"crosscheck[{i}][1]: friction slope {slope!r} outside [-{MAX_FRICTION_SLOPE}, "
@@ -140,9 +145,9 @@ Mesh = Annotated[list[Annotated[int, Field(ge=1)]], Field(min_length=2, max_leng
 class Comparison(Section):
     mesh: Mesh
     t_end: Positive
-    notes: dict[str, str] | None = None
-    claim_windows: dict[str, Positive] | None = Field(
-        None, description="scene -> t_end [s]: the continuum also runs these over a claim window (dt, dt/2)"
+    notes: dict[str, str] = {}
+    claim_windows: dict[str, Positive] = Field(
+        {}, description="scene -> t_end [s]: the continuum also runs these over a claim window (dt, dt/2)"
     )
 
 
@@ -157,10 +162,10 @@ class FePeer(Section):
     """The CalculiX peer of the continuum strip (rule fe_peer_calculix)."""
 
     mesh: Mesh = Field(
-        description="nx, ny of the strip both the continuum and CalculiX solve (the paper's 100 x 1)"
+        [100, 1], description="nx, ny of the strip the continuum and CalculiX both solve (the paper's 100x1)"
     )
     tolerance: Fraction = Field(
-        description="largest |relative difference| of any two of closed form, continuum, ccx"
+        0.005, description="largest |relative difference| of any two of closed form, continuum, ccx"
     )
 
 
@@ -185,7 +190,7 @@ class Fe(Section):
     reduced: Reduced
     comparison: Comparison
     increments: Increments
-    peer: FePeer | None = None
+    peer: FePeer = FePeer()
     paper_figures: dict[int, Annotated[list[str], Field(min_length=1)]] = Field(
         description="paper figure (21-36) -> the scenes it draws, the stated disc speed first"
     )
@@ -195,7 +200,7 @@ class Fe(Section):
         refs = [(f"fe.sweeps.{n}.base", sw.base) for n, sw in self.sweeps.items()]
         refs += [(f"fe.{k}.base", getattr(self, k).base) for k in ("convergence", "stability", "increments")]
         refs += [(f"fe.cross_scene.{n}", s) for n, triple in self.cross_scene.items() for s in triple[:2]]
-        refs += [(f"fe.comparison.claim_windows.{n}", n) for n in self.comparison.claim_windows or {}]
+        refs += [(f"fe.comparison.claim_windows.{n}", n) for n in self.comparison.claim_windows]
         refs += [(f"fe.paper_figures.{n}", s) for n, scenes in self.paper_figures.items() for s in scenes]
         check_refs(refs, self.scenes, "fe.scenes")
         return self
@@ -209,3 +214,17 @@ class Fe(Section):
             missing, extra = sorted(wanted - set(figures)), sorted(set(figures) - wanted)
             raise ValueError(f"needs exactly Figs. 21-36 (missing {missing}, not beam-on-disc {extra})")
         return figures
+
+
+class FeJob(Section):
+    """What one FE job reads, its rule's params (``studies.fe_config.job_config``): its scenes resolved over
+    the defaults and a reading, and the study sections it names. The whole ``fe`` section's references were
+    checked at parse time; a job's part holds only what it runs."""
+
+    scenes: dict[str, FeScene] = {}
+    sweeps: dict[str, FeSweep] = {}
+    convergence: Convergence | None = None
+    stability: Stability | None = None
+    increments: Increments | None = None
+    comparison: Comparison | None = None
+    cross_scene: dict[str, Annotated[list[str], Field(min_length=3, max_length=3)]] = {}

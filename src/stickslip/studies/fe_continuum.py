@@ -20,6 +20,7 @@ from ..fe.modes import mode_growth
 from ..fe.params import FrictionTable, SceneParams
 from ..fe.quantities import INTERPRETATION
 from ..fe.step_halving import HALF_STEP, apply_step_halving
+from ..schema.fe import FeOutput
 from .fe_packing import result_dataset
 
 
@@ -67,8 +68,8 @@ def continuum_dataset(
     m = trajectory_metrics(r)
     growth, r.extra["first_mode_amplitude"] = mode_growth(r, float(natural_frequencies(scene, 1)[0]))
     m.update(growth)
-    out = dict(mapping.get("output", {}) or {})
-    ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
+    out = FeOutput.model_validate(mapping.get("output", {}))
+    ds = result_dataset(r, m, windows=out.windows, bin_width=out.bin_width)
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",

@@ -9,9 +9,10 @@ import numpy as np
 import xarray as xr
 
 from ..fe.beam import cantilever_errors
-from ..fe.params import DEFAULT_SAFETY_FACTOR, FrictionTable
+from ..fe.params import FrictionTable, SolverParams
 from ..fe.quantities import INTERPRETATION, metric_attrs
-from .fe_config import deep_merge, scene_mapping
+from ..schema.fe import Convergence, FeJob
+from .fe_config import as_mapping, deep_merge
 from .fe_scene import run_scene
 
 CONVERGENCE_QUANTITIES = (
@@ -34,7 +35,7 @@ def max_deviation(q: str, values: np.ndarray) -> tuple[float, str]:
     return dev, "largest relative deviation"
 
 
-def _grid_runs(cv: Mapping, base: Mapping, n_el: list, sfs: list, friction: FrictionTable):
+def _grid_runs(cv: Convergence, base: Mapping, n_el: list, sfs: list, friction: FrictionTable):
     """Every (n_elements, safety_factor) run: the quantities and time steps on the grid, and the modal
     errors per mesh."""
     vals = {q: np.zeros((len(n_el), len(sfs))) for q in CONVERGENCE_QUANTITIES}
@@ -43,7 +44,7 @@ def _grid_runs(cv: Mapping, base: Mapping, n_el: list, sfs: list, friction: Fric
     for i, n in enumerate(n_el):
         for j, sf in enumerate(sfs):
             mp = deep_merge(
-                base, {"beam": {"n_elements": n}, "solver": {"t_end": cv["t_end"], "safety_factor": sf}}
+                base, {"beam": {"n_elements": n}, "solver": {"t_end": cv.t_end, "safety_factor": sf}}
             )
             r, m, scene = run_scene(mp, friction)
             for q in CONVERGENCE_QUANTITIES:
@@ -71,15 +72,15 @@ def _grid_coords(n_el: list, sfs: list) -> dict:
     }
 
 
-def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
+def convergence_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     """Element count x time-step (safety factor) study of the base scene, plus the modal errors of the beam
     against the closed-form cantilever. For each quantity, the largest relative deviation from the finest
     run (most elements, smallest step) over the runs with at least the second-finest mesh is a scalar
     ``<quantity>_max_deviation`` (fractions: absolute deviation)."""
-    cv = fe_cfg["convergence"]
-    base = scene_mapping(fe_cfg, cv["base"])
-    n_el = list(cv["n_elements"])
-    sfs = list(cv.get("safety_factors", [base.get("solver", {}).get("safety_factor", DEFAULT_SAFETY_FACTOR)]))
+    cv = job.convergence
+    base = as_mapping(job.scenes[cv.base])
+    n_el = list(cv.n_elements)
+    sfs = list(cv.safety_factors or [SolverParams.from_mapping(base.get("solver", {})).safety_factor])
     vals, dt, bend_err, ax_err = _grid_runs(cv, base, n_el, sfs, friction)
     dims = ("n_elements", "safety_factor")
     ds = xr.Dataset(coords=_grid_coords(n_el, sfs))
@@ -107,7 +108,7 @@ def convergence_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
             "Conventions": "CF-1.10",
             "title": "Beam-on-disc convergence in element count and time step",
             "model_interpretation": INTERPRETATION,
-            "base_scene": cv["base"],
+            "base_scene": cv.base,
             "method": "explicit central difference per (n_elements, safety_factor)"
             "; modal errors vs closed form",
         }

@@ -3,22 +3,22 @@ the paper's banner: 3 688 747 increments at 0.65 s)."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
 import numpy as np
 import xarray as xr
 
 from ..fe.params import FrictionTable, SceneParams
+from ..schema.fe import FeJob
+from .fe_config import as_mapping
 
 
-def increments_dataset(
-    beam_mapping: Mapping, meshes, safety_factors, betas, duration: float = 0.65
-) -> xr.Dataset:
+def increments_dataset(job: FeJob, duration: float = 0.65) -> xr.Dataset:
     """Increment count of the continuum strip for ``duration`` (the paper's banner: 3 688 747 at 0.65 s)
-    for each mesh x safety factor x stiffness damping, from its global stable step."""
+    for each mesh x safety factor x stiffness damping of ``fe.increments``, from its global stable step."""
     from ..fe.continuum import build_continuum, increments, stable_time_step
 
-    p = SceneParams.from_mapping(beam_mapping)
+    inc = job.increments
+    meshes, safety_factors, betas = inc.meshes, inc.safety_factors, inc.betas
+    p = SceneParams.from_mapping(as_mapping(job.scenes[inc.base]))
     fr = FrictionTable.paper_fig17()
     n = np.zeros((len(meshes), len(safety_factors), len(betas)))
     dtc = np.zeros((len(meshes), len(betas)))

@@ -25,10 +25,9 @@ from ..fe import mechanics
 from ..fe.abaqus_deck import LINEAR_ELEMENT, LINEAR_ELEMENT_REASON, linear_deck
 from ..fe.continuum import build_continuum, natural_frequencies, static_state
 from ..fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+from ..schema.fe import FePeer
 from ..validation.calculix import CalculixError, mode_blocks, parse_dat, run_ccx, static_block
 
-#: largest |relative difference| counted as agreement when the config gives none (``fe.peer.tolerance``)
-PEER_TOLERANCE = 0.005
 N_BENDING = 3
 #: modes ccx computes to find the first N_BENDING in-plane bending ones among them
 N_MODES_CCX = 8
@@ -46,14 +45,6 @@ QUANTITIES = {
 }
 MODELS = ("closed_form", "continuum", "calculix")
 PAIRS = (("calculix", "continuum"), ("calculix", "closed_form"), ("continuum", "closed_form"))
-
-
-def peer_setup(fe_cfg: Mapping) -> tuple[BeamParams, int, int, float]:
-    """The strip of the FE config (``fe.defaults.beam``), the peer's mesh and tolerance (``fe.peer``)."""
-    beam = BeamParams.from_mapping(fe_cfg["defaults"]["beam"])
-    peer = fe_cfg.get("peer") or {}
-    nx, ny = (int(v) for v in peer.get("mesh", (100, 1)))
-    return beam, nx, ny, float(peer.get("tolerance", PEER_TOLERANCE))
 
 
 def closed_form_values(beam: BeamParams) -> dict:
@@ -168,7 +159,7 @@ def relative_difference(a: float, b: float) -> float:
     return float((a - b) / abs(b)) if b != 0 else float("nan")
 
 
-def peer_rows(values: Mapping[str, Mapping[str, float]], tolerance: float = PEER_TOLERANCE) -> list[dict]:
+def peer_rows(values: Mapping[str, Mapping[str, float]], tolerance: float) -> list[dict]:
     """One row per quantity: unit, the three values, the three relative differences, within tolerance,
     the element and why."""
     rows = []
@@ -184,9 +175,7 @@ def peer_rows(values: Mapping[str, Mapping[str, float]], tolerance: float = PEER
     return rows
 
 
-def peer_dataset(
-    rows: list[dict], beam: BeamParams, nx: int, ny: int, tolerance: float = PEER_TOLERANCE
-) -> xr.Dataset:
+def peer_dataset(rows: list[dict], beam: BeamParams, nx: int, ny: int, tolerance: float) -> xr.Dataset:
     """Per quantity the three values (scalars ``<quantity>_<model>``, in the quantity's units) and, over
     dimension ``quantity``, the relative differences; ``max_abs_rel_diff`` and ``peers_agree`` (1 when
     every pair agrees within ``tolerance`` on every quantity)."""
@@ -238,9 +227,9 @@ def peer_dataset(
     return ds
 
 
-def peer_study(fe_cfg: Mapping, workdir=None) -> tuple[list[dict], xr.Dataset, dict]:
+def peer_study(beam: BeamParams, peer: FePeer, workdir=None) -> tuple[list[dict], xr.Dataset, dict]:
     """(table rows, dataset, linear decks by name) of the FE config's strip."""
-    beam, nx, ny, tolerance = peer_setup(fe_cfg)
+    (nx, ny), tolerance = peer.mesh, peer.tolerance
     ccx, decks = calculix_values(beam, nx, ny, workdir)
     values = {
         "closed_form": closed_form_values(beam),

@@ -12,6 +12,7 @@ from ..fe.params import FrictionTable, SceneParams
 from ..fe.quantities import INTERPRETATION
 from ..fe.run import integrate_scene, run_metrics
 from ..fe.scene import BuiltScene, build_scene
+from ..schema.fe import FeOutput
 from .fe_packing import result_dataset, shape_variables
 
 
@@ -47,8 +48,8 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "", pro
     ``build(mapping) -> xr.Dataset``). ``mapping['output']`` may give ``windows`` (list of [t0, t1] s)
     and ``bin_width`` [s]; ``progress(done, total)`` sees the time steps (``run_scene``)."""
     r, m, scene = run_scene(mapping, friction, midspan=True, progress=progress)
-    out = dict(mapping.get("output", {}) or {})
-    ds = result_dataset(r, m, windows=out.get("windows"), bin_width=float(out.get("bin_width", 1e-4)))
+    out = FeOutput.model_validate(mapping.get("output", {}))
+    ds = result_dataset(r, m, windows=out.windows, bin_width=out.bin_width)
     ds = ds.assign(shape_variables(scene, r.q_static))
     ds.attrs.update(
         {

@@ -10,7 +10,8 @@ import xarray as xr
 from ..fe import mechanics as mc
 from ..fe.params import BeamParams, FrictionTable
 from ..fe.quantities import INTERPRETATION
-from .fe_config import deep_merge, scene_mapping
+from ..schema.fe import FeJob
+from .fe_config import as_mapping, deep_merge
 from .fe_scene import scene_dataset
 
 FIT_LABEL = (
@@ -20,9 +21,9 @@ FIT_LABEL = (
 )
 
 
-def setup_fit_mapping(fe_cfg: Mapping, base: str, centre: float) -> tuple[dict, float]:
+def setup_fit_mapping(job: FeJob, base: str, centre: float) -> tuple[dict, float]:
     """(scene mapping, support stiffness [N mm-1]) of the tip-support fit to Fig. 21's centre [mm]."""
-    mp = scene_mapping(fe_cfg, base)
+    mp = as_mapping(job.scenes[base])
     b = BeamParams.from_mapping(mp.get("beam", {}))
     q = mc.distributed_weight(b.rho, b.area, b.g)
     k = mc.soft_support_for_corner_displacement(abs(centre), q, b.length, b.E * b.inertia, b.thickness)

@@ -9,10 +9,11 @@ import numpy as np
 import xarray as xr
 
 from ..fe.explicit import static_state
-from ..fe.params import FrictionTable
+from ..fe.params import FrictionTable, SolverParams
 from ..fe.quantities import INTERPRETATION
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
-from .fe_config import deep_merge, scene_mapping
+from ..schema.fe import FeJob, Stability
+from .fe_config import as_mapping, deep_merge
 from .fe_scene import scene_of
 
 MAP_DIMS = ("contact_angle", "friction_slope")
@@ -20,11 +21,8 @@ MAP_DIMS = ("contact_angle", "friction_slope")
 
 def rayleigh_damping(mapping: Mapping) -> dict:
     """The scene's Rayleigh damping as keyword arguments of the eigen and transient analyses."""
-    solver = mapping.get("solver", {})
-    return {
-        "mass_damping": float(solver.get("mass_damping", 0.0)),
-        "stiffness_damping": float(solver.get("stiffness_damping", 0.0)),
-    }
+    solver = SolverParams.from_mapping(mapping.get("solver", {}))
+    return {"mass_damping": solver.mass_damping, "stiffness_damping": solver.stiffness_damping}
 
 
 def at_angle(base: Mapping, angle: float) -> dict:
@@ -42,14 +40,14 @@ def growth_map(base: Mapping, angles, slopes, friction: FrictionTable, damp: Map
     return g, fr
 
 
-def crosscheck_point(base, friction, speed, angle, slope, st: Mapping, damp: Mapping) -> dict:
+def crosscheck_point(base, friction, speed, angle, slope, st: Stability, damp: Mapping) -> dict:
     """One cross-check: with a linear friction law of ``slope`` through the table's value at the disc
     ``speed``, the eigenvalue growth (sliding and static normal force), both normal forces, and the growth
     of an explicit transient over ``crosscheck_e_folds`` e-foldings (at most ``crosscheck_max_t_end``)."""
     lin = FrictionTable.linear(friction(speed) - slope * speed, slope, 2.0 * speed)
     sc = scene_of(at_angle(base, angle), lin)
     ge, fe = max_growth(sliding_eigenvalues(sc.system, sc.law, **damp))
-    dur = min(float(st.get("crosscheck_max_t_end", 0.05)), float(st.get("crosscheck_e_folds", 8)) / ge)
+    dur = min(st.crosscheck_max_t_end, st.crosscheck_e_folds / ge)
     gt, ft = transient_growth(sc.system, sc.law, dur, **damp) if ge > 0 else (np.nan, np.nan)
     return {
         "eig": ge,
@@ -145,20 +143,20 @@ def at_speed(g, angles, slopes, table_slope: float, label: str, speed: float) ->
     }
 
 
-def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
+def stability_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     """Eigenvalue map over contact angle x friction slope, and explicit-transient cross-checks.
 
     Linearised about steady sliding with the sliding normal force (friction preload included) and the
     base scene's Rayleigh damping. Each cross-check runs the explicit integrator from the sliding state
     for ``crosscheck_e_folds`` e-foldings of the eigenvalue growth rate (at most
     ``crosscheck_max_t_end``) with a linear friction law of the cross-check slope."""
-    st = fe_cfg["stability"]
-    base = scene_mapping(fe_cfg, st["base"])
-    angles, slopes = list(st["angles"]), list(st["slopes"])
+    st = job.stability
+    base = as_mapping(job.scenes[st.base])
+    angles, slopes = list(st.angles), list(st.slopes)
     damp = rayleigh_damping(base)
     g, fr = growth_map(base, angles, slopes, friction, damp)
     V = scene_of(base, friction).params.disc.surface_speed
-    cc = st.get("crosscheck", [])
+    cc = st.crosscheck
     rows = [crosscheck_point(base, friction, V, a, s, st, damp) for a, s in cc]
     table_slope = {
         "table_slope_at_disc_speed": _var(
@@ -170,15 +168,15 @@ def stability_dataset(fe_cfg: Mapping, friction: FrictionTable) -> xr.Dataset:
         coords=map_coords(angles, slopes),
     )
     ds = ds.assign(at_table_slope(g, fr, angles, slopes, friction.slope(V)))
-    for label, scene in sorted((st.get("speeds") or {}).items()):
-        speed = scene_of(scene_mapping(fe_cfg, scene), friction).params.disc.surface_speed
+    for label, scene in sorted(st.speeds.items()):
+        speed = scene_of(as_mapping(job.scenes[scene]), friction).params.disc.surface_speed
         ds = ds.assign(at_speed(g, angles, slopes, friction.slope(speed), label, speed))
     ds.attrs.update(
         {
             "Conventions": "CF-1.10",
             "title": "Stability of steady sliding (complex eigenvalues)",
             "model_interpretation": INTERPRETATION,
-            "base_scene": st["base"],
+            "base_scene": st.base,
             "method": (
                 "linearisation about steady sliding (sliding normal force, friction slope, Rayleigh "
                 "damping); "

@@ -12,25 +12,26 @@ import xarray as xr
 
 from ..fe.params import FrictionTable
 from ..fe.quantities import INTERPRETATION, metric_attrs
-from .fe_config import halved_step, scene_mapping
+from ..schema.fe import FeJob, FeSweep
+from .fe_config import as_mapping, halved_step
 from .fe_scene import run_scene
 
 
-def sweep_member(base: Mapping, sweep: Mapping, value) -> dict:
+def sweep_member(base: Mapping, sweep: FeSweep, value) -> dict:
     """The base scene with the swept ``section.key`` set to ``value`` (and the sweep's own t_end)."""
-    section, key = sweep["parameter"].split(".")
+    section, key = sweep.parameter.split(".")
     mp = copy.deepcopy(base)
     mp.setdefault(section, {})[key] = value
-    if "t_end" in sweep:
-        mp.setdefault("solver", {})["t_end"] = sweep["t_end"]
+    if sweep.t_end is not None:
+        mp.setdefault("solver", {})["t_end"] = sweep.t_end
     return mp
 
 
-def _sweep_rows(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable, half_step: bool = False):
-    sw = fe_cfg["sweeps"][sweep_name]
-    base = scene_mapping(fe_cfg, sw["base"])
+def _sweep_rows(job: FeJob, sweep_name: str, friction: FrictionTable, half_step: bool = False):
+    sw = job.sweeps[sweep_name]
+    base = as_mapping(job.scenes[sw.base])
     rows = []
-    for val in sw["values"]:
+    for val in sw.values:
         mp = sweep_member(base, sw, val)
         _, m, _ = run_scene(halved_step(mp) if half_step else mp, friction)
         rows.append(m)
@@ -42,23 +43,23 @@ def _scalar_columns(rows: list[dict]) -> dict:
     return {k: np.array([r[k] for r in rows], float) for k in rows[0] if np.isscalar(rows[0][k])}
 
 
-def sweep_half_step(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> dict:
+def sweep_half_step(job: FeJob, sweep_name: str, friction: FrictionTable) -> dict:
     """Every sweep member's scalar metrics at half its time step, as arrays along the sweep."""
-    _, rows = _sweep_rows(fe_cfg, sweep_name, friction, half_step=True)
+    _, rows = _sweep_rows(job, sweep_name, friction, half_step=True)
     return _scalar_columns(rows)
 
 
-def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
-    sw = fe_cfg["sweeps"][sweep_name]
-    base, rows = _sweep_rows(fe_cfg, sweep_name, friction)
-    coord = sw["coord"]
+def sweep_dataset(job: FeJob, sweep_name: str, friction: FrictionTable) -> xr.Dataset:
+    sw = job.sweeps[sweep_name]
+    base, rows = _sweep_rows(job, sweep_name, friction)
+    coord = sw.coord
     ds = xr.Dataset(
         {k: (coord, v, metric_attrs(k)) for k, v in _scalar_columns(rows).items()},
         coords={
             coord: (
                 coord,
-                np.array(sw["values"], float),
-                {"units": sw.get("units", "1"), "long_name": sw.get("long_name", coord)},
+                np.array(sw.values, float),
+                {"units": sw.units, "long_name": sw.long_name or coord},
             )
         },
     )
@@ -67,7 +68,7 @@ def sweep_dataset(fe_cfg: Mapping, sweep_name: str, friction: FrictionTable) -> 
             "Conventions": "CF-1.10",
             "title": f"Beam-on-disc sweep {sweep_name}",
             "model_interpretation": INTERPRETATION,
-            "base_scene": sw["base"],
+            "base_scene": sw.base,
             "parameters": json.dumps(base),
             "method": "explicit central difference, one run per sweep value",
         }
