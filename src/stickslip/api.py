@@ -746,7 +746,7 @@ def simulate_fe(
         given = typed.ensemble.model_dump(exclude_none=True) if typed.ensemble else None
         spec = replace(EnsembleSpec.from_mapping(given).without_blas(), step_factor=HALF_STEP)
         solver = SolverParams.from_mapping(mapping["solver"])  # samples per run: t_end / output_dt
-        check_ensemble_cost(spec, solver.t_end / solver.output_dt + 1, config)
+        check_ensemble_cost(spec, solver.t_end / solver.output_dt + 1, allow_expensive=typed.allow_expensive)
     friction = _fe_friction_table(config, fe.friction_table, base_root, friction_table)
     if model == "continuum":
         nx, ny = fe.comparison.mesh

@@ -44,6 +44,12 @@ def canonical(value):
     return value
 
 
+def as_written(entry):
+    """A typed config section as a job's params where the order of its entries is meaning (the methods
+    study's and validation's labels and law order, the inverse study's hypotheses): the values it gave."""
+    return entry.model_dump(exclude_unset=True)
+
+
 def as_params(entry):
     """Typed config entries (one, or a mapping or list of them) as a job's params: the values the config
     gave, keys sorted (``canonical``); a job types them again at its boundary (stickslip.schema) and re-runs
@@ -118,7 +124,6 @@ PRIORITY = {
 #: Final outputs; every rules file appends its own.
 ALL_TARGETS = []
 
-ONEDOF = config["onedof"]
 #: Every 1-DOF run's dataset path -> its run (scene, reading, method): paths are looked up, never parsed.
 ONEDOF_CATALOGUE = onedof_catalogue(CFG.onedof)
 
@@ -135,9 +140,8 @@ def report_of(category, label=None, **more):
     return lambda p: report(p, caption=REPORT_CAPTION_FILE, category=category, **labels(p), **more)
 
 
-#: The paper's baseline run (`onedof.baseline`): the Eq. 6 curve, the critical-speed continuation and a sweep
-#: without its own `scene:` start from it.
-BASELINE = ONEDOF["baseline"]
+#: The run the friction table is measured along (onedof.friction_table: scene, reading, method).
+TABLE_RUN = CFG.onedof.friction_table
 
 
 SRC = Path(workflow.basedir) / "src"
@@ -318,18 +322,19 @@ def inverse_onedof_config():
     every scene and sweep."""
     from stickslip.inverse.problem import runs_by_dataset
 
-    figures = CFG.inverse.figures.values()
+    onedof, figures = CFG.onedof, CFG.inverse.figures.values()
     ids = {cid for fig in figures for cid in fig.claims}
     rows = {c.id: c for c in CLAIMS}
-    keep = {k: ONEDOF[k] for k in ("baseline", "defaults", "scenes", "sweeps")}
+    keep = {k: getattr(onedof, k) for k in ("baseline", "defaults", "scenes", "sweeps")}
     if not ids <= set(rows):
-        return canonical(keep)
-    runs = runs_by_dataset(ONEDOF["scenes"], ONEDOF.get("sweeps", {}))
+        return as_params(keep)
+    runs = runs_by_dataset(onedof.scenes, onedof.sweeps)
     named = [runs[rows[i].dataset] for i in sorted(ids) if rows[i].dataset in runs]
     sweeps = sorted({name for kind, name in named if kind == "sweep"})
-    scenes = {name for kind, name in named if kind == "scene"} | {BASELINE["scene"]}
+    base = onedof.baseline.scene
+    scenes = {name for kind, name in named if kind == "scene"} | {base}
     scenes |= {fig.scene for fig in figures if fig.scene is not None}
-    scenes |= {ONEDOF["sweeps"][s].get("scene") or BASELINE["scene"] for s in sweeps}
-    keep["scenes"] = {name: ONEDOF["scenes"][name] for name in scenes if name in ONEDOF["scenes"]}
-    keep["sweeps"] = {name: ONEDOF["sweeps"][name] for name in sweeps}
-    return canonical(keep)
+    scenes |= {onedof.sweeps[s].scene or base for s in sweeps}
+    keep["scenes"] = {name: onedof.scenes[name] for name in scenes if name in onedof.scenes}
+    keep["sweeps"] = {name: onedof.sweeps[name] for name in sweeps}
+    return as_params(keep)

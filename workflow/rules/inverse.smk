@@ -4,7 +4,7 @@
 
 rule inverse_study:
     input:
-        claims=sorted(str(p) for p in Path(".").glob(config["inverse"]["claims_glob"])),
+        claims=sorted(str(p) for p in Path(".").glob(CFG.inverse.claims_glob)),
     output:
         **outputs("inverse_study"),
     log:
@@ -16,7 +16,7 @@ rule inverse_study:
         CONDA_ENV
     params:
         # the inverse section as written: a hypothesis is named by its first key, listed in file order
-        config={"onedof": inverse_onedof_config(), "inverse": config["inverse"]},
+        config={"onedof": inverse_onedof_config(), "inverse": as_written(CFG.inverse)},
     script:
         "../scripts/inverse_study.py"
 

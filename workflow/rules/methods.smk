@@ -1,6 +1,6 @@
 # Issue 3: exact reference vs integration methods (work-precision charts, failure map, notebook).
 
-METHODS_SCENES = list(config["methods_study"]["scenes"])
+METHODS_SCENES = list(CFG.methods_study.scenes)
 METHODS_NC = products_of("methods_work_precision")
 METHODS_PNG = products_of("methods_figures")
 
@@ -24,7 +24,7 @@ rule methods_work_precision:
     conda:
         CONDA_ENV
     params:
-        study=config["methods_study"],  # rerun when the study config changes
+        study=as_written(CFG.methods_study),  # rerun when the study config changes
     script:
         "../scripts/methods_work_precision.py"
 
@@ -40,7 +40,7 @@ rule methods_failure_map:
     conda:
         CONDA_ENV
     params:
-        study=config["methods_study"],
+        study=as_written(CFG.methods_study),
     script:
         "../scripts/methods_failure_map.py"
 

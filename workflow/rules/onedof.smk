@@ -53,10 +53,6 @@ for _figure, _spec in CFG.onedof.figures.items():
 ALL_TARGETS.extend(products_of(*(f"onedof_figure_{fig}" for fig in CFG.onedof.figures)))
 
 
-#: The run the friction table is measured along (onedof.friction_table: scene, reading, method).
-TABLE_RUN = CFG.onedof.friction_table
-
-
 rule friction_table:
     """Fig. 17: mu(v_r) along the baseline solution; the beam-on-disc (FE) scenes use it as their friction law."""
     output:

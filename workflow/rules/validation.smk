@@ -4,7 +4,8 @@ from stickslip.schema import LawMethodsJob, PeerJob
 from stickslip.validation.setup import table_paths
 
 #: The part of the section the peer job reads (its params, and its tables are inputs).
-VALIDATION_PEER = PeerJob.part_of(config["validation"])
+VALIDATION = as_written(CFG.validation)
+VALIDATION_PEER = PeerJob.part_of(VALIDATION)
 
 ALL_TARGETS.extend(products_of("validation_peer", "validation_methods", "validation_round_trip"))
 
@@ -31,11 +32,7 @@ rule validation_round_trip:
     """The 1-DOF model driven by the Fig. 17 table vs the cycle the table came from."""
     input:
         table=paths.friction_table("csv"),
-        source=onedof_dataset(
-            ONEDOF["friction_table"]["scene"],
-            ONEDOF["friction_table"]["reading"],
-            ONEDOF["friction_table"]["method"],
-        ),
+        source=onedof_dataset(TABLE_RUN.scene, TABLE_RUN.reading, TABLE_RUN.method),
     output:
         **outputs("validation_round_trip"),
     log:
@@ -45,13 +42,9 @@ rule validation_round_trip:
     conda:
         CONDA_ENV
     params:
-        table=canonical(ONEDOF["friction_table"]),
-        onedof=onedof_subconfig(
-            ONEDOF["friction_table"]["reading"],
-            ONEDOF["friction_table"]["scene"],
-            ONEDOF["friction_table"]["method"],
-        ),
-        validation={k: v for k, v in config["validation"].items() if k in ("solver", "round_trip")},
+        table=as_params(TABLE_RUN),
+        onedof=onedof_subconfig(TABLE_RUN.reading, TABLE_RUN.scene, TABLE_RUN.method),
+        validation={k: v for k, v in VALIDATION.items() if k in ("solver", "round_trip")},
     script:
         "../scripts/validation_round_trip.py"
 
@@ -67,6 +60,6 @@ rule validation_methods:
     conda:
         CONDA_ENV
     params:
-        validation=LawMethodsJob.part_of(config["validation"]),
+        validation=LawMethodsJob.part_of(VALIDATION),
     script:
         "../scripts/validation_methods.py"
