@@ -100,9 +100,10 @@ repair: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS)
 
-# Python style (ruff, configured in pyproject.toml), rules formatting (snakefmt) and Snakemake's linter.
+# Python style and formatting (ruff, configured in pyproject.toml), rules formatting (snakefmt) and Snakemake's linter.
 lint: $(STAMP)
 	$(BIN)/ruff check src tests workflow benchmarks
+	$(BIN)/ruff format --check src tests workflow benchmarks
 	$(BIN)/snakefmt --check Snakefile workflow/rules
 	$(BIN)/snakemake --lint
 
@@ -131,7 +132,7 @@ help:
 	@echo "  figures     rebuild every result with snakemake -j$(JOBS) (results/index.html answers the paper)"
 	@echo "  small       the small CI configuration in build/small/results (OVERLAY=<files> OVERLAY_DIR=<folder>: yours)"
 	@echo "  test        the whole test suite on $(JOBS) cores (incl. the claims check)"
-	@echo "  lint        ruff, snakefmt --check, snakemake --lint"
+	@echo "  lint        ruff check, ruff format --check, snakefmt --check, snakemake --lint"
 	@echo "  report      the pipeline, then results/report.html (every figure captioned)"
 	@echo "  bench       every benchmarks/bench_*.py"
 	@echo "  repair      figures, after verifying every dataset's content checksum (reads all data)"

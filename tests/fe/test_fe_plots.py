@@ -221,13 +221,21 @@ def test_growth_row_draws_the_first_mode_against_the_linear_estimate(ds):
     window, both step sizes, and e^(lambda t) of the eigen-analysis; the fitted rate and its step-halving
     note printed."""
     t = np.arange(0.025, 1.0, 0.05)
-    grown = ds.drop_dims("mode_window", errors="ignore").assign(
-        first_mode_amplitude=("mode_window", 2e-5 * np.exp(0.5 * t)),
-        first_mode_amplitude_half_step=("mode_window", 2e-5 * np.exp(0.48 * t)),
-        first_mode_growth_rate=((), 0.5, {"step_halving": "sign converged, value moves 4.0 % at half step"}),
-        first_mode_growth_rate_linear=0.36,
-        first_mode_frequency=366.2,
-    ).assign_coords(mode_window_time=("mode_window", t))
+    grown = (
+        ds.drop_dims("mode_window", errors="ignore")
+        .assign(
+            first_mode_amplitude=("mode_window", 2e-5 * np.exp(0.5 * t)),
+            first_mode_amplitude_half_step=("mode_window", 2e-5 * np.exp(0.48 * t)),
+            first_mode_growth_rate=(
+                (),
+                0.5,
+                {"step_halving": "sign converged, value moves 4.0 % at half step"},
+            ),
+            first_mode_growth_rate_linear=0.36,
+            first_mode_frequency=366.2,
+        )
+        .assign_coords(mode_window_time=("mode_window", t))
+    )
     assert all(TIME_SERIES[n].growth for n in (24, 25, 27, 29))
     fig = paper_time_series_figure(24, {"a": grown}, [])
     growth = fig.axes[2]

@@ -9,8 +9,7 @@ from project_run import ROOT
 
 def test_committed_schema_is_the_generated_one():
     assert (ROOT / SCHEMA_PATH).read_text() == schema_text(), (
-        "workflow/schemas/config.schema.json is stale: "
-        "run `python -m stickslip.schema --write`"
+        "workflow/schemas/config.schema.json is stale: run `python -m stickslip.schema --write`"
     )
 
 

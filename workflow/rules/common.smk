@@ -6,6 +6,7 @@ from glob import glob
 from pathlib import Path
 
 from stickslip.pipeline.config import drop_removed, validate_config
+from stickslip.schema.base import as_params, as_written, canonical
 from stickslip.claims.load import ClaimsError, check_claims, load_claims, required_datasets
 from stickslip.io.run_variables import run_dataset_variables
 import stickslip.catalogue as paths
@@ -26,40 +27,6 @@ CLAIMS = load_claims(CLAIM_FILES)
 drop_removed(config)
 #: The config as one typed object (stickslip.schema.PipelineConfig): the rules read it, never the mapping.
 CFG = validate_config(config, producible=PRODUCIBLE, sources=CONFIG_FILES, claims=CLAIMS)
-
-
-def canonical(value):
-    """A config value with every mapping's keys in sorted order (lists keep theirs: their order is meaning).
-
-    Snakemake compares a job's params by their repr, where a dict shows its keys in the order the YAML file
-    wrote them: a reordered key would re-run every job that reads it. The 1-DOF and map sections, the friction
-    table's and the FE peer's go through here (the FE sections are sorted by studies.fe_config.job_config),
-    so those jobs depend on what the config says, not on how it is laid out. Left as written: sections whose
-    order is meaning (the methods study's and validation's labels and law order, the inverse study's
-    hypotheses, each named by its first key)."""
-    if isinstance(value, dict):
-        return {key: canonical(value[key]) for key in sorted(value, key=str)}
-    if isinstance(value, (list, tuple)):
-        return [canonical(item) for item in value]
-    return value
-
-
-def as_written(entry):
-    """A typed config section as a job's params where the order of its entries is meaning (the methods
-    study's and validation's labels and law order, the inverse study's hypotheses): the values it gave."""
-    return entry.model_dump(exclude_unset=True)
-
-
-def as_params(entry):
-    """Typed config entries (one, or a mapping or list of them) as a job's params: the values the config
-    gave, keys sorted (``canonical``); a job types them again at its boundary (stickslip.schema) and re-runs
-    when one of these values changes."""
-    if isinstance(entry, dict):
-        return {key: as_params(value) for key, value in sorted(entry.items())}
-    if isinstance(entry, (list, tuple)):
-        return [as_params(item) for item in entry]
-    dump = getattr(entry, "model_dump", None)
-    return entry if dump is None else canonical(dump(exclude_unset=True))
 
 
 #: Perturbation ensemble of every dataset a claim reads (stickslip.ensemble).

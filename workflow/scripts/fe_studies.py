@@ -1,6 +1,5 @@
 """Sweeps, convergence and stability studies, continuum increments -> results/fe/*.nc (one job)."""
 
-
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.fe.params import FrictionTable
 from stickslip.fe.quantities import INTERPRETATION

@@ -38,6 +38,7 @@ def state_error(traj, ref) -> dict:
 def _hermite_extremum(t0, t1, x0, x1, v0, v1):
     """Extremum (t, x) of the cubic Hermite interpolant on [t0, t1] where v changes sign."""
     from scipy.optimize import brentq  # here: the parse-time config check imports this module
+
     h = t1 - t0
     # x(s) = x0 + h v0 s + (3dx - h(2v0+v1)) s^2 + (h(v0+v1) - 2dx) s^3,  s in [0, 1]
     dx = x1 - x0
@@ -96,6 +97,7 @@ def segment_cycle_metrics(segments, cycles: int = 3) -> dict:
     Extrema of x are the zeros of v inside slip segments, refined with Brent's method on the closed form.
     """
     from scipy.optimize import brentq  # here: the parse-time config check imports this module
+
     tmax, xmax, tmin, xmin = [], [], [], []
     for seg in segments:
         if seg.phase == 0 or seg.t1 - seg.t0 <= 0:

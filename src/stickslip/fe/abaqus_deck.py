@@ -416,4 +416,3 @@ def friction_table_of(deck: Deck) -> FrictionTable:
     if len(deck.friction[0]) < 2:
         return FrictionTable((0.0,), (deck.friction[0][0],))
     return FrictionTable(tuple(r[1] for r in deck.friction), tuple(r[0] for r in deck.friction))
-

@@ -383,9 +383,7 @@ class LawModel:
     def stick_demand(self, t, x):
         """Force the friction must supply to carry the mass with the belt [N]: M a_b + C V_b + K x."""
         p = self.params
-        return (
-            self.mass * p.belt_acceleration_at(t) + p.damping * self.belt_velocity(t) + p.stiffness * x
-        )
+        return self.mass * p.belt_acceleration_at(t) + p.damping * self.belt_velocity(t) + p.stiffness * x
 
     @property
     def static_force(self) -> float:

@@ -14,6 +14,7 @@ from collections.abc import Mapping
 from ..fe.params import SolverParams
 from ..fe.step_halving import HALF_STEP
 from ..schema import PipelineConfig
+from ..schema.base import canonical
 from ..schema.fe import Fe, FeJob, FeScene
 
 #: The fields of an FE mapping (a scene's, or the ``fe`` section a study reads) that the perturbation
@@ -102,15 +103,6 @@ def effective_fe(config: PipelineConfig) -> Fe:
             "comparison": comparison,
         }
     )
-
-
-def canonical(node):
-    """A nested mapping with its keys sorted at every level (lists keep their order)."""
-    if isinstance(node, Mapping):
-        return {k: canonical(node[k]) for k in sorted(node, key=str)}
-    if isinstance(node, (list, tuple)):
-        return [canonical(v) for v in node]
-    return node
 
 
 def job_config(fe: Fe, *, scenes=(), reading: str | None = None, sections=()) -> dict:
