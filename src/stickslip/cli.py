@@ -488,16 +488,17 @@ def _plot_onedof(ds, onedof: Onedof, args, reading: str, out=None) -> None:
     import matplotlib.pyplot as plt
 
     from .presentation.plots import onedof_figure
+    from .schema import Figure
 
     scene = ds.attrs.get("scene_name", "")
-    kind = next((f.plot for f in onedof.figures.values() if f.scene == scene), "timeseries")
+    drawn_as = next(({"plot": f.plot} for f in onedof.figures.values() if f.scene == scene), {})
     method = ds.attrs.get("method_name", "")
     # the figure adds the reading under the title: the title names the run and its friction law, once each
     law = ds.attrs.get("scene_friction_law")
     friction = f", friction law {law}" if law else ""
     title = f"{ds.attrs.get('scene_figure', '')} {scene}: method {method}{friction}".strip()
-    spec = {"title": title, "scene": scene, "plot": kind, "readings": [reading]}
-    fig = onedof_figure({method: ds}, {**spec, "methods": [method]}, reading=reading)
+    spec = Figure(title=title, scene=scene, readings=[reading], methods=[method], **drawn_as)
+    fig = onedof_figure({method: ds}, spec, reading=reading)
     fig.savefig(args.plot, dpi=110)
     plt.close(fig)
     print(f"wrote {args.plot}", file=out or sys.stdout)

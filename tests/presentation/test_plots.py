@@ -14,6 +14,13 @@ def _run_dataset(**changes):
     return trajectory_dataset(make_solver("exact").solve(model, 10.0, t))
 
 
+def _figure(**plot):
+    """A figure of the config as the rules hand it on (``stickslip.schema.Figure``); its default plot kind."""
+    from stickslip.schema import Figure
+
+    return Figure(title="t", scene="fig02", readings=["r"], methods=["exact"], **plot)
+
+
 def test_onedof_figure_draws_the_datasets_samples():
     """The time-series figure plots exactly the dataset's displacement and velocity against its time, and
     the phase plot velocity against displacement - not a resampled or rescaled copy."""
@@ -25,13 +32,13 @@ def test_onedof_figure_draws_the_datasets_samples():
     from stickslip.presentation.plots import onedof_figure
 
     ds = _run_dataset()
-    fig = onedof_figure({"exact": ds}, {"title": "t", "plot": "timeseries"}, reading="consistent_caption")
+    fig = onedof_figure({"exact": ds}, _figure(plot="timeseries"), reading="consistent_caption")
     ax_x, ax_v = fig.axes
     np.testing.assert_array_equal(ax_x.lines[0].get_xdata(), ds.time.values)
     np.testing.assert_array_equal(ax_x.lines[0].get_ydata(), ds.displacement.values)
     np.testing.assert_array_equal(ax_v.lines[0].get_ydata(), ds.velocity.values)
     np.testing.assert_array_equal(ax_v.lines[-1].get_ydata(), ds.belt_velocity.values)  # the belt
-    phase = onedof_figure({"exact": ds}, {"title": "t", "plot": "phase"}, reading="consistent_caption")
+    phase = onedof_figure({"exact": ds}, _figure(plot="phase"), reading="consistent_caption")
     np.testing.assert_array_equal(phase.axes[0].lines[0].get_xdata(), ds.displacement.values)
     np.testing.assert_array_equal(phase.axes[0].lines[0].get_ydata(), ds.velocity.values)
 
@@ -47,7 +54,7 @@ def test_a_failed_run_is_written_out_not_drawn():
     failed = ds.copy()
     failed["solver_status"] = failed["solver_status"] * 0 + 1
     failed["solver_status"].attrs["message"] = "budget: more than 100000 RHS evaluations"
-    fig = onedof_figure({"exact": ds, "ode45": failed}, {"title": "t"}, reading="r")
+    fig = onedof_figure({"exact": ds, "ode45": failed}, _figure(), reading="r")
     ax_x = fig.axes[0]
     assert len(ax_x.lines) == 1  # only the successful run is drawn
     assert any("ode45" in t.get_text() and "100000" in t.get_text() for t in ax_x.texts)

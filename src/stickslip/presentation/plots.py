@@ -37,13 +37,12 @@ def _failed_note(ax, ds, method, row):
     )
 
 
-def onedof_figure(datasets: dict, spec: dict, reading: str):
-    """Fig. 2-style time series (displacement and velocity), Fig. 8-style velocity or Fig. 3-style phase plot,
-    every method overlaid; a failed run is written out in red, never drawn."""
-    kind = spec.get("plot", "timeseries")
-    if kind not in ("timeseries", "velocity", "phase"):
-        raise ValueError(f"plot: {kind!r} is not one of ['timeseries', 'velocity', 'phase']")
-    title = f"{spec.get('title', '')}\nreading: {reading}"
+def onedof_figure(datasets: dict, figure, reading: str):
+    """Fig. 2-style time series (displacement and velocity), Fig. 8-style velocity or Fig. 3-style phase plot
+    (``figure``: the typed ``stickslip.schema.Figure``, its ``plot`` and ``title``), every method overlaid; a
+    failed run is written out in red, never drawn."""
+    kind = figure.plot
+    title = f"{figure.title or ''}\nreading: {reading}"
     if kind == "timeseries":
         fig, (ax_x, ax_v) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
     elif kind == "velocity":
