@@ -152,10 +152,14 @@ rule fe_model_comparison:
         "../scripts/fe_comparison.py"
 
 
+#: The claims file of Sections 9-12 (its rows, as the parse read them, are the FE readings' claims).
+FE_CLAIMS_FILE = "config/claims/sections_09_12.yaml"
+
+
 rule fe_readings_claims:
     """Every FE claim row evaluated under every FE reading (the claims table checks the default one)."""
     input:
-        claims="config/claims/sections_09_12.yaml",
+        claims=FE_CLAIMS_FILE,
         comparison=paths.fe_model_comparison("csv"),
         # the continuum rows of the windows: one reading, never re-pointed per FE reading
         data=products_of("fe_reading", "fe_studies", "fe_setup_fit", "fe_continuum_window")
@@ -169,6 +173,7 @@ rule fe_readings_claims:
     conda:
         CONDA_ENV
     params:
+        claims=[claim for claim in CLAIMS if claim.file == FE_CLAIMS_FILE],  # no job parses the file again
         readings=FE_READINGS,
         scenes=FE_SCENES,
         cross_scene=canonical(FE_EFFECTIVE.cross_scene),

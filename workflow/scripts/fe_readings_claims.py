@@ -6,7 +6,6 @@ from dataclasses import asdict
 from functools import lru_cache
 
 from stickslip.catalogue import fe_scene_entries
-from stickslip.claims.load import load_claims
 from stickslip.claims.models import annotate, read_comparison
 from stickslip.claims.per_reading import claims_per_reading
 from stickslip.io.netcdf import read_dataset
@@ -15,7 +14,7 @@ from stickslip.io.progress import log_to_file
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 # the model comparison (default reading) decides which model may decide a row, in every reading alike
 comparison = read_comparison(snakemake.input.comparison)  # noqa: F821
-claims = annotate(load_claims([snakemake.input.claims]), comparison, snakemake.params.cross_scene)  # noqa: F821
+claims = annotate(snakemake.params.claims, comparison, snakemake.params.cross_scene)  # noqa: F821
 # every FE scene under every reading: where a row's run is found again in another reading
 entries = {e.path: e for e in fe_scene_entries(snakemake.params.scenes, snakemake.params.readings)}  # noqa: F821
 results = claims_per_reading(
