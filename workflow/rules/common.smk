@@ -216,13 +216,14 @@ def notebook_params(name):
     claims readings and the critical-speed readings, so it draws exactly what the DAG built for it, and the
     notes of the claims it reads."""
     spec, onedof = CFG.notebooks[name], CFG.onedof
+    inputs = set(notebook_inputs(name))
     return {
         "figures": {fig: as_params(onedof.figures[fig]) for fig in spec.figures or []},
         "sweep_figures": {fig: as_params(onedof.sweep_figures[fig]) for fig in spec.sweep_figures or []},
         "claims_readings": CFG.claims.readings,
         "critical_speed_readings": critical_speed_readings(),
         # each note of the claims files it reads, from the rows the parse checked (no job parses them again)
-        "claim_notes": {c.id: c.note for c in CLAIMS if c.file in notebook_inputs(name)},
+        "claim_notes": {c.id: c.note for c in CLAIMS if c.file in inputs},
     }
 
 
