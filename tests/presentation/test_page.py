@@ -494,7 +494,7 @@ def test_an_unidentified_inverse_quantity_is_shown_as_a_range_never_a_point():
      (4, 5, "mostly reproduced"), (5, 5, "reproduced")],
 )  # fmt: skip
 def test_the_outcome_line_states_each_halfs_share_of_decided_checks(k, n, words):
-    halves = [{"title": "1-DOF mass on a moving belt (Sections 3-7)", "k": k, "n": n}]
+    halves = [{"title": "1-DOF mass on a moving belt (Sections 3-7)", "primary": {"k": k, "n": n}}]
     assert outcome_line(halves) == (
         f"Under the primary reading: 1-DOF mass on a moving belt: {words} "
         f"({k} of {n} decided claim checks reproduced)."

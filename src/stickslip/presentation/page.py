@@ -43,7 +43,9 @@ from ..claims.verdicts import (
     tally,
     verdict_label,
 )
-from .report import paper_figures
+from ..io.text_files import write_text_atomic
+from ..pipeline.code_deps import module_file
+from .report import as_number, paper_figures
 from .show import show_text
 from .sources import definition_lines, imported_names, rule_line
 
@@ -111,20 +113,6 @@ def read_csv(path) -> list[dict]:
         return list(csv.DictReader(fh))
 
 
-def claim_figures(claims: list[Claim]) -> dict[str, list[int]]:
-    """Claim id -> the paper figures it is about (its ``figures``, which every row declares)."""
-    return {c.id: sorted(c.figures) for c in claims}
-
-
-def module_file(module: str, src: Path) -> Path | None:
-    """The file under ``src`` of a dotted module name (a module or a package's ``__init__``)."""
-    parts = module.split(".")
-    for candidate in (src.joinpath(*parts).with_suffix(".py"), src.joinpath(*parts, "__init__.py")):
-        if candidate.is_file():
-            return candidate
-    return None
-
-
 def source_modules(script: Path, src: Path) -> list[tuple[Path, list[tuple[str, int]]]]:
     """The project modules a script imports from (``from stickslip.x import a``), as files under ``src``, each
     with the (name, line of its ``def``/``class``) of the functions and classes it takes from them (a
@@ -133,11 +121,11 @@ def source_modules(script: Path, src: Path) -> list[tuple[Path, list[tuple[str, 
         return []
     found = []
     for module, names in imported_names(script.read_text()).items():
-        path = module_file(module, src)
+        path = module_file(src.resolve(), module)
         if path is None:
             continue
         lines = definition_lines(path.read_text())
-        found.append((path, [(n, lines[n]) for n in names if n in lines]))
+        found.append((src / path.relative_to(src.resolve()), [(n, lines[n]) for n in names if n in lines]))
     return found
 
 
@@ -168,16 +156,9 @@ def notebook_link(number: int, notebooks: dict[str, list]) -> tuple[str, str] | 
     return (best[1], best[2]) if best else None
 
 
-def _number(value) -> float:
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        return float("nan")
-
-
 def fmt(value) -> str:
     """A table number for display: 4 significant digits, blank for NaN."""
-    x = _number(value)
+    x = as_number(value)
     if x != x:
         return "" if value in ("", None, "nan", "NaN") else str(value)
     return f"{x:.4g}"
@@ -313,7 +294,7 @@ def inverse_sentence(row: dict, conflicts: list[dict] = ()) -> str:
     fixed = [range_text(row, q) for q in identified]
     if verdict == "consistent":
         head = f"{family} family: one parameter set gives all {n} of the figure's numbers within tolerance"
-    elif verdict == "inconsistent" and _number(row.get("worst_residual")) == math.inf:
+    elif verdict == "inconsistent" and as_number(row.get("worst_residual")) == math.inf:
         return (
             f"{family} family: no parameter set the fit tried measures all {n} of the figure's numbers "
             f"({row.get('worst_claim', '')} stays unmeasured: the model rests, diverges or never sticks)"
@@ -361,7 +342,8 @@ class PageBuilder:
         self.paper = paper_spec()
         #: the claim rows (the pipeline passes those its parse read; otherwise read from ``claims_glob``)
         self.claims = load_claims(sorted(self.workdir.glob(claims_glob))) if claims is None else claims
-        self.figures_of = claim_figures(self.claims)
+        #: claim id -> the paper figures it is about (its ``figures``, which every row declares)
+        self.figures_of = {c.id: sorted(c.figures) for c in self.claims}
         self.claim = {c.id: c for c in self.claims}
         self.rows = read_table(self.workdir / paths.claims_table())
         #: every figure's verdicts, the table the notebooks read too (stickslip.claims.verdicts)
@@ -540,33 +522,22 @@ class PageBuilder:
         return rule_line(path.read_text(), source.rule) if path.is_file() else None
 
     def verdict_cells(self, key: str) -> dict:
-        """The figure's verdicts (figure_verdicts.csv): primary, as printed, the search; each with k of n."""
+        """The figure's row of figure_verdicts.csv, each verdict (primary, as printed, the other defensible
+        application, the search) as its columns without their prefix (``verdict``, ``reading``,
+        ``reproduced`` of ``decided``, ...); None for a verdict the row leaves blank."""
         row = self.verdicts.get(key, {})
 
         def cell(prefix):
-            label = row.get(f"{prefix}_verdict") or ""
-            if not label:
-                return None
-            return {
-                "label": label,
-                "css": label.replace(" ", "-"),
-                "reading": row.get(f"{prefix}_reading", ""),
-                "k": row.get(f"{prefix}_reproduced", ""),
-                "n": row.get(f"{prefix}_decided", ""),
-                "undecided": row.get(f"{prefix}_undecided", ""),
-                "not_comparable": row.get(f"{prefix}_not_comparable", ""),
-            }
+            cell = {k.removeprefix(f"{prefix}_"): v for k, v in row.items() if k.startswith(f"{prefix}_")}
+            return cell if cell.get("verdict") else None
 
+        unjudged = {"verdict": "not comparable", "reading": "", "reproduced": 0, "decided": 0}
         return {
-            "primary": cell("primary") or {"label": "not comparable", "css": "not-comparable", "reading": "",
-                                           "k": 0, "n": 0, "undecided": 0, "not_comparable": 0},
-            "printed": cell("printed"),
-            "alternative": cell("alternative"),
-            "best": cell("best"),
-            "searched": row.get("readings_searched", ""),
+            "primary": cell("primary") or {**unjudged, "undecided": 0, "not_comparable": 0},
+            **{prefix: cell(prefix) for prefix in ("printed", "alternative", "best")},
+            **{column: row.get(column, "") for column in ("readings_searched", "not_evidence")},
             **{column: row.get(column, "") for column in SPEED_COLUMNS.values()},
-            "not_evidence": row.get("not_evidence", ""),
-        }  # fmt: skip
+        }
 
     def headline(self, rows: list[dict], fe: bool) -> list[dict]:
         """The paper's numbers for the figure beside this run's (primary reading), amplitude, frequency and
@@ -581,7 +552,7 @@ class PageBuilder:
 
         out = []
         for r in sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank):
-            dev = _number(r["deviation"])
+            dev = as_number(r["deviation"])
             claim = self.claim.get(r["claim"])
             out.append(
                 {
@@ -632,7 +603,9 @@ class PageBuilder:
                 x, y = list(rows_[0])[:2]
                 out = self.thumbs / f"fig{number:02d}.svg"
                 out.parent.mkdir(parents=True, exist_ok=True)
-                out.write_text(svg_plot([_number(r[x]) for r in rows_], [_number(r[y]) for r in rows_], x, y))
+                out.write_text(
+                    svg_plot([as_number(r[x]) for r in rows_], [as_number(r[y]) for r in rows_], x, y)
+                )
                 thumb = self.page_path(out)
                 images = [{"label": "drawn by this page from the friction table", "full": thumb, "path": ""}]
         data = [self.friction_table] if from_table else []
@@ -652,7 +625,7 @@ class PageBuilder:
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
         speeds = [{"label": SPEEDS[s], "text": v[col]} for s, col in SPEED_COLUMNS.items()] if fe else []
-        verdict = v["primary"]["label"]
+        verdict = v["primary"]["verdict"]
         return {
             "key": key,
             "number": number,
@@ -708,40 +681,27 @@ class PageBuilder:
     # -- summary --------------------------------------------------------------------------------------
 
     def half_summary(self, half: str, cards: list[dict]) -> dict:
-        """Per half: how many figures carry each verdict under the primary reading and as printed, and the
-        claim checks behind them (evidence only)."""
+        """Per half and per verdict of figure_verdicts.csv (primary, as printed, the other defensible
+        application, the search): how many figures carry each label, the readings, and the claim checks
+        behind them (``k`` reproduced of ``n`` decided, evidence only)."""
         mine = [c for c in cards if c["half"] == half]
-        primary = Counter(c["v"]["primary"]["label"] for c in mine)
-        printed = Counter(c["v"]["printed"]["label"] for c in mine if c["v"]["printed"])
-        best = Counter(c["v"]["best"]["label"] for c in mine if c["v"]["best"])
-        k = sum(int(c["v"]["primary"]["k"] or 0) for c in mine)
-        n = sum(int(c["v"]["primary"]["n"] or 0) for c in mine)
-        kp = sum(int(c["v"]["printed"]["k"] or 0) for c in mine if c["v"]["printed"])
-        np_ = sum(int(c["v"]["printed"]["n"] or 0) for c in mine if c["v"]["printed"])
-        readings = {c["v"]["primary"]["reading"] for c in mine} - {""}
-        printed_readings = {c["v"]["printed"]["reading"] for c in mine if c["v"]["printed"]} - {""}
-        alt = [c["v"]["alternative"] for c in mine if c["v"].get("alternative")]
-        alt_readings = {a["reading"] for a in alt} - {""}
-        searched = max((int(c["v"]["searched"] or 0) for c in mine), default=0)
+
+        def under(prefix: str) -> dict:
+            cells = [c["v"][prefix] for c in mine if c["v"][prefix]]
+            labels = Counter(cell["verdict"] for cell in cells)
+            return {
+                "reading": ", ".join(sorted({cell["reading"] for cell in cells} - {""})),
+                "k": sum(int(cell["reproduced"] or 0) for cell in cells),
+                "n": sum(int(cell["decided"] or 0) for cell in cells),
+                "counts": {v: labels[v] for v in VERDICTS},
+            }
+
         return {
-            "half": half,
             "title": self.paper["halves"][half],
             "figures": len(mine),
-            "counts": {v: primary[v] for v in VERDICTS},
-            "printed_counts": {v: printed[v] for v in VERDICTS},
-            "best_counts": {v: best[v] for v in VERDICTS},
-            "primary_reading": ", ".join(sorted(readings)),
-            "printed_reading": ", ".join(sorted(printed_readings)),
-            "k": k,
-            "n": n,
-            "printed_k": kp,
-            "printed_n": np_,
-            "alternative_reading": ", ".join(sorted(alt_readings)),
-            "alternative_k": sum(int(a["k"] or 0) for a in alt),
-            "alternative_n": sum(int(a["n"] or 0) for a in alt),
-            "alternative_counts": dict(Counter(a["label"] for a in alt)),
-            "searched": searched,
+            "searched": max((int(c["v"]["readings_searched"] or 0) for c in mine), default=0),
             "cards": mine,
+            **{prefix: under(prefix) for prefix in ("primary", "printed", "alternative", "best")},
         }
 
     def provenance(self) -> dict:
@@ -807,7 +767,6 @@ class PageBuilder:
         index = self.workdir / paths.page()
         self.previews.mkdir(parents=True, exist_ok=True)
         for path, out in self.text_jobs.items():
-            out.parent.mkdir(parents=True, exist_ok=True)
             text = render_text_page(
                 title=os.path.relpath(path, self.workdir),
                 index_href=relative_href(index, out),
@@ -815,15 +774,15 @@ class PageBuilder:
                 file_label=f"download {path.name}",
                 text=show_text(path),
             )
-            write_atomically(out, text)
+            write_text_atomic(out, text)
 
 
 def outcome_line(halves: list[dict]) -> str:
     """One line under the primary reading: per half of the paper, the label the figures' verdicts use
     (:func:`verdict_label`, the glossary's rule) for the checks reproduced of those decided."""
     parts = [
-        f"{h['title'].split(' (')[0]}: {verdict_label(h['k'], h['n'])} "
-        f"({h['k']} of {h['n']} decided claim checks reproduced)"
+        f"{h['title'].split(' (')[0]}: {verdict_label(h['primary']['k'], h['primary']['n'])} "
+        f"({h['primary']['k']} of {h['primary']['n']} decided claim checks reproduced)"
         for h in halves
     ]
     return "Under the primary reading: " + "; ".join(parts) + "."
@@ -832,12 +791,6 @@ def outcome_line(halves: list[dict]) -> str:
 def relative_href(target: Path, page: Path) -> str:
     """The link from the HTML file ``page`` to ``target``."""
     return Path(os.path.relpath(target, page.parent)).as_posix()
-
-
-def write_atomically(out: Path, text: str) -> None:
-    tmp = out.with_name(out.name + ".tmp")
-    tmp.write_text(text)
-    tmp.replace(out)
 
 
 @functools.cache
@@ -870,5 +823,5 @@ def render_text_page(title: str, index_href: str, file_href: str, file_label: st
 def build_page(out: Path, builder: PageBuilder) -> Path:
     """Write the page to ``out`` (atomically) and return its path."""
     out = Path(out)
-    write_atomically(out, render(builder.context()))
+    write_text_atomic(out, render(builder.context()))
     return out

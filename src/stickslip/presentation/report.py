@@ -14,6 +14,7 @@ from collections import Counter
 from pathlib import Path
 
 from ..claims.rows import STATUSES
+from ..io.text_files import write_text_atomic
 
 _FIG = re.compile(r"Fig(?:ure)?s?\.?\s*((?:\d+\s*(?:[-/,]|and|vs\.?|–)?\s*(?:Fig\.?\s*)?)+)", re.IGNORECASE)
 
@@ -51,7 +52,8 @@ INDISTINGUISHABLE_NOTE = (
 )
 
 
-def _number(value) -> float:
+def as_number(value) -> float:
+    """A table cell as a float, NaN for a blank or a word."""
     try:
         return float(value)
     except (TypeError, ValueError):
@@ -61,7 +63,7 @@ def _number(value) -> float:
 def _margin(row: dict) -> str:
     """`` (margin M, spread S)`` of a row that has them (the deviations table's columns), else ``""`` (also
     when the row's reason already states them)."""
-    margin, spread = _number(row.get("margin")), _number(row.get("spread"))
+    margin, spread = as_number(row.get("margin")), as_number(row.get("spread"))
     if margin != margin or "margin" in str(row.get("reason", "")):  # NaN/missing: no threshold decided it
         return ""
     return f" (margin {margin:.3g}" + (f", spread {spread:.3g})" if spread == spread else ", no ensemble)")
@@ -109,9 +111,4 @@ def caption_template(captions: dict[str, str]) -> str:
 
 
 def write_captions(captions: dict[str, str], path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(path.suffix + ".tmp")
-    tmp.write_text(caption_template(captions))
-    tmp.replace(path)
-    return path
+    return write_text_atomic(path, caption_template(captions))
