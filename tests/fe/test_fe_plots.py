@@ -73,7 +73,6 @@ from stickslip.presentation.fe_paper_figures import (  # noqa: E402
     paper_deflection_figure,
     paper_figure,
     paper_time_series_figure,
-    scenes_for,
 )
 
 PAPER_21 = [
@@ -150,7 +149,7 @@ def test_paper_velocity_figure_is_in_mm_per_s_with_the_running_envelope(ds):
 def test_every_paper_figure_21_to_36_draws_the_scenes_the_config_names(ds, repo_root):
     figures = yaml.safe_load((repo_root / "config" / "fe.yaml").read_text())["fe"]["paper_figures"]
     stated_first = ["section9_kinematic_15p2rpm", "section9_kinematic_0p5mm_s"]
-    assert scenes_for(21, figures) == stated_first  # 15.2 rpm first
+    assert figures[21] == stated_first  # 15.2 rpm first
     names = sorted({s for scenes in figures.values() for s in scenes})
     dss = {
         n: _with(ds, contact__method="fixed_normal") if n.startswith("section10") else
@@ -158,7 +157,7 @@ def test_every_paper_figure_21_to_36_draws_the_scenes_the_config_names(ds, repo_
         for n in names
     }  # fmt: skip
     for number in PAPER_FIGURE_NUMBERS:
-        fig = paper_figure(number, {s: dss[s] for s in scenes_for(number, figures)}, several_times=3.0)
+        fig = paper_figure(number, {s: dss[s] for s in figures[number]}, several_times=3.0)
         assert fig._suptitle.get_text().startswith(f"Fig. {number}:")
         plt.close(fig)
 

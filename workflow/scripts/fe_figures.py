@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset  # noqa: E402
 from stickslip.io.progress import log_to_file  # noqa: E402
-from stickslip.presentation.fe_paper_figures import paper_figure, scenes_for  # noqa: E402
+from stickslip.presentation.fe_paper_figures import paper_figure  # noqa: E402
 from stickslip.presentation.fe_plots import (  # noqa: E402
     fe_convergence_figure,
     fe_readings_figure,
@@ -34,7 +34,9 @@ for (scene, beam), cont_path, png in zip(beams.items(), inp.continuum, out.scene
 for number, png in zip(par.paper_figure_numbers, out.paper, strict=True):
     fig = paper_figure(
         number,
-        {s: beams[s] for s in scenes_for(number, par.paper_figures)},
+        {
+            s: beams[s] for s in par.paper_figures[number]
+        },  # the figure's scenes, as config fe.paper_figures lists them
         par.paper_reported.get(number, []),
         reading=par.default_reading,
         several_times=par.paper_normal_force_ratio,

@@ -19,11 +19,21 @@ from matplotlib.patches import Arc, Circle, FancyArrowPatch, Rectangle
 
 from .. import catalogue as paths
 from ..fe.params import initial_state_of
-from .fe_plots import band_columns, grouped, power_of_ten, scaled_ylabel, shade_states, state_legend_handles
+from .fe_plots import (
+    NOTE_BOX,
+    PAPER_COLOUR,
+    band_columns,
+    grouped,
+    paper_line,
+    power_of_ten,
+    scaled_ylabel,
+    sci_ticks,
+    shade_states,
+    state_legend_handles,
+)
 
 #: the running mean drawn over the band averages this many seconds (several periods of the 366 Hz mode)
 MEAN_SPAN = 0.01
-PAPER_COLOUR = "C3"
 UNIT_LABEL = {"mm": "mm", "mm s-1": "mm/s"}
 QUANTITY = {
     "horizontal_displacement": ("horizontal displacement u", "mm"),
@@ -120,12 +130,6 @@ METHOD_NOTE = {
 }
 
 
-def scenes_for(number: int, paper_figures) -> list[str]:
-    """The scenes a paper figure draws, as the config's ``fe.paper_figures`` lists them (its section's, the
-    paper's stated 15.2 rev/min first): a name prefix says nothing about which figure a scene belongs to."""
-    return list(paper_figures[number])
-
-
 def distinct_values(rows) -> list[dict]:
     """The paper's numbers for one figure (``{label, value, unit}`` rows from its claims), once per value and
     unit, labelled by the first row: the fitted-setup rows and the second disc speed repeat the forward rows'
@@ -157,10 +161,6 @@ def _running_mean(ds, var, span=MEAN_SPAN):
     if k == 1 or m == 0:
         return t, ds[f"{var}_mean"].values
     return grouped(t[:m], k, np.nanmean), grouped(ds[f"{var}_mean"].values[:m], k, np.nanmean)
-
-
-def _sci(ax):
-    ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3), useMathText=True)
 
 
 def _band(ax, ds, var, colour, label, mean=True):
@@ -204,7 +204,7 @@ def _envelope(ax, ds, var, colour):
             fontsize=8,
             va="top",
             color=colour,
-            bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
+            bbox=NOTE_BOX,
         )
         return
     w = float(np.median(np.diff(tw))) if tw.size > 1 else 2 * float(tw[0])
@@ -213,23 +213,6 @@ def _envelope(ax, ds, var, colour):
     edges = np.concatenate([tw - w / 2, [tw[-1] + w / 2]])
     for sgn, label in ((1, f"running envelope: ± half peak-to-peak per {w:.2g} s"), (-1, None)):
         ax.stairs(centre + sgn * env, edges, baseline=None, color=colour, lw=1.6, ls="--", label=label)
-
-
-def _paper_lines(ax, rows, unit):
-    for r in rows:
-        if r["unit"] != unit:
-            continue
-        ax.axhline(r["value"], color=PAPER_COLOUR, ls="--", lw=1.2)
-        ax.annotate(
-            f"paper: {r['label']} {r['value']:g} {UNIT_LABEL[unit]}",
-            (0.99, r["value"]),
-            xycoords=("axes fraction", "data"),
-            ha="right",
-            va="bottom",
-            fontsize=8,
-            color=PAPER_COLOUR,
-            bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
-        )
 
 
 def _speed_label(ds) -> str:
@@ -299,9 +282,11 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         _band(ax, ds, spec.variable, "C0", "node 1 (contact)")
         if spec.envelope:
             _envelope(ax, ds, spec.variable, "C1")
-        _paper_lines(ax, reported, unit)
+        for r in reported:
+            if r["unit"] == unit:
+                paper_line(ax, r["value"], f"paper: {r['label']} {r['value']:g} {UNIT_LABEL[unit]}")
         if spec.zero_line:
-            _zero_line(ax, spec.zero_line)
+            paper_line(ax, 0.0, spec.zero_line, ls="-.", lw=1.1, x=0.01)
         if spec.statement:
             _statement(ax, ds, *spec.statement)
         ax.set_title(f"{scene}: {_speed_label(ds)}", fontsize=9, pad=30 if spec.envelope else 19)
@@ -356,7 +341,7 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
                 ha="center",
                 fontsize=8,
                 color="0.2",
-                bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
+                bbox=NOTE_BOX,
             )
         ax.set_xlim(t0, t1)
         shade_states(ax, t, ds.contact_state.values[m], alpha=0.2)
@@ -429,20 +414,6 @@ def _time_lines(axes, times, t_end) -> set:
                     bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.2),
                 )
     return beyond
-
-
-def _zero_line(ax, text):
-    ax.axhline(0.0, color=PAPER_COLOUR, ls="-.", lw=1.1)
-    ax.annotate(
-        text,
-        (0.01, 0.0),
-        xycoords=("axes fraction", "data"),
-        ha="left",
-        va="bottom",
-        fontsize=8,
-        color=PAPER_COLOUR,
-        bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
-    )
 
 
 def _statement(ax, ds, text, lhs, rhs):
@@ -518,7 +489,7 @@ def _first_mode_growth(ax, ds, legend: bool):
             transform=ax.transAxes,
             ha="right",
             fontsize=7.5,
-            bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.3),
+            bbox=NOTE_BOX,
         )
     ax.set_ylabel("first-mode\namplitude / first", fontsize=8)
     ax.grid(alpha=0.25, which="both")
@@ -545,7 +516,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
     )
     a0.axhline(0, color="0.6", lw=0.6)
     a0.set_ylabel("vertical deflection [mm]")
-    _sci(a0)
+    sci_ticks(a0)
     a0.legend(fontsize=8, loc="lower left")
     a0.grid(alpha=0.25)
     bending = [k for k in range(f.size) if np.abs(v[k]).max() >= np.abs(h[k]).max()][:n_modes]
@@ -580,7 +551,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
 def _absolute(ds, node_value_min, node_value_max, static_at_node):
     """Range of a binned displacement series as an absolute deflection: a drop start is undeformed, so the
     series already is the deflection; a static start measures from the static shape, which is added."""
-    start = initial_state_of(json.loads(ds.attrs["parameters"])["solver"].get("initial_state"))
+    start = initial_state_of(_params(ds)["solver"].get("initial_state"))
     offset = 0.0 if start == "drop" else static_at_node
     return node_value_min + offset, node_value_max + offset, start
 
@@ -631,22 +602,14 @@ def paper_deflection_figure(
     )
     a0.set_xlabel("position along the beam x [mm] (clamp at 0)")
     a0.set_ylabel("vertical deflection [mm]")
-    _sci(a0)
+    sci_ticks(a0)
     a0.grid(alpha=0.25)
     a0.legend(fontsize=8, loc="lower left")
     a1.axhline(0, color=PAPER_COLOUR, lw=1.0, label="zero: separation below")
     a1.axhline(1, color="0.3", ls=":", lw=1, label="static N")
     if several_times:
-        a1.axhline(several_times, color=PAPER_COLOUR, ls="--", lw=1.2)
-        a1.annotate(
-            f"paper: 'several times' the initial N (read as {several_times:g} N0)",
-            (0.99, several_times),
-            xycoords=("axes fraction", "data"),
-            ha="right",
-            va="bottom",
-            fontsize=8,
-            color=PAPER_COLOUR,
-        )
+        text = f"paper: 'several times' the initial N (read as {several_times:g} N0)"
+        paper_line(a1, several_times, text, bbox=None)
     a1.set_xlabel("time [s] (whole run)")
     a1.set_ylabel("normal force / static N")
     a1.grid(alpha=0.25)

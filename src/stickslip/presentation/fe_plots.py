@@ -18,9 +18,12 @@ from matplotlib.ticker import FuncFormatter
 STATE_COLOURS = {0: ("separated", "#d62728"), 1: ("stick", "#2ca02c"), 2: ("slip", "#ffbf00")}
 MODEL_STYLE = {"beam": dict(color="C0"), "continuum": dict(color="k")}
 UM = 1e3  # mm -> micrometre (overview figures); the scene figures use the paper's mm and mm/s
+#: the white box behind a note on the data (a paper's number, a withheld value)
+NOTE_BOX = dict(fc="white", ec="none", alpha=0.8, pad=0.3)
+PAPER_COLOUR = "C3"  #: what the paper reports
 
 
-def _sci(ax):
+def sci_ticks(ax):
     """Scientific tick labels (the paper's displacements are 1e-4 mm)."""
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3), useMathText=True)
 
@@ -72,6 +75,14 @@ def scaled_ylabel(ax, text: str, unit: str, fontsize=8, exponent: int | None = N
     e = power_of_ten([ax]) if exponent is None else int(exponent)
     ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v / 10.0**e:g}"))
     ax.set_ylabel(f"{text} [{unit}]" if e == 0 else f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
+
+
+def paper_line(ax, y, text, ls="--", lw=1.2, x=0.99, bbox=NOTE_BOX):
+    """What the paper states about a level: a horizontal line in the paper's colour, labelled above it at
+    the right edge (``x`` 0.99) or the left one."""
+    ax.axhline(y, color=PAPER_COLOUR, ls=ls, lw=lw)
+    where = dict(xycoords=("axes fraction", "data"), ha="right" if x > 0.5 else "left", va="bottom")
+    ax.annotate(text, (x, y), **where, fontsize=8, color=PAPER_COLOUR, bbox=bbox)
 
 
 def _band(ax, ds, var, label, style, t_max=None):
@@ -203,15 +214,11 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
             _band(ax, ds, var, name, MODEL_STYLE[name], t_max)
         _running_envelope(ax, beam, var, MODEL_STYLE["beam"], t_max)
         ax.set_ylabel(ylabel)
-        _sci(ax)
+        sci_ticks(ax)
         ax.grid(alpha=0.25)
     ax_x.set_xlim(0.0, t_max)
     for key, val in (reported or {}).items():
-        ax_x.axhline(val, color="C3", ls="--", lw=1)
-        box = dict(fc="white", ec="none", alpha=0.8, pad=0.5)
-        where = ("axes fraction", "data")
-        ax_x.annotate(f"paper: {key} {val:g} mm", (0.995, val), xycoords=where, ha="right", va="bottom",
-                      color="C3", fontsize=8, bbox=box)  # fmt: skip
+        paper_line(ax_x, val, f"paper: {key} {val:g} mm", lw=1, x=0.995, bbox={**NOTE_BOX, "pad": 0.5})
     # one legend for the four whole-run panels, above them (a legend inside would cover a band)
     handles = {}
     for ax in (ax_x, ax_y):

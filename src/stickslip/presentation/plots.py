@@ -1,7 +1,6 @@
 """Figures of the reproduced results (presentation only: reads datasets, draws).
 
-The claims-table helpers the notebooks use (``claims_frame``, ``styled_claims``, ``status_counts``,
-``reported_value``, ``claims_readings``) live in ``stickslip.presentation.notebook``.
+The claims-table helpers the notebooks use live in ``stickslip.presentation.notebook``.
 """
 
 from __future__ import annotations
@@ -19,8 +18,25 @@ def _style(method):
     return METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
 
 
-def _label(ds, method):
-    return method
+def _draw_run(ax_x, ax_v, ds, method, kind):
+    """One method's run: x and v over time (``timeseries``), v over time (``velocity``) or v over x
+    (``phase``)."""
+    style = _style(method)
+    if kind == "timeseries":
+        ax_x.plot(ds.time, ds.displacement, label=method, **style)
+    if kind in ("timeseries", "velocity"):
+        ax_v.plot(ds.time, ds.velocity, label=method, **style)
+    else:
+        ax_x.plot(ds.displacement, ds.velocity, label=method, **style)
+
+
+def _belt_velocity(ax, ds):
+    ax.plot(ds.time, ds.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
+
+
+def _failed_ticks(ax, x):
+    """Failed runs as red ticks on the bottom edge (never drawn as values)."""
+    ax.plot(x, np.zeros(len(x)), "|", color="red", ms=12, mew=2, transform=ax.get_xaxis_transform())
 
 
 def _failed_note(ax, ds, method, row):
@@ -55,15 +71,9 @@ def onedof_figure(datasets: dict, figure, reading: str):
         if int(ds["solver_status"]) != 0:
             _failed_note(ax_x, ds, method, row)
             continue
-        if kind == "timeseries":
-            ax_x.plot(ds.time, ds.displacement, label=_label(ds, method), **_style(method))
-        if kind in ("timeseries", "velocity"):
-            ax_v.plot(ds.time, ds.velocity, label=_label(ds, method), **_style(method))
-        else:
-            ax_x.plot(ds.displacement, ds.velocity, label=_label(ds, method), **_style(method))
+        _draw_run(ax_x, ax_v, ds, method, kind)
     if ax_v is not None:
-        ds0 = next(iter(datasets.values()))
-        ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
+        _belt_velocity(ax_v, next(iter(datasets.values())))
         ax_v.set_ylabel("velocity dx/dt [mm/s]")
         ax_v.set_xlabel("time [s]")
         ax_v.legend(loc="lower right", fontsize=8)
@@ -208,15 +218,7 @@ def critical_speed_figure(datasets: dict):
         if (~ok).any():
             line.set_label(f"{reading} ({int((~ok).sum())} runs failed – not results)")
             for ax in (ax_s, ax_a):
-                ax.plot(
-                    vb[~ok],
-                    np.zeros((~ok).sum()),
-                    "|",
-                    color="red",
-                    ms=12,
-                    mew=2,
-                    transform=ax.get_xaxis_transform(),
-                )
+                _failed_ticks(ax, vb[~ok])
         vc = float(ds.critical_belt_speed)
         if np.isfinite(vc) and vc > 0:
             ax_s.axvline(vc, color=line.get_color(), ls=":", lw=1)
@@ -337,29 +339,15 @@ def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
     for ax, q in zip(axes.flat, quantities):
         ypos = np.arange(len(readings))
         for i, r in enumerate(readings):
-            ds = datasets[r]
-            if run_failed(ds):
-                ax.annotate(
-                    FAILED_TEXT,
-                    (0.02, i),
-                    xycoords=("axes fraction", "data"),
-                    color="red",
-                    fontsize=7,
-                    va="center",
-                )
-                continue
-            value = float(ds[q["var"]])
+            failed = run_failed(datasets[r])
+            value = float("nan") if failed else float(datasets[r][q["var"]])
             if np.isfinite(value):
                 ax.plot(value, i, "o", color=colours[r])
                 ax.annotate(f"{value:.3g}", (value, i), xytext=(5, 3), textcoords="offset points", fontsize=7)
-            else:
+            else:  # written out at the left edge
+                text, colour = (FAILED_TEXT, "red") if failed else ("n/a (nothing to measure)", "0.4")
                 ax.annotate(
-                    "n/a (nothing to measure)",
-                    (0.02, i),
-                    xycoords=("axes fraction", "data"),
-                    color="0.4",
-                    fontsize=7,
-                    va="center",
+                    text, (0.02, i), xycoords=("axes fraction", "data"), color=colour, fontsize=7, va="center"
                 )
         rep = q.get("reported")
         if rep is not None:
@@ -414,15 +402,7 @@ def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title="")
                 label=r + (f" ({nfail} runs failed – not results)" if nfail else ""),
             )
             if nfail:
-                ax.plot(
-                    x[~ok],
-                    np.zeros(nfail),
-                    "|",
-                    color="red",
-                    ms=12,
-                    mew=2,
-                    transform=ax.get_xaxis_transform(),
-                )
+                _failed_ticks(ax, x[~ok])
         for rvar, rx, ry, rlabel in reported:
             if rvar == var:
                 mark_reported_point(ax, rx, ry)
@@ -472,18 +452,10 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
                     va="top",
                 )
                 continue
-            style = _style(method)
-            if kind == "timeseries":
-                ax_a.plot(ds.time, ds.displacement, label=method, **style)
-                ax_b.plot(ds.time, ds.velocity, label=method, **style)
-            elif kind == "velocity":
-                ax_a.plot(ds.time, ds.velocity, label=method, **style)
-            else:
-                ax_a.plot(ds.displacement, ds.velocity, label=method, **style)
-        ds0 = next(iter(datasets[reading].values()))
+            _draw_run(ax_a, ax_a if ax_b is None else ax_b, ds, method, kind)
         if kind in ("timeseries", "velocity"):
-            ax_v = ax_b if kind == "timeseries" else ax_a
-            ax_v.plot(ds0.time, ds0.belt_velocity, color="0.5", lw=0.8, label="belt velocity")
+            ax_v = ax_a if ax_b is None else ax_b
+            _belt_velocity(ax_v, next(iter(datasets[reading].values())))
             ax_v.set_ylabel("dx/dt [mm/s]", fontsize=8)
             if kind == "timeseries":
                 ax_a.set_ylabel(f"{reading}\nx [mm]", fontsize=8)
