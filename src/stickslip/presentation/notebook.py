@@ -390,13 +390,11 @@ def render(
 
     ``params`` are set as ``PARAMS`` in a tagged cell before the first code cell (papermill-style); the
     HTML never shows that cell. Raises ``nbclient.exceptions.CellExecutionError`` if a cell fails."""
-    import tempfile
-
     import jupytext
     import nbformat
     from nbclient import NotebookClient
 
-    from stickslip.io.netcdf import publish
+    from stickslip.io.text_files import write_text_atomic
 
     source, target = Path(source), Path(target)
     nb = jupytext.read(source)
@@ -412,12 +410,7 @@ def render(
         shutdown_kernel="immediate",  # the executed notebook is complete; a graceful stop waits ~1 s
     ).execute()
     link = os.path.relpath(source.resolve(), target.resolve().parent)
-    body = to_html(nb, code, link, title=notebook_title(nb) or source.stem)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
-    with os.fdopen(fd, "w") as fh:
-        fh.write(body)
-    publish(tmp, target)
+    write_text_atomic(target, to_html(nb, code, link, title=notebook_title(nb) or source.stem))
     nbformat.write(nb, target.with_suffix(".ipynb"))
 
 

@@ -444,9 +444,6 @@ class PageBuilder:
                     "href": self.href(self.inverse_paths[table]),
                     "columns": columns,
                     "rows": rows,
-                    "verdicts": sorted(
-                        {(r.get("family", ""), r.get("verdict", "")) for r in mine if r.get("verdict")}
-                    ),
                     "sentences": [
                         inverse_sentence(r, [c for c in conflicts if c["family"] == r["family"]])
                         for r in mine
@@ -666,7 +663,6 @@ class PageBuilder:
             "margin": fmt(r["margin"]),
             "spread": fmt(r["spread"]),
             "status": r["status"],
-            "status_class": r["status"],
             "evidence": r.get("evidence", "evidence"),
             "conclusion": conclusion,
             "details": rest.replace(" | ", "; "),

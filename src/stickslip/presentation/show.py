@@ -1,6 +1,6 @@
 """The text of ``stickslip show FILE.nc``: one dataset's title, provenance, scalar results with units, array
 sizes and checksum state. The command prints it and the replication page shows it as each dataset's preview
-(``page.write_dataset_previews``), so both always say the same thing."""
+(``PageBuilder.write_text_pages``), so both always say the same thing."""
 
 from __future__ import annotations
 
@@ -14,6 +14,13 @@ def _fmt(value, unit: str = "") -> str:
     return f"{value:.4g}" + (f" {unit}" if unit not in ("", "1") else "")
 
 
+def _outcome(ds) -> str:
+    """The run's outcome in words (its ``outcome`` code named by the flag meanings)."""
+    meanings = str(ds["outcome"].attrs.get("flag_meanings", "")).split()
+    code = int(ds["outcome"].values)
+    return (meanings[code] if 0 <= code < len(meanings) else str(code)).replace("_", " ")
+
+
 def _why_undefined(ds, name: str) -> str:
     """Why a scalar is NaN, in words: withheld by the step-halving check (the values at dt and dt/2 differ),
     or not defined by the run (its outcome: a run that diverges has no steady cycle to measure)."""
@@ -23,10 +30,7 @@ def _why_undefined(ds, name: str) -> str:
     if halving:
         return halving.split(";")[0]
     if "outcome" in ds and "flag_meanings" in ds["outcome"].attrs:
-        meanings = str(ds["outcome"].attrs["flag_meanings"]).split()
-        code = int(ds["outcome"].values)
-        outcome = meanings[code] if 0 <= code < len(meanings) else str(code)
-        return f"not defined by this run, whose outcome is {outcome.replace('_', ' ')}"
+        return f"not defined by this run, whose outcome is {_outcome(ds)}"
     return "not defined by this run"
 
 
@@ -44,10 +48,7 @@ def summary_text(ds, checksum: str = "") -> str:
     if method:
         lines.append("  method: " + ", ".join(f"{k}={v}" for k, v in method.items()))
     if "outcome" in ds and "mechanism" in ds["outcome"].attrs:  # the run's answer, before its numbers
-        meanings = str(ds["outcome"].attrs.get("flag_meanings", "")).split()
-        code = int(ds["outcome"].values)
-        name = meanings[code] if 0 <= code < len(meanings) else str(code)
-        lines.insert(1, f"  outcome: {name.replace('_', ' ')}: {ds['outcome'].attrs['mechanism']}")
+        lines.insert(1, f"  outcome: {_outcome(ds)}: {ds['outcome'].attrs['mechanism']}")
     scalars = [n for n in ds.data_vars if ds[n].ndim == 0 and ds[n].dtype.kind in "fiu"]
     undefined: dict[str, list[str]] = {}
     if scalars:
