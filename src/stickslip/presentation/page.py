@@ -49,21 +49,6 @@ from .report import as_number, paper_figures
 from .show import show_text
 from .sources import definition_lines, imported_names, rule_line
 
-#: What a claim check's status means (the page's glossary).
-STATUS_MEANING = {
-    "reproduced": "the measured number or statement agrees with the paper's within the row's tolerance",
-    "deviates": "it does not, beyond the run's own numerical noise; also where the model diverges, comes to "
-    "rest or never sticks, so the behaviour the claim describes does not exist (the reason gives the "
-    "mechanism)",
-    "indistinguishable": "the margin to the threshold is below three times its spread over a perturbation "
-    "ensemble (inputs x (1 +- 1e-12), a second step size, a later measurement window), or the run's outcome "
-    "moves within that ensemble: the run's own noise could decide it, so it is called neither way "
-    '("undecided")',
-    "not-comparable": "nothing to compare: a numerical failure computed nothing, a value withheld for moving "
-    "under step halving, a sentence the paper contradicts elsewhere, or a model not adequate there; a model "
-    "that answered (diverged, at rest, no stick) is never not comparable",
-}
-
 #: The quantities a card's headline table shows first (the paper's amplitude, frequency, stick and slip).
 HEADLINE_ORDER = ("amplitude", "displacement", "frequency", "stick", "slip", "velocity", "speed")
 
@@ -216,55 +201,6 @@ def make_thumbnails(jobs, workers: int = 2) -> None:
 
 
 #: Per-quantity columns of the inverse study's tables, shown as one range_text cell each.
-#: Every column name of the inverse study's tables shown on a card, and the terms reasons use, in words.
-TERMS = {
-    "family": "The friction law the inverse study fits: `consistent` (mu = mu_s (1 - sigma |v_r|), the "
-    "physically consistent sign) or `plateau` (the same law levelling off at plateau_speed).",
-    "figure": "The paper figure whose numbers are fitted together (`joint`: every figure's at once).",
-    "numbers": "How many of the paper's numbers the fit uses.",
-    "identifiable_dimensions": "How many parameter combinations the numbers pin down: the structural count, "
-    "capped by the number of numbers.",
-    "structural_dimensions": "How many parameter combinations the equation of motion lets any data fix "
-    "(exact rank, derived from the equations, not from an optimiser).",
-    "phases_visited": "The phases of motion the fitted runs pass through (stick, slip, plateau).",
-    "dimensions_note": "Why the identifiable count differs from the structural one, where it does.",
-    "profiles_bounded": "k of n: of the n combinations profiled, how many the numbers bound on both sides.",
-    "free_parameters": "How many parameters the fit may move.",
-    "values (a point) or ranges (not identifiable)": "q = best [lo, hi] for a combination the numbers fix; "
-    "q: range lo-hi for one they do not (never a point). `open below`/`open above`/`open both`: the range "
-    "reaches the search bound on that side, so the numbers put no limit there.",
-    "worst_residual": "The largest |measured - reported| / reading precision at the best fit (1 = at the "
-    "edge of the precision; inf = a number the run leaves unmeasured).",
-    "worst_claim": "The claim with the worst residual.",
-    "chi_square": "Sum of the squared residuals at the best fit.",
-    "verdict": "consistent: one parameter set gives every number within its reading precision; inconsistent: "
-    "none does.",
-    "residual_noise": "How far the worst residual moves under the solver's own noise (perturbation "
-    "ensemble): a verdict needs the worst residual further than this from 1.",
-    "verdict_above_noise": "1 when the worst residual is further from 1 than its noise (the verdict holds).",
-    "fit_source": "How the best fit was found (least squares; restarted where a profile went deeper).",
-    "minimal_conflicts": "How many smallest sets of numbers cannot hold together.",
-    "max_size_searched": "The largest set size searched for conflicts.",
-    "size": "How many numbers the conflicting set holds.",
-    "claims": "The claims of the conflicting set.",
-    "above_noise": "1 when the conflict's residual exceeds its noise.",
-    "claim": "The claim id (config/claims/*.yaml).",
-    "metric": "The dataset variable that measures the number.",
-    "unit": "Unit of the reported value.",
-    "reported": "The value the paper reports.",
-    "reading_precision": "How precisely the number can be read from the paper (a figure's pixel, the last "
-    "printed digit): the residuals' unit.",
-    "measured_best": "The number measured at the best fit.",
-    "residual": "(measured - reported) / reading precision at the best fit.",
-    "residual_stated": "The same at the paper's stated parameters.",
-    "in_a_conflict": "1 when the number belongs to a minimal conflicting set.",
-    "drop start": "The beam-on-disc initial state: the beam starts undeformed, touching the disc, with its "
-    "load applied at t = 0, so it first drops into contact (config fe.solver.initial_state: drop; `static` "
-    "starts from the loaded equilibrium instead).",
-    "margin": "How far the measured value lies from the tolerance edge that decides the claim.",
-    "spread": "How far the measured value moves across the run's perturbation ensemble and a second step.",
-}
-
 RANGE_PREFIXES = ("best_", "stated_", "lower_", "upper_", "identifiable_", "open_")
 KEPT_COLUMNS = ("identifiable_dimensions",)
 
@@ -714,10 +650,10 @@ class PageBuilder:
     def glossary(self) -> dict:
         return {
             "readings": self.descriptions,
-            "statuses": STATUS_MEANING,
+            "statuses": self.paper["glossary"]["statuses"],
             "verdicts": VERDICT_RULE,
             "evidence": EVIDENCE_CLASSES,
-            "terms": TERMS,
+            "terms": self.paper["glossary"]["terms"],
         }
 
     def context(self) -> dict:
