@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from itertools import product
 
 import matplotlib.colors
 import matplotlib.pyplot as plt
@@ -34,13 +35,7 @@ def work_precision_figure(ds, title: str):
     floor = 1e-16
     colors = {f: plt.cm.tab10(i % 10) for i, f in enumerate(dict.fromkeys(fams))}  # same colour per panel
     for (err, xkey), ax in zip(
-        [
-            ("state", "cpu_time"),
-            ("state", "rhs_evaluations"),
-            ("period_error", "cpu_time"),
-            ("period_error", "rhs_evaluations"),
-        ],
-        axes.flat,
+        product(("state", "period_error"), ("cpu_time", "rhs_evaluations")), axes.flat
     ):
         for fam in dict.fromkeys(fams):
             idx = [i for i, f in enumerate(fams) if f == fam and ok[i]]
@@ -77,17 +72,9 @@ def failure_map_figure(ds):
     ax.set_xticks(range(ds.sizes["parameter"]), [f"{v:g}" for v in ds["parameter"].values])
     ax.set_yticks(range(ds.sizes["run"]), ds["label"].values, fontsize=7)
     ax.set_xlabel(ds.attrs.get("swept_parameter", "parameter"))
-    for i in range(code.shape[0]):
-        for j in range(code.shape[1]):
-            ax.text(
-                i,
-                j,
-                fk[i, j],
-                ha="center",
-                va="center",
-                fontsize=6,
-                color="white" if fk[i, j] in ("diverged", "step_collapse") else "black",
-            )
+    for i, j in np.ndindex(code.shape):
+        colour = "white" if fk[i, j] in ("diverged", "step_collapse") else "black"
+        ax.text(i, j, fk[i, j], ha="center", va="center", fontsize=6, color=colour)
     ax.set_title("Where methods fail (classification against the exact solver)")
     fig.tight_layout()
     return fig

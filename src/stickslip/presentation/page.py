@@ -694,17 +694,21 @@ class PageBuilder:
         }
 
     def write_text_pages(self) -> None:
-        """Every registered dataset's ``stickslip show`` page. The folder exists even when empty (it is an
-        output of the page rule)."""
+        """Every registered dataset's ``stickslip show`` text as a page of its own (escaped), linking back to
+        the page and to the file. The folder exists even when empty (it is an output of the page rule)."""
         index = self.workdir / paths.page()
         self.previews.mkdir(parents=True, exist_ok=True)
         for path, out in self.text_jobs.items():
-            text = render_text_page(
-                title=os.path.relpath(path, self.workdir),
-                index_href=relative_href(index, out),
-                file_href=relative_href(path, out),
-                file_label=f"download {path.name}",
-                text=show_text(path),
+            text = (
+                _templates()
+                .get_template("text_page.html.j2")
+                .render(
+                    title=os.path.relpath(path, self.workdir),
+                    index_href=relative_href(index, out),
+                    file_href=relative_href(path, out),
+                    file_label=f"download {path.name}",
+                    text=show_text(path),
+                )
             )
             write_text_atomic(out, text)
 
@@ -741,15 +745,6 @@ def _templates():
 def render(context: dict) -> str:
     css = (HERE / "templates" / "page.css").read_text()
     return _templates().get_template("page.html.j2").render(css=css, **context)
-
-
-def render_text_page(title: str, index_href: str, file_href: str, file_label: str, text: str) -> str:
-    """A dataset's summary ``text`` as a page of its own (escaped), linking back to the page and the file."""
-    return (
-        _templates()
-        .get_template("text_page.html.j2")
-        .render(title=title, index_href=index_href, file_href=file_href, file_label=file_label, text=text)
-    )
 
 
 def build_page(out: Path, builder: PageBuilder) -> Path:
