@@ -47,7 +47,6 @@ QUANTITY = {
 class PaperFigure:
     """What one paper time-series figure shows."""
 
-    section: int
     variable: str  #: node-1 series (QUANTITY key)
     caption: str  #: the paper's caption, shortened
     envelope: bool = False  #: the paper claims the quantity "increases": draw the running envelope
@@ -65,13 +64,11 @@ class PaperFigure:
 
 TIME_SERIES = {
     21: PaperFigure(
-        9,
         "horizontal_displacement",
         "Displacement (mm) at beam node 1 in horizontal direction",
         normal_force=True,
     ),
     23: PaperFigure(
-        9,
         "vertical_displacement",
         "Vertical displacement of beam at node 1",
         normal_force=True,
@@ -81,24 +78,18 @@ TIME_SERIES = {
             "horizontal_amplitude",
         ),
     ),
-    24: PaperFigure(
-        9, "horizontal_velocity", "Horizontal velocity at beam node 1", envelope=True, growth=True
-    ),
+    24: PaperFigure("horizontal_velocity", "Horizontal velocity at beam node 1", envelope=True, growth=True),
     25: PaperFigure(
-        9, "vertical_velocity", "Vertical velocity versus time of beam at node 1", envelope=True, growth=True
+        "vertical_velocity", "Vertical velocity versus time of beam at node 1", envelope=True, growth=True
     ),
     27: PaperFigure(
-        10,
         "horizontal_displacement",
         "Horizontal displacement of the beam at node 1 (upper face held)",
         envelope=True,
         growth=True,
     ),
-    28: PaperFigure(
-        10, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (upper face held)"
-    ),
+    28: PaperFigure("horizontal_velocity", "Horizontal velocity for the beam at node 1 (upper face held)"),
     29: PaperFigure(
-        11,
         "horizontal_displacement",
         "Horizontal displacements versus time at beam node 1 (penalty)",
         normal_force=True,
@@ -107,19 +98,18 @@ TIME_SERIES = {
         zero_line="paper: oscillates about its equilibrium position (0.0, 0.0)",
     ),
     30: PaperFigure(
-        11,
         "vertical_displacement",
         "Vertical displacement at node 1 for the beam (penalty)",
         normal_force=True,
     ),
-    32: PaperFigure(11, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (penalty)"),
+    32: PaperFigure("horizontal_velocity", "Horizontal velocity for the beam at node 1 (penalty)"),
     33: PaperFigure(
-        11, "vertical_velocity", "Vertical velocity versus time at node 1 (penalty)", normal_force=True
+        "vertical_velocity", "Vertical velocity versus time at node 1 (penalty)", normal_force=True
     ),
     35: PaperFigure(
-        12, "horizontal_displacement", "Horizontal displacements for the beam at node 1 (contact at 30°)"
+        "horizontal_displacement", "Horizontal displacements for the beam at node 1 (contact at 30°)"
     ),
-    36: PaperFigure(12, "horizontal_velocity", "Horizontal velocity for the beam at node 1 (contact at 30°)"),
+    36: PaperFigure("horizontal_velocity", "Horizontal velocity for the beam at node 1 (contact at 30°)"),
 }
 PAPER_FIGURE_NUMBERS = tuple(paths.fe_paper_figure_numbers())  # one home: the catalogue
 #: how the sketches name each contact method (stickslip.fe.params.ContactParams.method)
