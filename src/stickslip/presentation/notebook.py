@@ -229,28 +229,25 @@ def figure_verdicts(figures, csv_path=VERDICTS_CSV):
     # one column for the search: a figure with no claims searched no reading, the others the same number
     counts = [int(rows[str(n)]["readings_searched"] or 0) for n in figures if str(n) in rows]
     searched = max(counts, default=0)
-    out = []
-    for number in figures:
-        r = rows.get(str(number))
-        if r is None:
-            continue
 
-        def cell(prefix, r=r):
-            if not r[f"{prefix}_verdict"]:
-                return "-"
-            return f"{r[f'{prefix}_verdict']} ({r[f'{prefix}_reproduced']} of {r[f'{prefix}_decided']})"
+    def cell(r, prefix):
+        if not r[f"{prefix}_verdict"]:
+            return "-"
+        return f"{r[f'{prefix}_verdict']} ({r[f'{prefix}_reproduced']} of {r[f'{prefix}_decided']})"
 
-        out.append(
-            {
-                "figure": f"Fig. {number}",
-                "verdict (primary reading)": cell("primary"),
-                "primary reading": r["primary_reading"],
-                "as printed": cell("printed"),
-                f"best of {searched} readings (a search)": cell("best"),
-                "best reading": r["best_reading"] or "-",
-                "not evidence": r["not_evidence"] or "-",
-            }
-        )
+    out = [
+        {
+            "figure": f"Fig. {number}",
+            "verdict (primary reading)": cell(r, "primary"),
+            "primary reading": r["primary_reading"],
+            "as printed": cell(r, "printed"),
+            f"best of {searched} readings (a search)": cell(r, "best"),
+            "best reading": r["best_reading"] or "-",
+            "not evidence": r["not_evidence"] or "-",
+        }
+        for number in figures
+        if (r := rows.get(str(number))) is not None
+    ]
     return pd.DataFrame(out)
 
 

@@ -569,7 +569,6 @@ class PageBuilder:
             "verdict_class": verdict.replace(" ", "-"),
             "rule": VERDICT_RULE[verdict],
             "v": v,
-            "primary_reading": v["primary"]["reading"],
             "speeds": speeds,
             "best_drawn": best_drawn,
             "n_rows": len(evidence),
