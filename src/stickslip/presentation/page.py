@@ -529,10 +529,11 @@ class PageBuilder:
         from_table = entry.get("table") or entry.get("drawn_from_table")
         csv_path = self.workdir / self.friction_table
         if from_table and csv_path.is_file():
+            rows_ = read_csv(csv_path)
             if entry.get("table"):
-                table = self.table_preview(csv_path)
+                columns = list(rows_[0]) if rows_ else []
+                table = {"columns": columns, "rows": [[fmt(r[c]) for c in columns] for r in rows_]}
             elif not images:
-                rows_ = read_csv(csv_path)
                 x, y = list(rows_[0])[:2]
                 out = self.thumbs / f"fig{number:02d}.svg"
                 out.parent.mkdir(parents=True, exist_ok=True)
@@ -603,11 +604,6 @@ class PageBuilder:
             "details": rest.replace(" | ", "; "),
             "quote": r["quote"],
         }
-
-    def table_preview(self, csv_path: Path) -> dict:
-        rows = read_csv(csv_path)
-        columns = list(rows[0]) if rows else []
-        return {"columns": columns, "rows": [[fmt(r[c]) for c in columns] for r in rows]}
 
     # -- summary --------------------------------------------------------------------------------------
 

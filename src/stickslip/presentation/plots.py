@@ -304,24 +304,6 @@ def reading_colours(readings):
     return {r: f"C{i % 10}" for i, r in enumerate(readings)}
 
 
-def mark_failed(ax, label, *, row=0):
-    """Red 'failed - not a result' note in the axes (instead of a curve)."""
-    ax.text(
-        0.02,
-        0.92 - 0.09 * row,
-        f"{label}: {FAILED_TEXT}",
-        transform=ax.transAxes,
-        color="red",
-        fontsize=8,
-        va="top",
-    )
-
-
-def mark_reported_point(ax, x, y, label=None, color="k"):
-    """A number the paper reports at a given abscissa: black cross, labelled."""
-    ax.plot([x], [y], "x", color=color, ms=9, mew=2, zorder=5, label=label)
-
-
 def scalars_vs_reported(datasets: dict, quantities, *, title="", ncols=None):
     """One panel per reported quantity: the measured value of each reading (coloured dot) against the paper's
     number (dotted line, grey band = the claim's tolerance when given). `quantities` is a list of dicts with
@@ -405,7 +387,7 @@ def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title="")
                 _failed_ticks(ax, x[~ok])
         for rvar, rx, ry, rlabel in reported:
             if rvar == var:
-                mark_reported_point(ax, rx, ry)
+                ax.plot([rx], [ry], "x", color="k", ms=9, mew=2, zorder=5, label=None)  # the paper's number
                 ax.annotate(rlabel, (rx, ry), xytext=(4, 4), textcoords="offset points", fontsize=7)
         units = first[param].attrs.get("units", "")
         ax.set_xlabel(f"{param} [{units}]", fontsize=8)
@@ -441,16 +423,11 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
         for i, (method, ds) in enumerate(datasets[reading].items()):
             if run_failed(ds):
                 message = ds["solver_status"].attrs.get("message", "")
-                mark_failed(ax_a, f"{method}", row=2 * i)
-                ax_a.text(
-                    0.02,
-                    0.83 - 0.18 * i,
-                    message[:60],
-                    transform=ax_a.transAxes,
-                    color="red",
-                    fontsize=7,
-                    va="top",
-                )
+                for y, text, size in (
+                    (0.92 - 0.09 * (2 * i), f"{method}: {FAILED_TEXT}", 8),
+                    (0.83 - 0.18 * i, message[:60], 7),
+                ):
+                    ax_a.text(0.02, y, text, transform=ax_a.transAxes, color="red", fontsize=size, va="top")
                 continue
             _draw_run(ax_a, ax_a if ax_b is None else ax_b, ds, method, kind)
         if kind in ("timeseries", "velocity"):

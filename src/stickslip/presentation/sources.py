@@ -18,15 +18,6 @@ from pathlib import Path
 from .report import paper_figures
 
 
-def figure_numbers(entry, docstring: str | None, rule_mapped: bool) -> list[int]:
-    """The paper figures an image shows (sorted; [] for none): its entry's; for a rule the config's maps name
-    nothing of (``rule_mapped`` False: an equation's curve), its rule docstring's. An image a mapped rule
-    draws beside its mapped ones (a convergence study) shows none."""
-    if entry.figures or rule_mapped:
-        return list(entry.figures)
-    return sorted(paper_figures(docstring or ""))
-
-
 def page_sources(rules, basedir, catalogue: dict) -> list[dict]:
     """One entry per image a rule writes that shows a paper figure: its path, figures, label (reading or
     scene), rule name, rules file and script (relative to ``basedir``). ``rules``: objects with ``name``,
@@ -44,7 +35,13 @@ def page_sources(rules, basedir, catalogue: dict) -> list[dict]:
             if entry is None or entry.kind != "figure":
                 continue
             label = entry.name("name")
-            figures = figure_numbers(entry, rule.docstring, mapped)
+            # its entry's figures; for a rule the config's maps name nothing of (an equation's curve), its
+            # docstring's; an image a mapped rule draws beside its mapped ones (a convergence study): none
+            figures = (
+                list(entry.figures)
+                if entry.figures or mapped
+                else sorted(paper_figures(rule.docstring or ""))
+            )
             if not figures:
                 continue
             script = Path(rule.snakefile).parent / rule.script if rule.script else None
