@@ -273,24 +273,6 @@ def paper_values(onedof: Onedof, root: Path, scene: str | None = None) -> dict[s
     return out
 
 
-def _outputs(args, root: Path, config: dict, keys=("output", "plot", "json", "csv")) -> None:
-    """Every file the command will write, checked before any work (api.check_output)."""
-    from . import api
-
-    seen = set()
-    for key in keys:
-        value = getattr(args, key, None)
-        if value is None or str(value) == "-":
-            continue
-        path = Path(value).expanduser().resolve()
-        if path in seen:
-            raise UsageError(f"{_option(key)}: {value} is also another option's output")
-        seen.add(path)
-        api.check_output(value, force=args.force, key=key, config=config)
-    if [getattr(args, k, None) for k in ("json", "csv")] == ["-", "-"]:
-        raise UsageError("--json/--csv: only one of them can go to stdout; give the other a FILE")
-
-
 def _number(value):
     """A JSON/CSV number: None for NaN or a missing value."""
     return None if value is None or value != value else float(value)
@@ -301,10 +283,8 @@ def run_report(ds, base: dict, where: str, paper: dict) -> dict:
     from .analysis.metrics import metric_attrs
 
     mine = _metrics(ds)
-    outcome = ds["outcome"] if "outcome" in ds else None
     message = ds.attrs.get("message", "")
-    if outcome is not None:
-        meanings, code = str(outcome.attrs.get("flag_meanings", "")).split(), int(outcome.values)
+    outcome, _, mechanism = message.partition(": ")  # the outcome's flag name (spaced) and its mechanism
     return {
         "title": ds.attrs.get("title", "").strip(),
         "scene": ds.attrs.get("scene_name", ""),
@@ -314,10 +294,8 @@ def run_report(ds, base: dict, where: str, paper: dict) -> dict:
         "status": ds.attrs.get("status", ""),
         "success": int(ds.attrs.get("success", 0)),
         "message": message,
-        "outcome": message.split(":", 1)[0]
-        if outcome is None
-        else (meanings[code] if 0 <= code < len(meanings) else str(code)),
-        "mechanism": "" if outcome is None else outcome.attrs.get("mechanism", ""),
+        "outcome": outcome.replace(" ", "_"),
+        "mechanism": mechanism,
         "solver": ds.attrs.get("solver_message", ""),
         "baseline_source": where,
         "metrics": {
@@ -382,12 +360,24 @@ def print_run(report: dict, out=None) -> None:
 
 
 def _project(args, keys=("output", "plot", "json", "csv")) -> tuple[Path, dict]:
-    """(project folder, config) of a command that writes files, its outputs checked before any work."""
+    """(project folder, config) of a command that writes files, every file it will write checked before any
+    work (``api.check_output``)."""
     from . import api
 
     root = api.project_root(args.root)
     config = api.load_project_config(args.configfile, root)
-    _outputs(args, root, config, keys)
+    seen = set()
+    for key in keys:
+        value = getattr(args, key, None)
+        if value is None or str(value) == "-":
+            continue
+        path = Path(value).expanduser().resolve()
+        if path in seen:
+            raise UsageError(f"{_option(key)}: {value} is also another option's output")
+        seen.add(path)
+        api.check_output(value, force=args.force, key=key, config=config)
+    if [getattr(args, k, None) for k in ("json", "csv")] == ["-", "-"]:
+        raise UsageError("--json/--csv: only one of them can go to stdout; give the other a FILE")
     return root, config
 
 
