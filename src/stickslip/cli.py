@@ -21,6 +21,7 @@ damaged dataset, 2 bad input.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
@@ -311,12 +312,6 @@ def run_report(ds, base: dict, where: str, paper: dict) -> dict:
     }
 
 
-def _json_text(report: dict) -> str:
-    import json
-
-    return json.dumps(report, indent=1) + "\n"
-
-
 def _csv_text(report: dict) -> str:
     import csv
     import io
@@ -327,10 +322,8 @@ def _csv_text(report: dict) -> str:
     for name, m in report["metrics"].items():
         value, base = ("" if x is None else repr(x) for x in (m["value"], m["baseline"]))
         paper = ";".join(repr(p["value"]) for p in m["paper"])
-        writer.writerow(
-            [name, value, m["units"], base, paper, ";".join(p["claim"] for p in m["paper"])]
-            + [m["definition"]]
-        )
+        claims = ";".join(p["claim"] for p in m["paper"])
+        writer.writerow([name, value, m["units"], base, paper, claims, m["definition"]])
     return buf.getvalue()
 
 
@@ -428,7 +421,7 @@ def cmd_run(args) -> int:
     _wrote(args.output, text_out)
     if args.plot:
         _plot_onedof(ds, onedof, args.plot, reading, text_out)
-    for target, text in ((args.json, _json_text), (args.csv, _csv_text)):
+    for target, text in ((args.json, lambda r: json.dumps(r, indent=1) + "\n"), (args.csv, _csv_text)):
         if target:
             (sys.stdout.write if target == "-" else Path(target).write_text)(text(report))
             _wrote(target, text_out)
@@ -551,8 +544,6 @@ def law_kinds() -> list[dict]:
 def cmd_laws(args) -> int:
     kinds = law_kinds()
     if args.json:
-        import json
-
         print(json.dumps(kinds, indent=1))
         return 0
     print(
