@@ -16,8 +16,9 @@ Layers, each importing only from the ones listed before it:
 
 from ._version import __version__
 
-#: The public functions (``stickslip.api``'s), loaded on first use: ``import stickslip`` stays cheap (no
-#: numpy, xarray, scipy).
+#: The public functions, loaded on first use: ``import stickslip`` stays cheap (no numpy, xarray, scipy).
+_API = {"simulate": "api", "simulate_fe": "api"}
+
 __all__ = ["simulate", "simulate_fe", "__version__"]
 
 
@@ -28,12 +29,12 @@ _SUBMODULES = ("api", "cli", "catalogue")
 def __getattr__(name: str):
     from importlib import import_module
 
-    if name in __all__:
-        return getattr(import_module(".api", __name__), name)
+    if name in _API:
+        return getattr(import_module(f".{_API[name]}", __name__), name)
     if name in _SUBMODULES:
         return import_module(f".{name}", __name__)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def __dir__():
-    return sorted({*globals(), *__all__, *_SUBMODULES})
+    return sorted([*globals(), *_API, *_SUBMODULES])
