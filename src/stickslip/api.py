@@ -313,19 +313,18 @@ def onedof_scenario(
     law=None,
     run: Mapping | None = None,
     params: Mapping | None = None,
-    own_law=None,
 ) -> tuple[Onedof, str]:
     """(section, scene name) with the changes as a scene of their own: ``onedof.scenes.custom`` = ``scene``
     (default: the baseline's) with ``params``, ``law`` (a config mapping or a built-in law; a law without
-    ``mu_s`` takes the run's) and ``run`` lengths over it, checked as a config scene is. ``own_law`` (from
-    ``own_law``) is only named in the description: the run replaces its spec's law. Without changes the
-    scene itself, so the run is the pipeline's run of that scene."""
+    ``mu_s`` takes the run's) and ``run`` lengths over it, checked as a config scene is; a law of
+    ``own_law`` is only named in the description (not a config value: the run replaces its spec's law).
+    Without changes the scene itself, so the run is the pipeline's run of that scene."""
     from .schema import Scene
 
     scene = scene or onedof.baseline.scene
     _refs(("scene", scene), onedof.scenes, "onedof.scenes")
     params, run = dict(params or {}), dict(run or {})
-    if not (params or run or law is not None or own_law is not None):
+    if not (params or run or law is not None):
         return onedof, scene
     base = onedof.scenes[scene].model_dump(exclude_unset=True)
     changes = ", ".join(f"{k}={v}" for k, v in {**params, **run}.items())
@@ -336,13 +335,13 @@ def onedof_scenario(
         "params": {**base.get("params", {}), **params},
         **run,
     }
-    if law is not None:
+    if getattr(law, "kind", None) == "callable":
+        entry["description"] += f", friction law {law!r}"
+    elif law is not None:
         entry["law"] = dict(law.describe()) if hasattr(law, "describe") else dict(law)
         if entry["law"].get("kind") not in ("tabulated", None):  # every law but a table has a mu_s
             entry["law"].setdefault("mu_s", entry["params"].get("mu_s", onedof.defaults.params.mu_s))
         entry["description"] += f", friction law {entry['law']['kind']}"
-    if own_law is not None:
-        entry["description"] += f", friction law {own_law!r}"
     custom = _typed(Scene, entry, f"onedof.scenes.{CUSTOM}.")
     return onedof.model_copy(update={"scenes": {**onedof.scenes, CUSTOM: custom}}), CUSTOM
 
@@ -424,8 +423,9 @@ def simulate(
     lengths = (t_end, output_dt, transient, count_window)
     run = {k: v for k, v in zip(RUN_LENGTHS, lengths, strict=True) if v is not None}
     own = own_law(law, law_derivative, f"onedof.scenes.{CUSTOM}.law")
-    config_law = None if own is not None else law
-    onedof, name = onedof_scenario(project.onedof, scene, law=config_law, run=run, params=params, own_law=own)
+    onedof, name = onedof_scenario(
+        project.onedof, scene, law=law if own is None else own, run=run, params=params
+    )
     reading = reading or onedof.baseline.reading
     method = method or ("switch" if law is not None else onedof.baseline.method)
     _refs(("reading", reading), onedof.readings, "onedof.readings")
