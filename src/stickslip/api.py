@@ -98,7 +98,6 @@ def check_output(
     would be read as the pipeline's; ``force`` does not change this); an existing file unless ``force``; a
     directory; a place no file can be created in (``/proc``, a read-only or missing parent). The message
     names ``key`` (``-o`` on the command line)."""
-    import os
     import tempfile
 
     from . import catalogue as paths
@@ -129,12 +128,9 @@ def check_output(
     if not parent.is_dir():
         raise ConfigError(f"{key}: {str(path)!r} cannot be written: {str(parent)!r} is not a directory")
     try:  # the real test (root may write where permission bits say no; /proc refuses new files)
-        fd, probe = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".probe", dir=parent)
-        os.close(fd)
-        os.unlink(probe)
+        tempfile.TemporaryFile(dir=parent).close()
         if target.exists():
-            with open(target, "ab"):
-                pass
+            open(target, "ab").close()
     except OSError as exc:
         raise ConfigError(f"{key}: {str(path)!r} cannot be written ({exc.strerror or exc})") from None
     return path
