@@ -412,9 +412,8 @@ def cmd_run(args) -> int:
     base, where = baseline_metrics(onedof, reading, root)
     report = run_report(ds, base, where, paper_values(onedof, root, args.scene))
     report["reading"] = reading
-    text_out = (
-        sys.stderr if "-" in (args.json, args.csv) else sys.stdout
-    )  # stdout is the data: text to stderr
+    # with --json or --csv on stdout, stdout is the data: the text goes to stderr
+    text_out = sys.stderr if "-" in (args.json, args.csv) else sys.stdout
     print_run(report, text_out)
     if args.output:
         report["output"] = str(args.output)
