@@ -526,11 +526,8 @@ def _finish(ds: xr.Dataset, attrs: dict, output) -> xr.Dataset:
     if output is not None:
         write_dataset(ds, output, **attrs)
         return read_dataset(output)
-    prov = provenance_attrs(
-        title=attrs.pop("title", None) or ds.attrs.get("title", ""),
-        **{k: attrs[k] for k in ("scene", "interpretation", "method")},
-    )
-    ds.attrs = {**prov, **ds.attrs}
+    title = attrs.pop("title", None) or ds.attrs.get("title", "")
+    ds.attrs = {**provenance_attrs(title=title, **attrs), **ds.attrs}
     return ds
 
 
