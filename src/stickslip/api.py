@@ -244,17 +244,20 @@ def own_law(law, law_derivative: Callable[[float], float] | None = None, key: st
     (those go through the config, as the pipeline's).
 
     ``law``: a Python callable ``mu(v_r)`` of the relative speed [mm/s] (``law_derivative`` its derivative
-    [s/mm], checked against mu's difference quotients; the static limit is mu(0)), or a ``FrictionLaw`` the
-    config cannot name: your own subclass or a table in memory, with its formula (continued below 0 as it
-    defines), static limit and breakpoints, recorded by name and a digest of its values (two tables in memory
-    share a repr, and a kept solve is found by it). The checks every built-in law makes: mu finite and >= 0
-    at every speed of ``LAW_CHECK_SPEEDS``, the static limit finite and > 0, and mu(0+) not above it (a mass
-    released from stick would be pushed back into it). Errors name ``key``."""
+    [s/mm], checked against mu's difference quotients, or the pair ``(mu, dmu)`` as ``law``; the static
+    limit is mu(0)), or a ``FrictionLaw`` the config cannot name: your own subclass or a table in memory,
+    with its formula (continued below 0 as it defines), static limit and breakpoints, recorded by name and a
+    digest of its values (two tables in memory share a repr, and a kept solve is found by it). The checks
+    every built-in law makes: mu finite and >= 0 at every speed of ``LAW_CHECK_SPEEDS``, the static limit
+    finite and > 0, and mu(0+) not above it (a mass released from stick would be pushed back into it).
+    Errors name ``key``."""
     import math
 
     from .model.laws import LAW_KINDS, FrictionLaw
     from .pipeline.config import ConfigError
 
+    if isinstance(law, tuple) and len(law) == 2 and all(map(callable, law)) and law_derivative is None:
+        law, law_derivative = law
     if law is None or (isinstance(law, Mapping) and law_derivative is None):
         return None
     is_law = isinstance(law, FrictionLaw)
