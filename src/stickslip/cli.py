@@ -279,7 +279,7 @@ def _number(value):
     return None if value is None or value != value else float(value)
 
 
-def run_report(ds, base: dict, where: str, paper: dict) -> dict:
+def run_report(ds, reading: str, base: dict, where: str, paper: dict) -> dict:
     """The run's outcome and metrics as data: what --json writes and the table prints."""
     from .analysis.metrics import metric_attrs
 
@@ -290,7 +290,7 @@ def run_report(ds, base: dict, where: str, paper: dict) -> dict:
         "title": ds.attrs.get("title", "").strip(),
         "scene": ds.attrs.get("scene_name", ""),
         "description": ds.attrs.get("scene_description", ""),
-        "reading": ds.attrs.get("interpretation_reading", ""),
+        "reading": reading,
         "method": ds.attrs.get("method_name", ""),
         "status": ds.attrs.get("status", ""),
         "success": int(ds.attrs.get("success", 0)),
@@ -410,8 +410,7 @@ def cmd_run(args) -> int:
     onedof = api.onedof_project(config).onedof
     reading = args.reading or onedof.baseline.reading
     base, where = baseline_metrics(onedof, reading, root)
-    report = run_report(ds, base, where, paper_values(onedof, root, args.scene))
-    report["reading"] = reading
+    report = run_report(ds, reading, base, where, paper_values(onedof, root, args.scene))
     # with --json or --csv on stdout, stdout is the data: the text goes to stderr
     text_out = sys.stderr if "-" in (args.json, args.csv) else sys.stdout
     print_run(report, text_out)
