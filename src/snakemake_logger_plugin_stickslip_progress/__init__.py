@@ -100,29 +100,27 @@ class Progress:
         self.durations.setdefault(job.rule, []).append(now - job.started)
         self.waiting.append(jobid)
 
-    def seconds_for(self, rule: str) -> float | None:
-        """A job of ``rule``'s typical seconds: its benchmark folder's, else this run's mean for the rule."""
+    def seconds_for(self, rule: str, fallback: float | None = None) -> float | None:
+        """A job of ``rule``'s typical seconds: its benchmark folder's, else this run's mean for the rule,
+        else ``fallback``."""
         folders = [f for f in self.typical if rule == f or rule.startswith(f + "_")]
         if folders:
             return self.typical[max(folders, key=len)]
         seen = self.durations.get(rule)
-        return statistics.mean(seen) if seen else None
+        return statistics.mean(seen) if seen else fallback
 
     def seconds_left(self, done: int, total: int, now: float) -> float:
-        elapsed = now - self.started
         if not self.typical or not self.planned:
-            return elapsed / done * (total - done) if done else 0.0
+            return (now - self.started) / done * (total - done) if done else 0.0
         fallback = statistics.median(self.typical.values())
         work = 0.0
         for rule, count in self.planned.items():
             left = count - self.finished[rule]
             if left > 0:
-                per_job = self.seconds_for(rule)
-                work += left * (fallback if per_job is None else per_job)
+                work += left * self.seconds_for(rule, fallback)
         for jobid in self.running:  # what the running jobs have done already
             job = self.jobs[jobid]
-            per_job = self.seconds_for(job.rule)
-            work -= min(now - job.started, fallback if per_job is None else per_job)
+            work -= min(now - job.started, self.seconds_for(job.rule, fallback))
         return max(work, 0.0) / max(self.cores, 1)
 
     def lines(self, done: int, total: int, now: float) -> list[str]:

@@ -88,45 +88,35 @@ def project_root(root: str | Path | None = None) -> Path:
     )
 
 
-def _results_folder_of(path: Path) -> Path | None:
-    """The results folder of the project ``path`` lies in (any stickslip checkout, not only this one's)."""
-    from .catalogue import RESULTS
-
-    for folder in path.parents:
-        if folder.name == RESULTS and _is_project(folder.parent):
-            return folder
-    return None
-
-
 def check_output(
-    output: str | Path | None, root: str | Path, *, force: bool = False, key: str = "output", config=None
+    output: str | Path | None, *, force: bool = False, key: str = "output", config=None
 ) -> Path | None:
     """``output`` as a path this call may write, checked before any work.
 
     Refused: a path the pipeline's catalogue names (``stickslip.catalogue``) or anything under a project's
-    results folder (the build owns those files: a custom run there would be read as the pipeline's; ``force``
-    does not change this); an existing file unless ``force``; a directory; a place no file can be created
-    in (``/proc``, a read-only or missing parent). The message names ``key`` (``-o`` on the command line)."""
+    results folder, this project's or another checkout's (the build owns those files: a custom run there
+    would be read as the pipeline's; ``force`` does not change this); an existing file unless ``force``; a
+    directory; a place no file can be created in (``/proc``, a read-only or missing parent). The message
+    names ``key`` (``-o`` on the command line)."""
+    import tempfile
+
+    from . import catalogue as paths
     from .pipeline.config import ConfigError
 
     if output is None:
         return None
     path = Path(output).expanduser()
     target = path.resolve()
-    root = Path(root).resolve()
-    results = _results_folder_of(target)
+    results = next((f for f in target.parents if f.name == paths.RESULTS and _is_project(f.parent)), None)
     if results is not None:
-        from . import catalogue as paths
-
         rel = target.relative_to(results.parent).as_posix()
         named = (
             " (a catalogue path: the pipeline writes it)" if config and rel in paths.catalogue(config) else ""
         )
         raise ConfigError(
             f"{key}: {str(path)!r} is inside the pipeline's results folder {str(results)!r}{named}; the "
-            "build "
-            "owns every file there and would read a custom run as its own: write elsewhere (--force does not "
-            "change this)"
+            "build owns every file there and would read a custom run as its own: write elsewhere (--force "
+            "does not change this)"
         )
     if target.is_dir():
         raise ConfigError(f"{key}: {str(path)!r} is a directory; name a file, e.g. {str(path / 'run.nc')!r}")
@@ -137,16 +127,10 @@ def check_output(
         parent = parent.parent
     if not parent.is_dir():
         raise ConfigError(f"{key}: {str(path)!r} cannot be written: {str(parent)!r} is not a directory")
-    import os
-    import tempfile
-
     try:  # the real test (root may write where permission bits say no; /proc refuses new files)
-        fd, probe = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".probe", dir=parent)
-        os.close(fd)
-        os.unlink(probe)
+        tempfile.TemporaryFile(dir=parent).close()
         if target.exists():
-            with open(target, "ab"):
-                pass
+            open(target, "ab").close()
     except OSError as exc:
         raise ConfigError(f"{key}: {str(path)!r} cannot be written ({exc.strerror or exc})") from None
     return path
@@ -159,16 +143,11 @@ def load_project_config(configfiles: Sequence[str | Path] = (), root: str | Path
     Built in the Snakefile's order, key order included: Snakemake reads the ``--configfile`` files first,
     then the Snakefile merges everything over them, so an overlay's keys come first in every mapping (the
     perturbation ensemble does not depend on it: its signs are drawn by run id and field path)."""
-    from .io.yaml_files import load_yaml
-    from .pipeline.config import drop_removed, load_config, merge
+    from .pipeline.config import load_config, merge
 
     base = project_root(root)
     overlays = [Path(p) for p in configfiles]
-    config: dict = {}
-    for path in overlays:  # what Snakemake's own --configfile loading gives the Snakefile
-        config = merge(config, load_yaml(path) or {})
-    config = merge(config, load_config(sorted((base / "config").glob("*.yaml")) + overlays))
-    config = drop_removed(config)
+    config = merge(load_config(overlays), load_config(sorted((base / "config").glob("*.yaml")) + overlays))
     inverse = config.get("inverse") or {}
     if "claims_glob" in inverse and not Path(inverse["claims_glob"]).is_absolute():
         # a path of the project, wherever the command runs: the pipeline runs in the project folder
@@ -197,47 +176,9 @@ def _typed(model, mapping: Mapping, key: str = ""):
         raise ConfigError("\n".join(f"{key}{line}" for line in typed_errors(exc).splitlines())) from None
 
 
-def _law_mapping(law, mu_s: float) -> dict | None:
-    """A law as its config mapping; a law without ``mu_s`` takes the run's (every law but a table has one)."""
-    if law is None:
-        return None
-    entry = dict(law.describe()) if hasattr(law, "describe") else dict(law)
-    if entry.get("kind") not in ("tabulated", None) and "mu_s" not in entry:
-        entry["mu_s"] = mu_s
-    return entry
-
-
 #: Relative speeds [mm/s] a law given as an object or a callable is checked at (and fingerprinted by):
 #: 0, then 1e-6 to 1e3 mm/s geometrically, far beyond any speed a 1-DOF run of the paper reaches.
 LAW_CHECK_SPEEDS = (0.0, *(10.0 ** (k / 4.0) for k in range(-24, 13)))
-
-
-def check_law(law, key: str = "law"):
-    """The checks every built-in law makes, applied to any law object: mu finite and >= 0 at every relative
-    speed of ``LAW_CHECK_SPEEDS``, the static limit finite and > 0, and mu(0+) not above it (a mass released
-    from stick would be pushed back into it). Errors name ``key``."""
-    import math
-
-    from .pipeline.config import ConfigError
-
-    try:
-        static = float(law.static)
-        values = [float(law.mu_continued(v)) for v in LAW_CHECK_SPEEDS]
-    except ConfigError:
-        raise
-    except Exception as exc:  # the user's code: its own error, named
-        raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
-    if not (math.isfinite(static) and static > 0):
-        raise ConfigError(f"{key}: the static limit must be finite and > 0, got {static!r}")
-    for v, mu in zip(LAW_CHECK_SPEEDS, values, strict=True):
-        if not (math.isfinite(mu) and mu >= 0):
-            raise ConfigError(
-                f"{key}: mu({v:g} mm/s) = {mu!r}; mu must be finite and >= 0 (a magnitude |F|/N)"
-            )
-    zero_plus = max(values[0], float(law.mu_continued(1e-12)))  # a jump right after 0 too
-    if zero_plus > static * (1 + 1e-9):
-        raise ConfigError(f"{key}: mu(0+) = {zero_plus!r} exceeds the static limit {static!r}")
-    return law
 
 
 def _callable_law_class():
@@ -259,7 +200,7 @@ def _callable_law_class():
         kind = "callable"
 
         def __init__(self, mu, dmu=None, static=None, name: str = "", continued=False, breakpoints=()):
-            self._mu, self._dmu, self._continued, self._breakpoints = mu, dmu, continued, tuple(breakpoints)
+            self._mu, self._continued, self._breakpoints = mu, continued, tuple(breakpoints)
             self.name = name or getattr(mu, "__name__", None) or type(mu).__name__
             self._static = float(mu(0.0)) if static is None else float(static)
             h = 1e-7
@@ -289,15 +230,6 @@ def _callable_law_class():
             arr = np.asarray(speed, dtype=float)
             return np.vectorize(self._scalar, otypes=[float])(arr) if arr.ndim else self._scalar(float(arr))
 
-        def derivative(self, speed: float) -> float:
-            """d mu / d|v_r| [s/mm]: the given ``dmu``, else a central difference quotient."""
-            if self._dmu is not None:
-                return float(self._dmu(speed))
-            h = 1e-6 * max(1.0, abs(speed))
-            return (self._scalar(speed + h) - self._scalar(max(speed - h, 0.0))) / (
-                speed + h - max(speed - h, 0)
-            )
-
         def describe(self) -> dict:
             return {"kind": self.kind, "mu": self.name, "static": self._static, "digest": self._digest}
 
@@ -307,72 +239,70 @@ def _callable_law_class():
     return CallableLaw
 
 
-def callable_law(mu, dmu=None, static=None, key: str = "law"):
-    """A checked ``CallableLaw`` (see ``simulate``): ``mu(v_r)`` of the relative speed [mm/s]; ``dmu`` its
-    derivative (checked against difference quotients of ``mu``), ``static`` the static limit (default
-    mu(0))."""
+def own_law(law, law_derivative: Callable[[float], float] | None = None, key: str = "law"):
+    """A law given as an object, as a checked ``CallableLaw``; None for a config mapping or a built-in law
+    (those go through the config, as the pipeline's).
+
+    ``law``: a Python callable ``mu(v_r)`` of the relative speed [mm/s] (``law_derivative`` its derivative
+    [s/mm], checked against mu's difference quotients, or the pair ``(mu, dmu)`` as ``law``; the static
+    limit is mu(0)), or a ``FrictionLaw`` the config cannot name: your own subclass or a table in memory,
+    with its formula (continued below 0 as it defines), static limit and breakpoints, recorded by name and a
+    digest of its values (two tables in memory share a repr, and a kept solve is found by it). The checks
+    every built-in law makes: mu finite and >= 0 at every speed of ``LAW_CHECK_SPEEDS``, the static limit
+    finite and > 0, and mu(0+) not above it (a mass released from stick would be pushed back into it).
+    Errors name ``key``."""
     import math
 
-    from .pipeline.config import ConfigError
-
-    if not callable(mu) or (dmu is not None and not callable(dmu)):
-        raise ConfigError(f"{key}: expected a callable mu(v_r) (and dmu(v_r)), got {type(mu).__name__}")
-    try:
-        law = _callable_law_class()(mu, dmu, static)
-    except (TypeError, ValueError, ArithmeticError) as exc:
-        raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
-    check_law(law, key)
-    if dmu is not None:
-        for v in LAW_CHECK_SPEEDS[1:]:
-            h = 1e-6 * v
-            quotient = (float(mu(v + h)) - float(mu(v - h))) / (2 * h)
-            given = float(dmu(v))
-            scale = max(abs(quotient), abs(float(mu(v))) / max(v, 1e-300) * 1e-6, 1e-9)
-            if not math.isfinite(given) or abs(given - quotient) > 1e-3 * scale + 1e-6:
-                raise ConfigError(
-                    f"{key} derivative: dmu({v:g} mm/s) = {given!r} but mu's difference quotient there is "
-                    f"{quotient:.6g}: not mu's derivative"
-                )
-    return law
-
-
-def _law_object(law, key: str):
-    """A law given as an object (a ``FrictionLaw`` the config cannot name, or a callable), checked; None for
-    a config mapping or a built-in law (those go through the config, as the pipeline's)."""
     from .model.laws import LAW_KINDS, FrictionLaw
-
-    if law is None or isinstance(law, Mapping):
-        return None
-    if isinstance(law, FrictionLaw):
-        if type(law) is LAW_KINDS.get(law.kind) and law.kind != "tabulated":
-            return None  # a built-in law: its config mapping, checked by the config layer
-        # your own subclass, or a table in memory: its formula (continued below 0 as it defines), its static
-        # limit and breakpoints, recorded by name and a digest of its values as a callable law is (two tables
-        # in memory share a repr, and a kept solve is found by it)
-        try:
-            source = getattr(law, "source", "")
-            wrapped = _callable_law_class()(
-                law.mu_continued,
-                static=law.static,
-                name=f"{type(law).__name__}({source})" if source else type(law).__name__,
-                continued=True,
-                breakpoints=law.breakpoints,
-            )
-        except Exception as exc:
-            from .pipeline.config import ConfigError
-
-            raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
-        return check_law(wrapped, key)
-    if isinstance(law, tuple) and len(law) == 2 and all(callable(f) for f in law):
-        return callable_law(*law, key=key)
-    if callable(law):
-        return callable_law(law, key=key)
     from .pipeline.config import ConfigError
 
-    raise ConfigError(
-        f"{key}: expected a config mapping ({{'kind': 'stribeck', ...}}), a FrictionLaw or a callable "
-        f"mu(v_r), got {type(law).__name__}"
-    )
+    if isinstance(law, tuple) and len(law) == 2 and all(map(callable, law)) and law_derivative is None:
+        law, law_derivative = law
+    if law is None or (isinstance(law, Mapping) and law_derivative is None):
+        return None
+    is_law = isinstance(law, FrictionLaw)
+    if law_derivative is None and is_law and type(law) is LAW_KINDS.get(law.kind) and law.kind != "tabulated":
+        return None  # a built-in law: its config mapping, checked by the config layer
+    derivative_ok = law_derivative is None or (callable(law_derivative) and not is_law)
+    if not (is_law or callable(law)) or not derivative_ok:
+        raise ConfigError(
+            f"{key}: expected a config mapping ({{'kind': 'stribeck', ...}}), a FrictionLaw or a callable "
+            f"mu(v_r), got {type(law).__name__}"
+            + ("" if law_derivative is None else " (law_derivative: a callable dmu(v_r) of a callable law)")
+        )
+    try:  # the user's code: its own error, named
+        if is_law:
+            source = getattr(law, "source", "")
+            name = f"{type(law).__name__}({source})" if source else type(law).__name__
+            settings = dict(static=law.static, name=name, continued=True, breakpoints=law.breakpoints)
+            made = _callable_law_class()(law.mu_continued, **settings)
+        else:
+            made = _callable_law_class()(law, law_derivative)
+        static = float(made.static)
+        values = [float(made.mu_continued(v)) for v in LAW_CHECK_SPEEDS]
+        zero_plus = max(values[0], float(made.mu_continued(1e-12)))  # a jump right after 0 too
+    except Exception as exc:
+        raise ConfigError(f"{key}: evaluating the law failed: {type(exc).__name__}: {exc}") from None
+    if not (math.isfinite(static) and static > 0):
+        raise ConfigError(f"{key}: the static limit must be finite and > 0, got {static!r}")
+    for v, mu in zip(LAW_CHECK_SPEEDS, values, strict=True):
+        if not (math.isfinite(mu) and mu >= 0):
+            raise ConfigError(
+                f"{key}: mu({v:g} mm/s) = {mu!r}; mu must be finite and >= 0 (a magnitude |F|/N)"
+            )
+    if zero_plus > static * (1 + 1e-9):
+        raise ConfigError(f"{key}: mu(0+) = {zero_plus!r} exceeds the static limit {static!r}")
+    for v in LAW_CHECK_SPEEDS[1:] if law_derivative is not None else ():
+        h = 1e-6 * v
+        quotient = (float(law(v + h)) - float(law(v - h))) / (2 * h)
+        given = float(law_derivative(v))
+        scale = max(abs(quotient), abs(float(law(v))) / max(v, 1e-300) * 1e-6, 1e-9)
+        if not math.isfinite(given) or abs(given - quotient) > 1e-3 * scale + 1e-6:
+            raise ConfigError(
+                f"{key} derivative: dmu({v:g} mm/s) = {given!r} but mu's difference quotient there is "
+                f"{quotient:.6g}: not mu's derivative"
+            )
+    return made
 
 
 def onedof_scenario(
@@ -382,19 +312,18 @@ def onedof_scenario(
     law=None,
     run: Mapping | None = None,
     params: Mapping | None = None,
-    own_law=None,
 ) -> tuple[Onedof, str]:
     """(section, scene name) with the changes as a scene of their own: ``onedof.scenes.custom`` = ``scene``
-    (default: the baseline's) with ``params``, ``law`` and ``run`` lengths over it, checked as a config
-    scene is. Without changes the scene itself, so the run is the pipeline's run of that scene."""
-    from .pipeline.config import ConfigError
+    (default: the baseline's) with ``params``, ``law`` (a config mapping or a built-in law; a law without
+    ``mu_s`` takes the run's) and ``run`` lengths over it, checked as a config scene is; a law of
+    ``own_law`` is only named in the description (not a config value: the run replaces its spec's law).
+    Without changes the scene itself, so the run is the pipeline's run of that scene."""
     from .schema import Scene
 
     scene = scene or onedof.baseline.scene
-    if scene not in onedof.scenes:
-        raise ConfigError(f"scene: {scene!r} is not an entry of onedof.scenes ({sorted(onedof.scenes)})")
+    _refs(("scene", scene), onedof.scenes, "onedof.scenes")
     params, run = dict(params or {}), dict(run or {})
-    if not (params or run or law is not None or own_law is not None):
+    if not (params or run or law is not None):
         return onedof, scene
     base = onedof.scenes[scene].model_dump(exclude_unset=True)
     changes = ", ".join(f"{k}={v}" for k, v in {**params, **run}.items())
@@ -405,15 +334,26 @@ def onedof_scenario(
         "params": {**base.get("params", {}), **params},
         **run,
     }
-    mu_s = entry["params"].get("mu_s", onedof.defaults.params.mu_s)
-    law_entry = _law_mapping(law, mu_s)
-    if law_entry is not None:
-        entry["law"] = law_entry
-        entry["description"] += f", friction law {law_entry['kind']}"
-    if own_law is not None:  # not a config value: the run replaces its spec's law (api.simulate)
-        entry["description"] += f", friction law {own_law!r}"
+    if getattr(law, "kind", None) == "callable":
+        entry["description"] += f", friction law {law!r}"
+    elif law is not None:
+        entry["law"] = dict(law.describe()) if hasattr(law, "describe") else dict(law)
+        if entry["law"].get("kind") not in ("tabulated", None):  # every law but a table has a mu_s
+            entry["law"].setdefault("mu_s", entry["params"].get("mu_s", onedof.defaults.params.mu_s))
+        entry["description"] += f", friction law {entry['law']['kind']}"
     custom = _typed(Scene, entry, f"onedof.scenes.{CUSTOM}.")
     return onedof.model_copy(update={"scenes": {**onedof.scenes, CUSTOM: custom}}), CUSTOM
+
+
+def _refs(ref: tuple[str, str], known: Mapping, section: str) -> None:
+    """``schema.base.check_refs`` of one (key, name), as a ``ConfigError``."""
+    from .pipeline.config import ConfigError
+    from .schema import check_refs
+
+    try:
+        check_refs([ref], known, section)
+    except ValueError as exc:
+        raise ConfigError(str(exc)) from None
 
 
 def simulate(
@@ -471,44 +411,33 @@ def simulate(
     from .catalogue import onedof_dataset
     from .ensemble import EnsembleSpec, ensemble_dataset
     from .pipeline.config import ConfigError
-    from .schema import OnedofJob, OnedofRuns, check_run_lengths, scene_run_lengths
+    from .schema import OnedofJob, OnedofRuns, check_run_lengths, given, scene_run_lengths
     from .studies.onedof import scene_run_dataset
     from .studies.specs import PERTURBED_FIELDS, from_job_params, run_spec
 
     base_root = project_root(root)
     config = config if config is not None else load_project_config(configfiles, base_root)
-    output = check_output(output, base_root, force=force, config=config)
+    output = check_output(output, force=force, config=config)
     project = onedof_project(config)
-    run = {
-        k: v
-        for k, v in zip(RUN_LENGTHS, (t_end, output_dt, transient, count_window), strict=True)
-        if v is not None
-    }
-    if law_derivative is not None and law is not None:
-        law = (law, law_derivative)
-    own_law = _law_object(law, f"onedof.scenes.{CUSTOM}.law")
+    lengths = (t_end, output_dt, transient, count_window)
+    run = {k: v for k, v in zip(RUN_LENGTHS, lengths, strict=True) if v is not None}
+    own = own_law(law, law_derivative, f"onedof.scenes.{CUSTOM}.law")
     onedof, name = onedof_scenario(
-        project.onedof,
-        scene,
-        law=None if own_law is not None else law,
-        run=run,
-        params=params,
-        own_law=own_law,
+        project.onedof, scene, law=law if own is None else own, run=run, params=params
     )
     reading = reading or onedof.baseline.reading
     method = method or ("switch" if law is not None else onedof.baseline.method)
-    for key, value, known in (("reading", reading, onedof.readings), ("method", method, onedof.methods)):
-        if value not in known:
-            raise ConfigError(f"{key}: {value!r} is not an entry of onedof.{key}s ({sorted(known)})")
-    if own_law is not None and onedof.methods[method].solver != "switch":
+    _refs(("reading", reading), onedof.readings, "onedof.readings")
+    _refs(("method", method), onedof.methods, "onedof.methods")
+    if own is not None and onedof.methods[method].solver != "switch":
         raise ConfigError(
-            f"onedof.scenes.{name}.law: a {own_law.kind!r} friction law is solved by the 'switch' solver "
+            f"onedof.scenes.{name}.law: a {own.kind!r} friction law is solved by the 'switch' solver "
             f"only; method {method!r} uses {onedof.methods[method].solver!r}"
         )
 
     def spec_of(section):
         spec = run_spec(section, name, reading, method)
-        return spec if own_law is None else replace(spec, law=own_law)
+        return spec if own is None else replace(spec, law=own)
 
     # the params of the pipeline's job for this run (onedof_subconfig): what its ensemble perturbs
     job = OnedofJob(
@@ -525,10 +454,7 @@ def simulate(
         spec = spec_of(job.onedof)
     except ValueError as exc:
         raise ConfigError(str(exc)) from None
-    members = None
-    if ensemble:
-        given = project.ensemble.model_dump(exclude_none=True) if project.ensemble else None
-        members = EnsembleSpec.from_mapping(given).without_blas()
+    members = EnsembleSpec.from_mapping(given(project.ensemble)).without_blas() if ensemble else None
     check_run_cost(spec, members, given=run, allow_expensive=project.allow_expensive)
     ds = ensemble_dataset(  # signs drawn by name: the run's dataset path in the pipeline's catalogue
         from_job_params(lambda section: scene_run_dataset(spec_of(section))),
@@ -546,21 +472,13 @@ def simulate(
     return _finish(ds, attrs, output)
 
 
-def ensemble_members(spec) -> int:
-    """Runs an ensemble makes: the base run, one per seed, the step member, the window and BLAS members."""
-    if spec is None:
-        return 1
-    extra = (spec.window_factor is not None) + (spec.blas_threads is not None)
-    return 1 + len(spec.seeds) + 1 + extra
-
-
 def check_run_cost(
     spec: RunSpec, ensemble_spec=None, given: Mapping = (), allow_expensive: bool = False
 ) -> None:
-    """The pipeline's cost guard for one run (``stickslip.schema``): its samples (``stored_samples``, against
-    ``MAX_SAMPLES_PER_RUN``) and, with an ensemble, the samples of all its runs together (against
-    ``MAX_SAMPLES_PER_STUDY``), before any work. Skipped with ``allow_expensive: true`` in the config, as in
-    the pipeline. The message names the key (the option ``given`` set), the cost and the bound."""
+    """The pipeline's cost guard (``stickslip.schema``) for one run, before any work: its samples
+    (``stored_samples``) against ``MAX_SAMPLES_PER_RUN``, then the ensemble's (``check_ensemble_cost``).
+    Skipped with ``allow_expensive: true`` in the config, as in the pipeline. The message names the key
+    (the option ``given`` set), the cost and the bound."""
     from .pipeline.config import ConfigError
     from .schema import MAX_SAMPLES_PER_RUN, stored_samples
 
@@ -580,25 +498,27 @@ def check_run_cost(
 
 def check_ensemble_cost(spec, samples_per_run: float, *, allow_expensive: bool = False) -> None:
     """The pipeline's bounds on an ensemble, before any work: at most ``MAX_ENSEMBLE_SEEDS`` seeds, and its
-    runs together at most ``MAX_SAMPLES_PER_STUDY`` samples (``stickslip.schema``). Skipped
-    with ``allow_expensive: true``. The message names the key (``ensemble.seeds``), the cost and the bound."""
+    runs together (the base run, one per seed, the step member, the window and BLAS members) at most
+    ``MAX_SAMPLES_PER_STUDY`` samples. Skipped with ``allow_expensive: true``. The message names the key
+    (``ensemble.seeds``), the cost and the bound."""
     from .pipeline.config import ConfigError
     from .schema import MAX_ENSEMBLE_SEEDS, MAX_SAMPLES_PER_STUDY
 
     if spec is None or allow_expensive:
         return
-    members = ensemble_members(spec)
-    if len(spec.seeds) > MAX_ENSEMBLE_SEEDS:
+    seeds = len(spec.seeds)
+    members = 2 + seeds + (spec.window_factor is not None) + (spec.blas_threads is not None)
+    if seeds > MAX_ENSEMBLE_SEEDS:
         raise ConfigError(
-            f"ensemble.seeds: {len(spec.seeds)} seeds make {members} runs of this one, more than the limit "
+            f"ensemble.seeds: {seeds} seeds make {members} runs of this one, more than the limit "
             f"{MAX_ENSEMBLE_SEEDS} seeds (the pipeline's cost guard); fewer seeds, or allow_expensive: true"
         )
     if members * samples_per_run > MAX_SAMPLES_PER_STUDY:
         raise ConfigError(
-            f"ensemble.seeds: {len(spec.seeds)} seeds make {members} runs of {samples_per_run:.3g} samples, "
+            f"ensemble.seeds: {seeds} seeds make {members} runs of {samples_per_run:.3g} samples, "
             f"an estimated {members * samples_per_run:.3g} samples, more than the limit "
-            f"{MAX_SAMPLES_PER_STUDY:.3g} "
-            "(the pipeline's cost guard for a study); fewer seeds, or allow_expensive: true"
+            f"{MAX_SAMPLES_PER_STUDY:.3g} (the pipeline's cost guard for a study); fewer seeds, or "
+            "allow_expensive: true"
         )
 
 
@@ -609,16 +529,9 @@ def _finish(ds: xr.Dataset, attrs: dict, output) -> xr.Dataset:
     if output is not None:
         write_dataset(ds, output, **attrs)
         return read_dataset(output)
-    prov = provenance_attrs(
-        title=attrs.pop("title", None) or ds.attrs.get("title", ""),
-        **{k: attrs[k] for k in ("scene", "interpretation", "method")},
-    )
-    ds.attrs = {**prov, **ds.attrs}
+    title = attrs.pop("title", None) or ds.attrs.get("title", "")
+    ds.attrs = {**provenance_attrs(title=title, **attrs), **ds.attrs}
     return ds
-
-
-def _speed_suffix(value: float, unit: str) -> str:
-    return f"{value:g}{unit}".replace(".", "p").replace("+", "")
 
 
 def _stem(scene: str) -> str:
@@ -660,7 +573,7 @@ def fe_scene_name(
         )
     key, value = given[0]
     disc_key, unit = ("surface_speed_mm_s", "mm_s") if key == "speed" else ("speed_rev_per_min", "rpm")
-    name = f"{stem}_{_speed_suffix(value, unit)}"
+    name = f"{stem}_{value:g}{unit}".replace(".", "p").replace("+", "")
     if name in scenes:
         return name, None
     base = next((s for s in family if disc_key in ((scenes[s] or {}).get("disc") or {})), family[0])
@@ -703,19 +616,19 @@ def simulate_fe(
     from dataclasses import replace
 
     from . import catalogue as paths
-    from .catalogue import friction_table as rule_friction_table
     from .ensemble import EnsembleSpec, ensemble_dataset, step_member_values
     from .fe.params import SolverParams, bounds
     from .fe.quantities import INTERPRETATION
     from .fe.step_halving import HALF_STEP, apply_step_halving
     from .pipeline.config import ConfigError, merge, validate_config
+    from .schema import given
     from .studies.fe_config import PERTURBED_FIELDS, effective_fe, scene_mapping
     from .studies.fe_continuum import continuum_dataset
     from .studies.fe_scene import scene_dataset
 
     base_root = project_root(root)
     config = load_project_config(configfiles, base_root)
-    output = check_output(output, base_root, force=force, config=config)
+    output = check_output(output, force=force, config=config)
     if model not in ("beam", "continuum"):
         raise ConfigError(f"model: {model!r} is not one of ['beam', 'continuum']")
     t_end_bound = bounds(SolverParams)["t_end"]  # your t_end's own key, checked by the config's bound
@@ -729,7 +642,7 @@ def simulate_fe(
         yours = merge(yours, window)
     config = merge(config, {"fe": yours})
     try:  # the whole config checked as the Snakefile checks it (your window and scene, readings, cost)
-        typed = validate_config(config, producible=[rule_friction_table()])
+        typed = validate_config(config, producible=[paths.friction_table()])
     except ConfigError as exc:
         costly = ("samples over solver.t_end", "element-increments")
         if t_end is not None and any(c in str(exc) for c in costly):  # the guard met your window
@@ -743,8 +656,7 @@ def simulate_fe(
         raise ConfigError(f"fe.{exc}") from None
     spec = None
     if ensemble and model == "beam":
-        given = typed.ensemble.model_dump(exclude_none=True) if typed.ensemble else None
-        spec = replace(EnsembleSpec.from_mapping(given).without_blas(), step_factor=HALF_STEP)
+        spec = replace(EnsembleSpec.from_mapping(given(typed.ensemble)).without_blas(), step_factor=HALF_STEP)
         solver = SolverParams.from_mapping(mapping["solver"])  # samples per run: t_end / output_dt
         check_ensemble_cost(spec, solver.t_end / solver.output_dt + 1, allow_expensive=typed.allow_expensive)
     friction = _fe_friction_table(config, fe.friction_table, base_root, friction_table)
@@ -772,7 +684,7 @@ def _fe_friction_table(config: dict, configured: str, root: Path, given):
     """The FE friction law: ``given``, else ``configured`` (the project's ``fe.friction_table``); the
     pipeline's own table (rule friction_table's output) computed here as that rule computes it when no build
     has written it."""
-    import tempfile
+    import io
 
     from . import catalogue as paths
     from .fe.params import FrictionTable
@@ -785,8 +697,6 @@ def _fe_friction_table(config: dict, configured: str, root: Path, given):
     from .studies.onedof import friction_table_from_config
 
     ds = friction_table_from_config(onedof_project(config).onedof)
-    with tempfile.TemporaryDirectory() as tmp:  # the rule's CSV format, so the values are the rule's
-        csv = Path(tmp) / "friction_mu_vr.csv"
-        rows = zip(ds.relative_speed.values, ds.mu.values, strict=True)
-        csv.write_text("relative_velocity_mm_per_s,mu\n" + "".join(f"{v:.10g},{m:.10g}\n" for v, m in rows))
-        return FrictionTable.from_csv(csv)
+    rows = zip(ds.relative_speed.values, ds.mu.values, strict=True)  # the rule's CSV, so the rule's values
+    csv = "relative_velocity_mm_per_s,mu\n" + "".join(f"{v:.10g},{m:.10g}\n" for v, m in rows)
+    return FrictionTable.from_csv(io.StringIO(csv))

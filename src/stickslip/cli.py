@@ -21,6 +21,7 @@ damaged dataset, 2 bad input.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
@@ -31,25 +32,6 @@ from . import catalogue as paths
 if TYPE_CHECKING:  # annotations only: pydantic is imported when a command reads the config
     from .schema import Onedof
 
-#: 1-DOF parameters as options: option -> config key (``onedof.scenes.<scene>.params.<key>``).
-PARAMS = {
-    "mass": "M [kg]",
-    "stiffness": "K [N/mm]",
-    "damping": "C [N s/mm]",
-    "mu_s": "static friction coefficient",
-    "sigma": "friction slope [s/mm]",
-    "normal_force": "N [N]",
-    "x0": "initial displacement [mm]",
-    "v0": "initial velocity [mm/s]",
-    "belt_velocity": "V_b [mm/s]",
-    "belt_deceleration": "[mm/s^2]",
-    "plateau_speed": "friction plateau speed [mm/s]",
-}
-RUN_LENGTHS = {
-    "t_end": "simulated time [s]",
-    "output_dt": "sample spacing [s]",
-    "transient": "discarded start [s]",
-}
 #: The paper's metrics ``stickslip run`` prints (dataset variables), each with its definition: the table's
 #: footnotes and ``stickslip run --help`` print these, so no number is shown undefined.
 DEFINITIONS = {
@@ -67,19 +49,10 @@ DEFINITIONS = {
     "later diverges",
 }
 METRICS = tuple(DEFINITIONS)
-#: Config keys of the API's own arguments -> the option that sets them.
-OPTION_OF_KEY = {
-    "root": "--root",
-    "output": "-o/--output",
-    "speed": "--speed",
-    "rpm": "--rpm",
-    "t_end": "--t-end",
-    "model": "--model",
-    "plot": "--plot",
-    "json": "--json",
-    "csv": "--csv",
-    "ensemble.seeds": "--ensemble (ensemble.seeds)",
-}
+#: Config keys of the API's own arguments whose option is not ``--<key>``.
+OPTION_OF_KEY = {"output": "-o/--output", "ensemble.seeds": "--ensemble (ensemble.seeds)"}
+#: The API's own arguments, each set by its option ``--<key>``.
+API_KEYS = ("root", "speed", "rpm", "t_end", "model", "plot", "json", "csv", "scene", "reading", "method")
 
 
 class UsageError(Exception):
@@ -87,31 +60,34 @@ class UsageError(Exception):
 
 
 def _option(key: str) -> str:
-    return "--" + key.replace("_", "-")
+    return OPTION_OF_KEY.get(key) or "--" + key.replace("_", "-")
+
+
+def run_options() -> dict[str, str]:
+    """The options of a 1-DOF scene's parameters (``onedof.scenes.<scene>.params.<key>``) and run lengths
+    (``onedof.scenes.<scene>.<key>``) -> their meaning, as the typed config describes them."""
+    from .schema import BeltParameters, RunLengths
+
+    fields = {**BeltParameters.model_fields, **RunLengths.model_fields}
+    return {k: f.description for k, f in fields.items() if k not in ("units", "count_window")}
 
 
 def _as_option(message: str) -> str:
     """A config error's message with the option that set the key in front of it."""
     for line in message.splitlines():
-        key = line.split(":", 1)[0]
-        last = key.rsplit(".", 1)[-1]
-        if key in OPTION_OF_KEY:
-            return f"{OPTION_OF_KEY[key]}: {line.split(':', 1)[1].strip()}"
+        key, _, why = line.partition(":")
+        why = why.strip()
+        if key in OPTION_OF_KEY or key in API_KEYS:
+            return f"{_option(key)}: {why}"
+        if key.startswith("fe.scenes."):
+            return f"--scene: {line}"
         if key.startswith("onedof.scenes.") and key.endswith(".law derivative"):
-            return f"law_derivative ({key}): {line.split(':', 1)[1].strip()}"
-        if key in ("scene", "reading", "method", "model") or key.startswith("fe.scenes."):
-            option = "--scene" if key.startswith("fe.") else _option(key)
-            return (
-                f"{option}: {line.split(':', 1)[1].strip()}"
-                if not key.startswith("fe.")
-                else f"--scene: {line}"
-            )
-        if ".law" in key and "'switch' solver only" in line:
-            return f"--law/--method ({key}): {line.split(':', 1)[1].strip()}"
+            return f"law_derivative ({key}): {why}"
         if ".law" in key:
-            return f"--law ({key}): {line.split(':', 1)[1].strip()}"
-        if last in PARAMS or last in RUN_LENGTHS:
-            return f"{_option(last)} ({key}): {line.split(':', 1)[1].strip()}"
+            either = "/--method" if "'switch' solver only" in line else ""
+            return f"--law{either} ({key}): {why}"
+        if key.rsplit(".", 1)[-1] in run_options():
+            return f"{_option(key.rsplit('.', 1)[-1])} ({key}): {why}"
     return message
 
 
@@ -131,16 +107,16 @@ def _law(values: list[str] | None) -> dict | None:
     return entry
 
 
-def _common(parser: argparse.ArgumentParser) -> None:
+def _common(parser: argparse.ArgumentParser, root_help: str, outputs: bool = True) -> None:
+    parser.add_argument("--root", type=Path, help=root_help)
+    if not outputs:
+        return
     parser.add_argument(
         "--configfile",
         action="append",
         default=[],
         metavar="FILE",
         help="config overlay over config/*.yaml (as snakemake --configfile); repeatable",
-    )
-    parser.add_argument(
-        "--root", type=Path, help="project folder (default: the checkout the package belongs to, or the cwd)"
     )
     parser.add_argument(
         "-o",
@@ -154,6 +130,9 @@ def _common(parser: argparse.ArgumentParser) -> None:
     )
 
 
+ROOT_HELP = "project folder (default: the checkout the package belongs to, or the cwd)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="stickslip", description=__doc__.split("\n\n")[0], formatter_class=argparse.RawTextHelpFormatter
@@ -165,10 +144,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="one 1-DOF run: the paper's metrics against the baseline and the paper",
         description="One 1-DOF run (mass on a moving belt): first its outcome (stick-slip, no stick, rest, "
         "diverged with the mechanism, or a numerical failure), then amplitude, frequency, stick and slip "
-        "time "
-        "next to the baseline's and the paper's values for the scene's figure (--scene figNN: that figure's "
-        "claims). Parameters not given are the scene's. Exit 0 for an answer (a diverging model is one), 1 "
-        "for a numerical failure, 2 for bad input.",
+        "time next to the baseline's and the paper's values for the scene's figure (--scene figNN: that "
+        "figure's claims). Parameters not given are the scene's. Exit 0 for an answer (a diverging model is "
+        "one), 1 for a numerical failure, 2 for bad input.",
         epilog="metrics (dataset variables):\n"
         + "\n".join(f"  {name}: {text}" for name, text in DEFINITIONS.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -176,11 +154,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--scene", help="base scene (onedof.scenes; default: the baseline's)")
     run.add_argument("--reading", help="reading of the paper's friction (onedof.readings)")
     run.add_argument("--method", help="integration method (onedof.methods; default exact, switch with --law)")
-    for key, text in PARAMS.items():
-        run.add_argument(_option(key), dest=key, type=float, metavar="X", help=text)
+    for key, text in run_options().items():
+        metavar = "S" if key in ("t_end", "output_dt", "transient") else "X"
+        run.add_argument(_option(key), dest=key, type=float, metavar=metavar, help=text)
     run.add_argument("--units", choices=["as_given", "si"], help="how the parameters' units are read")
-    for key, text in RUN_LENGTHS.items():
-        run.add_argument(_option(key), dest=key, type=float, metavar="S", help=text)
     run.add_argument(
         "--law",
         nargs="+",
@@ -189,22 +166,15 @@ def build_parser() -> argparse.ArgumentParser:
         "its parameters (mu_s defaults to the run's), e.g. --law stribeck mu_k=0.3 v_s=0.5",
     )
     run.add_argument("--ensemble", action="store_true", help="add the config's perturbation ensemble")
-    run.add_argument(
-        "--json",
-        nargs="?",
-        const="-",
-        metavar="FILE",
-        help="write the outcome and metrics as JSON to FILE (no FILE: to stdout, instead of the table)",
-    )
-    run.add_argument(
-        "--csv",
-        nargs="?",
-        const="-",
-        metavar="FILE",
-        help="write the metrics as CSV (metric,value,units,baseline,paper,claims,definition) to FILE or "
-        "stdout",
-    )
-    _common(run)
+    for key, text in (
+        ("--json", "the outcome and metrics as JSON to FILE (no FILE: to stdout, instead of the table)"),
+        (
+            "--csv",
+            "the metrics as CSV (metric,value,units,baseline,paper,claims,definition) to FILE or stdout",
+        ),
+    ):
+        run.add_argument(key, nargs="?", const="-", metavar="FILE", help=f"write {text}")
+    _common(run, ROOT_HELP)
 
     fe = sub.add_parser(
         "fe",
@@ -225,7 +195,7 @@ def build_parser() -> argparse.ArgumentParser:
     fe.add_argument("--model", choices=["beam", "continuum"], default="beam", help="FE model (default beam)")
     fe.add_argument("--t-end", dest="t_end", type=float, metavar="S", help="simulated window [s]")
     fe.add_argument("--no-ensemble", dest="ensemble", action="store_false", help="the base run only")
-    _common(fe)
+    _common(fe, ROOT_HELP)
 
     claims = sub.add_parser(
         "claims",
@@ -234,7 +204,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     claims.add_argument("--figure", type=int, required=True, help="paper figure number")
     claims.add_argument("--reading", help="show this reading (default: the figure's best)")
-    claims.add_argument("--root", type=Path, help="project folder")
+    _common(claims, "project folder", outputs=False)
 
     laws = sub.add_parser(
         "laws",
@@ -257,7 +227,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="a netCDF dataset the pipeline or this command wrote (a path not found here is looked up in "
         "the project folder, so results/... works from anywhere)",
     )
-    show.add_argument("--root", type=Path, help="project folder for a results/... path")
+    _common(show, "project folder for a results/... path", outputs=False)
     return parser
 
 
@@ -265,11 +235,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _fmt(value, unit: str = "") -> str:
-    if value is None:
-        return "n/a"
-    if isinstance(value, str):
-        return value
-    if value != value:
+    if value is None or value != value:
         return "n/a"
     return f"{value:.4g}" + (f" {unit}" if unit else "")
 
@@ -280,11 +246,10 @@ def _metrics(ds) -> dict:
 
 def baseline_metrics(onedof: Onedof, reading: str, root: Path) -> tuple[dict, str]:
     """The baseline's metrics in ``reading``: from the build when its dataset exists, else computed."""
-    from .catalogue import onedof_dataset
     from .io.netcdf import read_dataset
 
     base = onedof.baseline
-    path = root / onedof_dataset(base.scene, reading, base.method)
+    path = root / paths.onedof_dataset(base.scene, reading, base.method)
     if path.is_file():
         return _metrics(read_dataset(path)), str(path.relative_to(root))
     from .studies.onedof import scene_run_dataset
@@ -296,11 +261,10 @@ def baseline_metrics(onedof: Onedof, reading: str, root: Path) -> tuple[dict, st
 def paper_values(onedof: Onedof, root: Path, scene: str | None = None) -> dict[str, list[tuple[float, str]]]:
     """The paper's numbers for a scene (default: the baseline's): every ``value`` claim on its dataset, so
     ``--scene fig06`` is compared with Fig. 6's numbers, not Fig. 2's."""
-    from .catalogue import onedof_dataset
     from .claims.load import load_claims
 
     base = onedof.baseline
-    target = onedof_dataset(scene or base.scene, "{reading}", base.method)
+    target = paths.onedof_dataset(scene or base.scene, "{reading}", base.method)
     # read (and check) only the files with a claim on the baseline's dataset: the run waits for no others
     files = [p for p in sorted((root / "config" / "claims").glob("*.yaml")) if target in p.read_text()]
     out: dict[str, list[tuple[float, str]]] = {}
@@ -310,49 +274,29 @@ def paper_values(onedof: Onedof, root: Path, scene: str | None = None) -> dict[s
     return out
 
 
-def _outputs(args, root: Path, config: dict, keys=("output", "plot", "json", "csv")) -> None:
-    """Every file the command will write, checked before any work (api.check_output)."""
-    from . import api
-
-    seen = set()
-    for key in keys:
-        value = getattr(args, key, None)
-        if value is None or str(value) == "-":
-            continue
-        path = Path(value).expanduser().resolve()
-        if path in seen:
-            raise UsageError(f"{OPTION_OF_KEY[key]}: {value} is also another option's output")
-        seen.add(path)
-        api.check_output(value, root, force=args.force, key=key, config=config)
-    to_stdout = [k for k in ("json", "csv") if getattr(args, k, None) == "-"]
-    if len(to_stdout) > 1:
-        raise UsageError("--json/--csv: only one of them can go to stdout; give the other a FILE")
-
-
 def _number(value):
     """A JSON/CSV number: None for NaN or a missing value."""
     return None if value is None or value != value else float(value)
 
 
-def run_report(ds, base: dict, where: str, paper: dict) -> dict:
+def run_report(ds, reading: str, base: dict, where: str, paper: dict) -> dict:
     """The run's outcome and metrics as data: what --json writes and the table prints."""
     from .analysis.metrics import metric_attrs
 
     mine = _metrics(ds)
-    outcome = ds["outcome"] if "outcome" in ds else None
+    message = ds.attrs.get("message", "")
+    outcome, _, mechanism = message.partition(": ")  # the outcome's flag name (spaced) and its mechanism
     return {
         "title": ds.attrs.get("title", "").strip(),
         "scene": ds.attrs.get("scene_name", ""),
         "description": ds.attrs.get("scene_description", ""),
-        "reading": ds.attrs.get("interpretation_reading", ""),
+        "reading": reading,
         "method": ds.attrs.get("method_name", ""),
         "status": ds.attrs.get("status", ""),
         "success": int(ds.attrs.get("success", 0)),
-        "message": ds.attrs.get("message", ""),
-        "outcome": ds.attrs.get("message", "").split(":", 1)[0]
-        if outcome is None
-        else _outcome_name(outcome),
-        "mechanism": "" if outcome is None else outcome.attrs.get("mechanism", ""),
+        "message": message,
+        "outcome": outcome.replace(" ", "_"),
+        "mechanism": mechanism,
         "solver": ds.attrs.get("solver_message", ""),
         "baseline_source": where,
         "metrics": {
@@ -368,20 +312,7 @@ def run_report(ds, base: dict, where: str, paper: dict) -> dict:
     }
 
 
-def _outcome_name(var) -> str:
-    meanings = str(var.attrs.get("flag_meanings", "")).split()
-    code = int(var.values)
-    return meanings[code] if 0 <= code < len(meanings) else str(code)
-
-
-def _write_text(target: str, text: str) -> None:
-    if target == "-":
-        sys.stdout.write(text)
-    else:
-        Path(target).write_text(text)
-
-
-def _write_csv(report: dict, target: str) -> None:
+def _csv_text(report: dict) -> str:
     import csv
     import io
 
@@ -389,18 +320,11 @@ def _write_csv(report: dict, target: str) -> None:
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(["metric", "value", "units", "baseline", "paper", "claims", "definition"])
     for name, m in report["metrics"].items():
-        writer.writerow(
-            [
-                name,
-                "" if m["value"] is None else repr(m["value"]),
-                m["units"],
-                "" if m["baseline"] is None else repr(m["baseline"]),
-                ";".join(repr(p["value"]) for p in m["paper"]),
-                ";".join(p["claim"] for p in m["paper"]),
-                m["definition"],
-            ]
-        )
-    _write_text(target, buf.getvalue())
+        value, base = ("" if x is None else repr(x) for x in (m["value"], m["baseline"]))
+        paper = ";".join(repr(p["value"]) for p in m["paper"])
+        claims = ";".join(p["claim"] for p in m["paper"])
+        writer.writerow([name, value, m["units"], base, paper, claims, m["definition"]])
+    return buf.getvalue()
 
 
 def print_run(report: dict, out=None) -> None:
@@ -428,18 +352,49 @@ def print_run(report: dict, out=None) -> None:
         print(f"    {name}: {text}", file=out)
 
 
+def _project(args, keys=("output", "plot", "json", "csv")) -> tuple[Path, dict]:
+    """(project folder, config) of a command that writes files, every file it will write checked before any
+    work (``api.check_output``)."""
+    from . import api
+
+    root = api.project_root(args.root)
+    config = api.load_project_config(args.configfile, root)
+    seen = set()
+    for key in keys:
+        value = getattr(args, key, None)
+        if value is None or str(value) == "-":
+            continue
+        path = Path(value).expanduser().resolve()
+        if path in seen:
+            raise UsageError(f"{_option(key)}: {value} is also another option's output")
+        seen.add(path)
+        api.check_output(value, force=args.force, key=key, config=config)
+    if [getattr(args, k, None) for k in ("json", "csv")] == ["-", "-"]:
+        raise UsageError("--json/--csv: only one of them can go to stdout; give the other a FILE")
+    return root, config
+
+
+def _wrote(target, out) -> None:
+    if target and str(target) != "-":
+        print(f"wrote {target}", file=out)
+
+
+def _save(fig, path: Path, dpi: int, out) -> None:
+    """Save a figure drawn with matplotlib's file backend, then close it."""
+    import matplotlib.pyplot as plt
+
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    _wrote(path, out)
+
+
 def cmd_run(args) -> int:
     from . import api
 
     started = time.perf_counter()
-    params = {k: getattr(args, k) for k in PARAMS if getattr(args, k) is not None}
-    if args.units is not None:
-        params["units"] = args.units
-    run = {k: getattr(args, k) for k in RUN_LENGTHS if getattr(args, k) is not None}
+    values = {k: getattr(args, k) for k in [*run_options(), "units"] if getattr(args, k) is not None}
     law = _law(args.law)
-    root = api.project_root(args.root)
-    config = api.load_project_config(args.configfile, root)
-    _outputs(args, root, config)
+    root, config = _project(args)
     ds = api.simulate(
         args.scene,
         reading=args.reading,
@@ -450,43 +405,32 @@ def cmd_run(args) -> int:
         force=args.force,
         root=root,
         config=config,
-        **run,
-        **params,
+        **values,
     )
     onedof = api.onedof_project(config).onedof
     reading = args.reading or onedof.baseline.reading
     base, where = baseline_metrics(onedof, reading, root)
-    paper = paper_values(onedof, root, args.scene)
-    report = run_report(ds, base, where, paper)
-    report["reading"] = reading
-    quiet = "-" in (args.json, args.csv)  # stdout is the data: the text goes to stderr
-    text_out = sys.stderr if quiet else sys.stdout
+    report = run_report(ds, reading, base, where, paper_values(onedof, root, args.scene))
+    # with --json or --csv on stdout, stdout is the data: the text goes to stderr
+    text_out = sys.stderr if "-" in (args.json, args.csv) else sys.stdout
     print_run(report, text_out)
     if args.output:
         report["output"] = str(args.output)
-        print(f"wrote {args.output}", file=text_out)
+    _wrote(args.output, text_out)
     if args.plot:
-        _plot_onedof(ds, onedof, args, reading, text_out)
-    if args.json:
-        import json
-
-        _write_text(args.json, json.dumps(report, indent=1) + "\n")
-        if args.json != "-":
-            print(f"wrote {args.json}", file=text_out)
-    if args.csv:
-        _write_csv(report, args.csv)
-        if args.csv != "-":
-            print(f"wrote {args.csv}", file=text_out)
+        _plot_onedof(ds, onedof, args.plot, reading, text_out)
+    for target, text in ((args.json, lambda r: json.dumps(r, indent=1) + "\n"), (args.csv, _csv_text)):
+        if target:
+            (sys.stdout.write if target == "-" else Path(target).write_text)(text(report))
+            _wrote(target, text_out)
     print(f"({time.perf_counter() - started:.1f} s)", file=text_out)
     return 0 if report["status"] != "failed" else 1  # a divergence is an answer; a failure is not
 
 
-def _plot_onedof(ds, onedof: Onedof, args, reading: str, out=None) -> None:
+def _plot_onedof(ds, onedof: Onedof, path: Path, reading: str, out) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     from .presentation.plots import onedof_figure
     from .schema import Figure
 
@@ -498,10 +442,7 @@ def _plot_onedof(ds, onedof: Onedof, args, reading: str, out=None) -> None:
     friction = f", friction law {law}" if law else ""
     title = f"{ds.attrs.get('scene_figure', '')} {scene}: method {method}{friction}".strip()
     spec = Figure(title=title, scene=scene, readings=[reading], methods=[method], **drawn_as)
-    fig = onedof_figure({method: ds}, spec, reading=reading)
-    fig.savefig(args.plot, dpi=110)
-    plt.close(fig)
-    print(f"wrote {args.plot}", file=out or sys.stdout)
+    _save(onedof_figure({method: ds}, spec, reading=reading), path, 110, out)
 
 
 # -- fe --------------------------------------------------------------------------------------------------
@@ -510,9 +451,9 @@ def _plot_onedof(ds, onedof: Onedof, args, reading: str, out=None) -> None:
 def cmd_fe(args) -> int:
     from . import api
     from .io.progress import step_callback
+    from .presentation.show import summary_text
 
     started = time.perf_counter()
-
     announced = []
 
     def progress(label):
@@ -522,9 +463,7 @@ def cmd_fe(args) -> int:
             print(note, file=sys.stderr, flush=True)
         return step_callback(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
 
-    root = api.project_root(args.root)
-    config = api.load_project_config(args.configfile, root)
-    _outputs(args, root, config, keys=("output", "plot"))
+    root, _ = _project(args, keys=("output", "plot"))
     ds = api.simulate_fe(
         args.scene,
         speed=args.speed,
@@ -539,17 +478,15 @@ def cmd_fe(args) -> int:
         configfiles=args.configfile,
         root=root,
     )
-    summary(ds)
-    if args.output:
-        print(f"wrote {args.output}")
+    print(summary_text(ds))
+    _wrote(args.output, sys.stdout)
     if args.plot:
         import matplotlib
 
         matplotlib.use("Agg")
         from .presentation.fe_plots import fe_scene_figure
 
-        fe_scene_figure(ds, None, title=ds.attrs.get("title", "")).savefig(args.plot, dpi=100)
-        print(f"wrote {args.plot}")
+        _save(fe_scene_figure(ds, None, title=ds.attrs.get("title", "")), args.plot, 100, sys.stdout)
     print(f"({time.perf_counter() - started:.1f} s)")
     return 0
 
@@ -582,7 +519,7 @@ def law_kinds() -> list[dict]:
             f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING
         }
         params = []
-        for name in sorted(_LAW_KEYS[kind], key=lambda k: list(LAW_PARAMETERS).index(k)):
+        for name in sorted(_LAW_KEYS[kind], key=list(LAW_PARAMETERS).index):
             units, text = LAW_PARAMETERS[name]
             if name in defaults:
                 default = defaults[name]
@@ -605,8 +542,6 @@ def law_kinds() -> list[dict]:
 def cmd_laws(args) -> int:
     kinds = law_kinds()
     if args.json:
-        import json
-
         print(json.dumps(kinds, indent=1))
         return 0
     print(
@@ -681,13 +616,6 @@ def cmd_claims(args) -> int:
 
 
 # -- show ------------------------------------------------------------------------------------------------
-
-
-def summary(ds, checksum: str = "") -> None:
-    """Print the dataset's summary (the text the replication page previews it with)."""
-    from .presentation.show import summary_text
-
-    print(summary_text(ds, checksum))
 
 
 def cmd_show(args) -> int:

@@ -72,7 +72,7 @@ def test_anything_under_the_results_folder_is_refused_from_the_cli_and_the_api(
     with pytest.raises(ConfigError, match=r"output: .* is inside the pipeline's results folder"):
         stickslip.simulate(output=project / "results" / "sub" / "x.nc", root=project)
     with pytest.raises(ConfigError, match=r"plot: .* is inside the pipeline's results folder"):
-        api.check_output(project / "results" / "x.png", project, key="plot")
+        api.check_output(project / "results" / "x.png", key="plot")
 
 
 @pytest.mark.parametrize(
