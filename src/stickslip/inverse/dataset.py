@@ -154,12 +154,9 @@ def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None
     p, free, loose = r.problem, tuple(r.problem.free), _loose_rows(r)
     if not loose:
         return
-    u0 = np.log10(v)
     lo, hi = p.log_bounds
-    pair = None
-    if p.nonnegative_plateau and "plateau_speed" in free:
-        pair = (free.index("sigma"), free.index("plateau_speed"))
-    ext = 10.0 ** fibre_extent(r.structure, free, u0, np.array(list(loose.values())), lo, hi, pair)
+    rows = np.array(list(loose.values()))
+    ext = 10.0 ** fibre_extent(r.structure, free, np.log10(v), rows, lo, hi, p.plateau_pair)
     for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
         if n in free:
             i = free.index(n)
@@ -504,7 +501,7 @@ class FamilyFit:
         return {
             "likelihood_profile_offset": (("quantity", "profile_point"), t),
             "likelihood_profile_chi_square": (("quantity", "profile_point"), chi2),
-            "likelihood_profile_fixed": ("quantity", [n in self.profile.fixed for n in profiles]),
+            "likelihood_profile_fixed": ("quantity", np.zeros(len(profiles))),  # none: the structure counts
             "direction_vector": (
                 ("direction", "parameter"),
                 np.reshape([pr.direction for pr in directions], (len(directions), len(free))),

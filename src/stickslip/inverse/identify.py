@@ -115,8 +115,8 @@ def bound_step(problem: Problem, u0: np.ndarray, d: np.ndarray, sign: float) -> 
         t_hi = np.where(step > 0, (hi - u0) / step, np.inf)
         t_lo = np.where(step < 0, (lo - u0) / step, np.inf)
     t = float(max(0.0, min(np.min(t_hi), np.min(t_lo))))
-    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
-        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
+    if problem.plateau_pair is not None:
+        i, j = problem.plateau_pair
         slope, value = step[i] + step[j], u0[i] + u0[j]
         if slope > 0:
             t = min(t, max(0.0, -value / slope))
@@ -236,6 +236,18 @@ def identify(
     return Identification(tuple(profiles), float(threshold), len(p.free))
 
 
+def shift_constraints(problem: Problem, d: np.ndarray, u) -> tuple[np.ndarray, np.ndarray]:
+    """(A, b) with A s <= b for a shift s along the columns of ``d`` keeping u + d s within the bounds: the
+    box and, with the plateau constraint, sigma v_p <= 1 (both linear in log10)."""
+    lo, hi = problem.log_bounds
+    a, b = [d, -d], [hi - u, u - lo]
+    if problem.plateau_pair is not None:
+        i, j = problem.plateau_pair
+        a.append((d[i] + d[j])[None, :])
+        b.append(np.array([-(u[i] + u[j])]))
+    return np.vstack(a), np.concatenate(b)
+
+
 def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.ndarray) -> np.ndarray:
     """(lower, upper) log10 change of each row . u over the flat set (LP over the ridge directions).
 
@@ -246,15 +258,8 @@ def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.n
     ridges = ident.ridge_directions
     if not ridges:
         return np.zeros((len(rows), 2))
-    u0 = np.log10(np.asarray(free_values, dtype=float))
     d = np.column_stack([r.direction for r in ridges])
-    lo, hi = problem.log_bounds
-    a_ub, b_ub = [d, -d], [hi - u0, u0 - lo]
-    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
-        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
-        a_ub.append((d[i] + d[j])[None, :])
-        b_ub.append(np.array([-(u0[i] + u0[j])]))
-    a_ub, b_ub = np.vstack(a_ub), np.concatenate(b_ub)
+    a_ub, b_ub = shift_constraints(problem, d, np.log10(np.asarray(free_values, dtype=float)))
     box = [(None, None) if r.structural else (r.t_lower, r.t_upper) for r in ridges]
     out = np.zeros((len(rows), 2))
     for n, row in enumerate(rows):

@@ -126,6 +126,13 @@ class Problem:
         hi = np.log10([self.bounds[p][1] for p in self.free])
         return lo, hi
 
+    @property
+    def plateau_pair(self) -> tuple[int, int] | None:
+        """Indices in ``free`` of sigma and v_p where the plateau constraint sigma v_p <= 1 applies."""
+        if self.nonnegative_plateau and "plateau_speed" in self.free:
+            return self.free.index("sigma"), self.free.index("plateau_speed")
+        return None
+
     def values(self, free_values) -> dict:
         """Free parameter values as a mapping."""
         return dict(zip(self.free, (float(v) for v in free_values)))
