@@ -51,7 +51,6 @@ class ConflictSearch:
     max_size: int
     numbers: int
     subsets_fitted: int
-    evaluations: int
     witness: np.ndarray | None
     """A free-parameter set putting every number of the figure within precision (the one of smallest
     chi-square seen), or None: when found, the figure is consistent after all."""
@@ -126,7 +125,6 @@ def minimal_conflicts(
     lo, hi = p.log_bounds
     inner = lo + 1e-6 * (hi - lo), hi - 1e-6 * (hi - lo)
     witnesses = _Witnesses(n)
-    n0 = forward.evaluations
     for s in seeds:
         s = np.asarray(s, dtype=float)
         if p.in_bounds(s):
@@ -169,6 +167,5 @@ def minimal_conflicts(
         max_size=int(max_size),
         numbers=n,
         subsets_fitted=fitted,
-        evaluations=forward.evaluations - n0,
         witness=witnesses.full(),
     )

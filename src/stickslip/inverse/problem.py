@@ -346,10 +346,3 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
         },
         nonnegative_plateau="nonnegative_plateau_friction" in (inv.constraints or {}),
     )
-
-
-def with_observations(problem: Problem, observations) -> Problem:
-    """The same problem fitted to other numbers (recovery checks, leave-one-out)."""
-    from dataclasses import replace
-
-    return replace(problem, observations=tuple(observations))
