@@ -126,12 +126,25 @@ def analyse(r: FamilyFit) -> _Analysis:
             if q in p.free:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
-    # no quantity the equations leave free is a point: its range covers at least the fibre of the fit
-    _fibre_ranges(r, v, lower, upper, c_lo, c_hi)
-    # no quantity spanning more than a decade is called identifiable, and none the equations leave free
-    ridge |= _wider_than_a_decade(lower, upper)
-    c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
-    ridge, c_ridge = _structural_ridges(r, ridge, c_ridge)
+    # no quantity the equations leave free (exact, so the same on every CPU) is a point: its range covers at
+    # least its extent over the fit's fibre (where no profile traced it, as in the joint problem, the
+    # straight-line ridges see only the fibre's straight part)
+    loose = _loose_rows(r)
+    if loose:
+        lo, hi = p.log_bounds
+        rows = np.array(list(loose.values()))
+        ext = 10.0 ** fibre_extent(r.structure, tuple(p.free), np.log10(v), rows, lo, hi, p.plateau_pair)
+        for n, (e_lo, e_hi) in zip(loose, ext):
+            if n in p.free:
+                i = p.free.index(n)
+                lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
+            if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
+                c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
+    # nor is a quantity spanning more than a decade
+    ridge = np.array(
+        [bool(f) or q in loose for q, f in zip(p.free, ridge | _wider_than_a_decade(lower, upper))]
+    )
+    c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) or n in loose for n in c_ridge}
     dims, note = structural_count(r)
     return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge, note)
 
@@ -145,32 +158,6 @@ def structural_count(r: FamilyFit) -> tuple[float, str]:
     if m < s:
         return float(m), f"at most {m} of the {int(s)} structural dimensions: {m} reported numbers"
     return s, ""
-
-
-def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None:
-    """Widen (in place) the range of every free parameter and combination the equations leave free to its
-    extent over the fit's fibre (``structure.fibre_extent``): where no profile traced it (the joint problem,
-    a figure the settings do not profile), the straight-line ridges see only the fibre's straight part."""
-    p, free, loose = r.problem, tuple(r.problem.free), _loose_rows(r)
-    if not loose:
-        return
-    lo, hi = p.log_bounds
-    rows = np.array(list(loose.values()))
-    ext = 10.0 ** fibre_extent(r.structure, free, np.log10(v), rows, lo, hi, p.plateau_pair)
-    for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
-        if n in free:
-            i = free.index(n)
-            lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
-        if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
-            c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
-
-
-def _structural_ridges(r: FamilyFit, ridge, c_ridge: dict):
-    """Parameters and combinations the equations leave free (``identifiable_in_structure``) are ranges,
-    whatever the profiles found: exact, so the same on every CPU."""
-    loose = _loose_rows(r)
-    ridge = np.array([bool(flag) or q in loose for q, flag in zip(r.problem.free, ridge)])
-    return ridge, {n: flag or n in loose for n, flag in c_ridge.items()}
 
 
 def _loose_rows(r: FamilyFit) -> dict:

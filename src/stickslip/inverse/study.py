@@ -198,8 +198,8 @@ def conflict_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
                     **base,
                     "size": len(c.members),
                     "claims": " + ".join(p.observations[i].claim for i in c.members),
-                    "worst_residual": round(c.worst, 3) if math.isfinite(c.worst) else "inf",
-                    "residual_noise": round(noise, 3) if math.isfinite(noise) else "",
+                    "worst_residual": _rounded(c.worst, "inf"),
+                    "residual_noise": _rounded(noise),
                     "above_noise": int(c.worst - 1.0 > noise) if math.isfinite(noise) else "",
                 }
             )
@@ -220,9 +220,7 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
-            "structural_dimensions": int(r.structural_dimensions)
-            if np.isfinite(r.structural_dimensions)
-            else "",
+            "structural_dimensions": int(s) if np.isfinite(s := r.structural_dimensions) else "",
             "phases_visited": " ".join(sorted({ph for run in r.phases for ph in run})),
             "dimensions_note": a.note,
             "profiles_bounded": profiles_bounded(r, a),
@@ -244,11 +242,11 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
         search = r.conflicts
         row.update(
-            worst_residual=round(fit.worst, 3) if math.isfinite(fit.worst) else "inf",
+            worst_residual=_rounded(fit.worst, "inf"),
             worst_claim=p.observations[k].claim,
-            chi_square=round(fit.chi2, 3) if math.isfinite(fit.chi2) else "inf",
+            chi_square=_rounded(fit.chi2, "inf"),
             verdict="consistent" if fit.consistent else "inconsistent",
-            residual_noise=round(r.residual_noise, 3) if math.isfinite(r.residual_noise) else "",
+            residual_noise=_rounded(r.residual_noise),
             verdict_above_noise=int(abs(fit.worst - 1.0) > r.residual_noise)
             if math.isfinite(r.residual_noise) and math.isfinite(fit.worst)
             else "",
@@ -257,6 +255,11 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
         )
         rows.append(row)
     return rows
+
+
+def _rounded(x: float, missing=""):
+    """x to 3 decimals as a table shows it; ``missing`` where it is not finite."""
+    return round(x, 3) if math.isfinite(x) else missing
 
 
 def profiles_bounded(r: FamilyFit, a) -> str:
