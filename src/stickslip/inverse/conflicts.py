@@ -85,8 +85,6 @@ class _Witnesses:
         return np.where(np.isfinite(a), a, np.inf)
 
     def satisfies(self, subset) -> bool:
-        if not len(self.r):
-            return False
         return bool(np.any(np.all(self._abs(subset) <= 1.0, axis=1)))
 
     def closest(self, subset) -> float | None:
@@ -97,15 +95,14 @@ class _Witnesses:
 
     def full(self) -> np.ndarray | None:
         """The set of smallest chi-square among those putting every number within precision."""
-        ok = np.all(self._abs(range(self.r.shape[1])) <= 1.0, axis=1) if len(self.r) else np.zeros(0, bool)
+        ok = np.all(self._abs(range(self.r.shape[1])) <= 1.0, axis=1)
         if not ok.any():
             return None
         chi2 = np.where(ok, np.sum(np.nan_to_num(self.r, nan=np.inf) ** 2, axis=1), np.inf)
         return 10.0 ** self.u[int(np.argmin(chi2))]
 
     def start(self, subset) -> np.ndarray | None:
-        if not len(self.r):
-            return None
+        """The set of smallest chi-square on the subset (None: no set produces all its numbers)."""
         cost = np.sum(self._abs(subset) ** 2, axis=1)
         return self.u[int(np.argmin(cost))] if np.isfinite(cost).any() else None
 

@@ -1,7 +1,7 @@
 """An identification problem: runs of the forward model, the reported numbers they must reproduce, the free
 parameters with their bounds, and the directions of parameter space the numbers can identify at all.
 
-The reported numbers, their tolerances and reasons come from the claims table by claim id; the stated
+The reported numbers and their tolerances come from the claims table by claim id; the stated
 parameters from the pipeline config (onedof.defaults and the figure's scene or sweep). Nothing is copied.
 
 Identifiability. In the units-as-given reading the equation of motion divided by M is
@@ -32,24 +32,8 @@ from ..schema import InverseJob, InverseOnedof, given
 
 #: Free parameters the study may vary, in a fixed order (BeltParams field names).
 PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")
-SYMBOLS = {
-    "sigma": "sigma",
-    "damping": "C",
-    "mu_s": "mu_s",
-    "normal_force": "N",
-    "stiffness": "K",
-    "mass": "M",
-    "plateau_speed": "v_p",
-}
-UNITS = {
-    "sigma": "s mm-1",
-    "damping": "N s mm-1",
-    "mu_s": "1",
-    "normal_force": "N",
-    "stiffness": "N mm-1",
-    "mass": "kg",
-    "plateau_speed": "mm s-1",
-}
+SYMBOLS = dict(zip(PARAMS, ("sigma", "C", "mu_s", "N", "K", "M", "v_p")))
+UNITS = dict(zip(PARAMS, ("s mm-1", "N s mm-1", "1", "N", "N mm-1", "kg", "mm s-1")))
 
 #: log10 of the combinations a run depends on, as rows over PARAMS.
 COMBINATIONS = {
@@ -88,9 +72,7 @@ class Observation:
     value: float
     sd: float
     unit: str
-    reason: str
     figure: str
-    quote: str = ""
 
 
 @dataclass(frozen=True)
@@ -187,15 +169,14 @@ class Problem:
         """The set giving the same motion as ``free_values`` that is closest to the stated set."""
         return self.from_coordinates(self.to_coordinates(free_values))
 
-    def combinations(self, free_values, run: RunDef | None = None) -> dict:
-        """K/M, C/M, mu_s N/M, sigma (and v_p) of a parameter set, for the first run or the one given."""
-        p = self.run_params(free_values, run or self.runs[0]).as_dict()
-        out = {}
-        for name, combo in COMBINATIONS.items():
-            if name == "v_p" and "plateau_speed" not in self.free:
-                continue
-            out[name] = float(np.prod([p[k] ** e for k, e in combo.items()]))
-        return out
+    def combinations(self, free_values) -> dict:
+        """K/M, C/M, mu_s N/M, sigma (and v_p, where free) of a parameter set in the first run."""
+        p = self.run_params(free_values, self.runs[0]).as_dict()
+        return {
+            name: float(np.prod([p[k] ** e for k, e in combo.items()]))
+            for name, combo in COMBINATIONS.items()
+            if name != "v_p" or "plateau_speed" in self.free
+        }
 
 
 # -- building problems from the config and the claims table ----------------------------------------------
@@ -213,7 +194,7 @@ def by_id(claims) -> dict[str, Claim]:
     return {row.id: row for row in claims}
 
 
-def _tolerance_sd(row: Claim) -> tuple[float, str]:
+def _tolerance_sd(row: Claim) -> float:
     """The reading precision of a value row as a standard deviation: its relative band if it has one (a
     value row always has a tolerance with rel or abs: stickslip.claims.rows)."""
     tol = row.tolerance
@@ -221,7 +202,7 @@ def _tolerance_sd(row: Claim) -> tuple[float, str]:
     sd = tol.rel * abs(row.value) if tol.rel is not None else tol.abs
     if not (math.isfinite(sd) and sd > 0):  # rel or abs 0 is a valid band, but no spread to fit with
         raise ParameterError(f"{where}: must give a positive spread, got {sd!r}")
-    return sd, tol.reason
+    return sd
 
 
 #: a claim names a per-reading dataset with this placeholder for the reading
@@ -292,7 +273,6 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
         stated["plateau_speed"] = math.inf
     runs: list[RunDef] = []
     observations = []
-    fixed_everywhere: set[str] | None = None
     for fig in figures:
         figure = inv.figures[fig]
         one_scene = name != "joint" and figure.scene is not None
@@ -307,26 +287,24 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
             if run_name not in names:
                 runs.append(RunDef(run_name, overrides))
                 names.append(run_name)
-            sd, reason = _tolerance_sd(row)
             observations.append(
                 Observation(
                     claim=cid,
                     run=names.index(run_name),
                     metric=metric,
                     value=row.value,
-                    sd=sd,
+                    sd=_tolerance_sd(row),
                     unit=row.unit,  # a value row always has one (stickslip.claims.rows)
-                    reason=reason,
                     figure=fig,
-                    quote=row.quote,
                 )
             )
         if one_scene:
             stated.update(given(onedof.scenes[figure.scene].params))
-    for run in runs:
-        keys = {k for k in run.overrides if k in fam.free}
-        fixed_everywhere = keys if fixed_everywhere is None else fixed_everywhere & keys
-    free = tuple(p for p in PARAMS if p in fam.free and p not in (fixed_everywhere or set()))
+    fixed = [
+        set(run.overrides) & set(fam.free) for run in runs
+    ]  # a sweep's parameter, where every run sets it
+    fixed_everywhere = set.intersection(*fixed) if fixed else set()
+    free = tuple(p for p in PARAMS if p in fam.free and p not in fixed_everywhere)
     defaults = onedof.defaults
     return Problem(
         name=name,
