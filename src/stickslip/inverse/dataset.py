@@ -25,6 +25,7 @@ from .identify import (
     flat_extent,
     on_ridge,
     parameter_ranges,
+    quantity_rows,
 )
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem
 from .profile import PL_THRESHOLD, ProfileIdentification, quantity_ranges
@@ -110,9 +111,8 @@ def analyse(r: FamilyFit) -> _Analysis:
     c_ridge = {n: bool(on_ridge(c_lo[n], c_hi[n])) for n in c_lo}
     opens = {}
     if pid is not None:
-        eye = {q: row for q, row in zip(p.free, np.eye(len(p.free)))}
         combo_rows = {n: rows[n] for n in c_lo if len(COMBINATIONS[n]) > 1}
-        ranges = quantity_ranges(p, v, pid, {**eye, **combo_rows})
+        ranges = quantity_ranges(p, v, pid, {**dict(zip(p.free, np.eye(len(p.free)))), **combo_rows})
         for i, q in enumerate(p.free):
             lower[i], upper[i] = min(lower[i], ranges[q].lower), max(upper[i], ranges[q].upper)
             ridge[i] = ridge[i] or _unidentified(ranges[q])
@@ -163,10 +163,8 @@ def structural_count(r: FamilyFit) -> tuple[float, str]:
 def _loose_rows(r: FamilyFit) -> dict:
     """Name -> log10 row of each free parameter and combination the equations leave free (sigma: both)."""
     runs, free = r.structure or (), tuple(r.problem.free)
-    rows = {**dict(zip(free, np.eye(len(free)))), **combination_rows(r.problem)}
-    return {
-        n: row for n, row in rows.items() if runs and not identifiable_in_structure(runs, free, tuple(row))
-    }
+    rows = quantity_rows(r.problem).items()
+    return {n: row for n, row in rows if runs and not identifiable_in_structure(runs, free, tuple(row))}
 
 
 #: A quantity whose interval spans more than this ratio is never called identifiable.

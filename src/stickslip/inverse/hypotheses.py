@@ -43,15 +43,15 @@ def score(problem: Problem, residuals: np.ndarray) -> dict:
     """chi2, the numbers within precision and of the problem, the worst |residual| and its claim (the first
     number not produced, with chi2 and worst inf, where the set is infeasible)."""
     r = np.asarray(residuals, dtype=float)
-    n, claims = len(problem.observations), [o.claim for o in problem.observations]
-    if not np.all(np.isfinite(r)):
-        bad = int(np.argmax(~np.isfinite(r)))
-        reproduced = int(np.sum(np.abs(r[np.isfinite(r)]) <= 1.0))
-        return dict(chi2=np.inf, reproduced=reproduced, numbers=n, worst=np.inf, worst_claim=claims[bad])
-    k = int(np.argmax(np.abs(r)))
-    reproduced = int(np.sum(np.abs(r) <= 1.0))
+    finite = np.isfinite(r)
+    feasible = bool(finite.all())
+    k = int(np.argmax(np.abs(r))) if feasible else int(np.argmax(~finite))
     return dict(
-        chi2=float(r @ r), reproduced=reproduced, numbers=n, worst=float(abs(r[k])), worst_claim=claims[k]
+        chi2=float(r @ r) if feasible else np.inf,
+        reproduced=int(np.sum(np.abs(r[finite]) <= 1.0)),
+        numbers=len(problem.observations),
+        worst=float(abs(r[k])) if feasible else np.inf,
+        worst_claim=problem.observations[k].claim,
     )
 
 

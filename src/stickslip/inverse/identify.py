@@ -153,13 +153,7 @@ def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None
         _, _, vt = np.linalg.svd(basis.T, full_matrices=True)
         for v in vt[k:]:
             out.append((_signed(v), 0.0, True, False))
-    cols = []
-    for j in range(k):
-        e = basis[:, j] * JACOBIAN_STEP
-        cols.append(
-            (forward.residuals(10.0 ** (u0 + e)) - forward.residuals(10.0 ** (u0 - e))) / (2 * JACOBIAN_STEP)
-        )
-    jw = np.array(cols).T if cols else np.zeros((len(problem.observations), 0))
+    jw = jacobian_w(forward, basis, u0)
     if not np.all(np.isfinite(jw)):  # a neighbour infeasible: the coordinate axes themselves are profiled
         out += [(_signed(basis[:, j]), np.nan, False, False) for j in range(k)]
         return out
@@ -169,6 +163,15 @@ def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None
     for j in np.argsort(s, kind="stable"):  # weakest first
         out.append((_signed(basis @ vt[j]), float(s[j]), False, bool(j >= m)))
     return out
+
+
+def jacobian_w(forward: Forward, basis: np.ndarray, u0: np.ndarray) -> np.ndarray:
+    """d residual / d w at u0 (w: coordinates along the columns of ``basis``), central differences."""
+    cols = [
+        (forward.residuals(10.0 ** (u0 + e)) - forward.residuals(10.0 ** (u0 - e))) / (2 * JACOBIAN_STEP)
+        for e in basis.T * JACOBIAN_STEP
+    ]
+    return np.array(cols).T if cols else np.zeros((len(forward.problem.observations), 0))
 
 
 def _signed(v: np.ndarray) -> np.ndarray:
@@ -239,6 +242,12 @@ def combination_rows(problem: Problem) -> dict[str, np.ndarray]:
         for name, combo in COMBINATIONS.items()
         if any(p in problem.free for p in combo)
     }
+
+
+def quantity_rows(problem: Problem) -> dict[str, np.ndarray]:
+    """log10 exponents over the free parameters of each free parameter, then of each combination (a
+    one-parameter one, sigma, keeps its parameter's place)."""
+    return {**dict(zip(problem.free, np.eye(len(problem.free)))), **combination_rows(problem)}
 
 
 def on_ridge(lower, upper) -> np.ndarray:

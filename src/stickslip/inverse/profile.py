@@ -41,8 +41,8 @@ from scipy.stats import chi2 as chi2_distribution
 
 from .fit import _fun
 from .forward import Forward
-from .identify import JACOBIAN_STEP, shift_constraints
-from .problem import COMBINATIONS, Problem
+from .identify import JACOBIAN_STEP, jacobian_w, quantity_rows, shift_constraints
+from .problem import Problem
 from .structure import fibre_extent, identifiable_in_structure, runs_rank
 
 #: Confidence of the profile-likelihood intervals (pointwise, one parameter).
@@ -115,17 +115,12 @@ def structural_rows(problem: Problem, structure: tuple) -> dict[str, np.ndarray]
     quantity the equations leave free is a range whatever the data: profiling it would only trace the fibre,
     which ``structure.fibre_extent`` gives exactly, without a forward run."""
     free = tuple(problem.free)
-    eye = np.eye(len(free))
-    rows = {
-        q: eye[i] for i, q in enumerate(free) if identifiable_in_structure(structure, free, tuple(eye[i]))
+    return {
+        name: row
+        for name, row in quantity_rows(problem).items()
+        if (name in free or np.count_nonzero(row) > 1)
+        and identifiable_in_structure(structure, free, tuple(row))
     }
-    for name, combo in COMBINATIONS.items():
-        row = np.array([float(combo.get(q, 0)) for q in free])
-        if name in rows or np.count_nonzero(row) < 2:
-            continue
-        if identifiable_in_structure(structure, free, tuple(row)):
-            rows[name] = row
-    return rows
 
 
 class _Space:
@@ -143,11 +138,7 @@ class _Space:
         """d residual / d w at the best fit by central differences (step JACOBIAN_STEP), once."""
         if self.jacobian_w is None:
             self.r0 = forward.residuals(10.0**self.u0)
-            cols = []
-            for e in self.basis.T * JACOBIAN_STEP:
-                up, down = forward.residuals(10.0 ** (self.u0 + e)), forward.residuals(10.0 ** (self.u0 - e))
-                cols.append((up - down) / (2 * JACOBIAN_STEP))
-            self.jacobian_w = np.array(cols).T
+            self.jacobian_w = jacobian_w(forward, self.basis, self.u0)
         return self.jacobian_w
 
     def feasible(self, w) -> np.ndarray:

@@ -83,13 +83,11 @@ def fit_problem(
     # the straight-line analysis, once, at the fit the profiles end at
     ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
-    refit = loo and settings.loo == "refit"
-    if refit:
+    if loo and settings.loo == "refit":
         loo_r = loo_refit(forward, fit, settings.refit_nfev, seed)
     else:
         loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
-    noise = residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan
     return FamilyFit(
         problem=problem,
         fit=fit,
@@ -97,7 +95,7 @@ def fit_problem(
         loo=loo_r,
         loo_method=settings.loo if loo else "linear",
         stated_residuals=stated_r,
-        residual_noise=noise,
+        residual_noise=residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan,
         conflicts=search,
         identification=ident,
         profile=profile,
@@ -134,11 +132,8 @@ def lower_of(fit, other):
 
 def deepest_point(pid) -> np.ndarray:
     """The free parameter set of the lowest chi-square any profile reached."""
-    best = min(
-        ((float(np.min(pr.chi2)), pr.points[int(np.argmin(pr.chi2))]) for pr in pid.profiles.values()),
-        key=lambda item: item[0],
-    )
-    return np.asarray(best[1], dtype=float)
+    deepest = min(pid.profiles.values(), key=lambda pr: float(np.min(pr.chi2)))
+    return np.asarray(deepest.points[int(np.argmin(deepest.chi2))], dtype=float)
 
 
 def residual_noise(problem: Problem, free_values) -> float:
