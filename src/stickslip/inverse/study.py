@@ -51,19 +51,17 @@ def fit_problem(
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
             source = "conflict search"
     # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
-    # the straight-line analysis only, as does a figure the settings leave out (``profile``: the CI-size
-    # configuration profiles one figure, to test the path, not all eight)
+    # the straight-line analysis only, as does a figure the settings leave out (the CI-size configuration
+    # profiles one figure, to test the path); the profiles run over what the structure (derived from the
+    # equations of the phases the fit visits) leaves identifiable only
     chosen = settings.profile
-    wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
-    profiled = np.isfinite(fit.chi2) and wanted
-    # the structure the data can at most bound: derived from the equations of the phases the fit visits; the
-    # profiles run over what it leaves identifiable only
+    profiled = (
+        np.isfinite(fit.chi2) and problem.name != "joint" and (chosen is None or problem.name in chosen)
+    )
     structure = problem_structure(problem, fit.free_values) if np.isfinite(fit.chi2) else (np.nan, (), ())
     profile = profile_identify(forward, fit.free_values, structure[2]) if profiled else None
-    # every fit ends at its minimum: least squares to convergence (MINIMUM_NFEV_FACTOR) from the deepest point
-    # any profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled
-    # again, for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken
-    # from the deepest point they saw, and they judge a point to that resolution themselves)
+    # every fit ends at its minimum: restarted from the deepest point any profile reached (else from itself),
+    # and profiled again where that lowers it by more than REPROFILE_DROP
     restarts, nfev = 0, MINIMUM_NFEV_FACTOR * settings.max_nfev
     for round_ in range(MINIMUM_ROUNDS + 1 if profile is not None else 0):
         deeper = profile.floor < fit.chi2 - MINIMUM_TOL
