@@ -7,10 +7,10 @@ physical range (a near-exact ridge) from a pinned one; the data's own precision 
 
 1. *Directions* (unit vectors in log10 of the free parameters at the best fit u0): the structural null space
    (the complement of ``Problem.identifiable_basis``: the same motion) and the right-singular vectors of the
-   residual Jacobian in the identifiable coordinates (the optimiser's, else central differences with step
-   ``JACOBIAN_STEP``). Every direction is profiled, not only those of small singular value.
+   residual Jacobian in the identifiable coordinates (central differences with step ``JACOBIAN_STEP``).
+   Every direction is profiled, not only those of small singular value.
 2. *Profile* (``profile``): chi2(u0 + t d), stepping out on each side until chi-square exceeds the smallest
-   value seen by ``threshold`` (default 1: one reading precision on one number) or the bounds are reached
+   value seen by ``PROFILE_THRESHOLD`` (1: one reading precision on one number) or the bounds are reached
    (config ``inverse.bounds`` and the plateau constraint); an infeasible set ends it.
 3. *Ridge*: a direction within the threshold up to the bounds on both sides, or one no number constrains to
    first order (m numbers fix at most m directions). Identifiable dimensions: free parameters minus ridges.
@@ -139,20 +139,12 @@ def profile(forward: Forward, u0: np.ndarray, d: np.ndarray, chi2_0: float, slop
     return ends[0], ends[1], reached[0], reached[1], float(rise)
 
 
-def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None) -> list[tuple]:
+def directions(problem: Problem, forward: Forward, u0: np.ndarray) -> list[tuple]:
     """(unit direction, singular value, structural, unconstrained) for every direction of the free log10
-    space; unconstrained: beyond the rank the number of reported numbers allows.
-
-    ``jacobian``: d residual / d log10(free parameter) at a set with the same motion (e.g. the optimiser's);
-    without one (or with a non-finite one) it is taken by central differences here.
-    """
+    space; unconstrained: beyond the rank the number of reported numbers allows."""
     basis = problem.identifiable_basis()
-    n, k = basis.shape
-    out = []
-    if k < n:  # structural null space: the complement of the identifiable basis
-        _, _, vt = np.linalg.svd(basis.T, full_matrices=True)
-        for v in vt[k:]:
-            out.append((_signed(v), 0.0, True, False))
+    k = basis.shape[1]
+    out = [(_signed(v), 0.0, True, False) for v in problem.null_basis().T]  # the same motion
     jw = jacobian_w(forward, basis, u0)
     if not np.all(np.isfinite(jw)):  # a neighbour infeasible: the coordinate axes themselves are profiled
         out += [(_signed(basis[:, j]), np.nan, False, False) for j in range(k)]
@@ -179,16 +171,15 @@ def _signed(v: np.ndarray) -> np.ndarray:
     return v * np.sign(v[np.argmax(np.abs(v))])
 
 
-def identify(forward: Forward, free_values, jacobian=None) -> Identification:
-    """Profile chi-square along every direction at ``free_values`` (a best fit); see the module text.
-    ``jacobian``: the optimiser's, if at hand (see ``directions``)."""
+def identify(forward: Forward, free_values) -> Identification:
+    """Profile chi-square along every direction at ``free_values`` (a best fit); see the module text."""
     p = forward.problem
     u0 = np.log10(np.asarray(free_values, dtype=float))
     chi2_0 = _chi2(forward, u0)
     if not np.isfinite(chi2_0):
         raise ValueError(f"{p.name}/{p.family}: the best fit is infeasible; nothing to profile")
     profiles = []
-    for d, s, structural, unconstrained in directions(p, forward, u0, jacobian):
+    for d, s, structural, unconstrained in directions(p, forward, u0):
         ends = profile(forward, u0, d, chi2_0, s, structural or unconstrained)
         profiles.append(Profile(d, s, structural, unconstrained, *ends))
     return Identification(tuple(profiles), len(p.free))

@@ -156,6 +156,12 @@ class Problem:
         signs = np.sign(basis[np.argmax(np.abs(basis), axis=0), np.arange(rank)])
         return basis * signs
 
+    def null_basis(self) -> np.ndarray:
+        """Orthonormal basis (columns) of the free log10 directions that change no run: the same motion."""
+        basis = self.identifiable_basis()
+        n, k = basis.shape
+        return np.linalg.svd(basis.T, full_matrices=True)[2][k:].T if k < n else np.zeros((n, 0))
+
     def from_coordinates(self, w) -> np.ndarray:
         """Free parameter values of identifiable coordinates w: the set closest to the stated one."""
         basis = self.identifiable_basis()

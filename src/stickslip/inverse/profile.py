@@ -128,9 +128,7 @@ class _Space:
 
     def __init__(self, problem: Problem, u0: np.ndarray):
         self.p, self.u0 = problem, u0
-        self.basis = problem.identifiable_basis()
-        n, k = self.basis.shape
-        self.null = np.linalg.svd(self.basis.T, full_matrices=True)[2][k:].T if k < n else np.zeros((n, 0))
+        self.basis, self.null = problem.identifiable_basis(), problem.null_basis()
         self.lo, self.hi = problem.log_bounds
         self.jacobian_w, self.r0 = None, None
 

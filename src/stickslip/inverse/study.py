@@ -79,7 +79,7 @@ def fit_problem(
     if restarts:
         source += ", restarted at a deeper profile point" + (f" ({restarts} rounds)" if restarts > 1 else "")
     # the straight-line analysis, once, at the fit the profiles end at
-    ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
+    ident = identify(forward, fit.free_values) if np.isfinite(fit.chi2) else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
     if loo and settings.loo == "refit":
         loo_r = loo_refit(forward, fit, settings.refit_nfev, seed)
