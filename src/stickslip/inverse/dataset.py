@@ -383,6 +383,10 @@ class FamilyFit:
     def analysis(self) -> _Analysis:
         return analyse(self)
 
+    @property
+    def _likelihood_profiles(self) -> dict:
+        return self.profile.profiles if self.profile else {}
+
     def to_dataset(self) -> xr.Dataset:
         """This family's variables with their CF attributes: each ragged dimension (``RAGGED``) as long as
         this family has entries, the parameters padded to all (a fixed one: no value, not on a ridge)."""
@@ -415,7 +419,10 @@ class FamilyFit:
         }
         ds = xr.Dataset(
             {name: _variable(name, v) for name, v in data.items()},
-            coords={"parameter": list(p.free), "quantity": np.array(list(self._quantities()), dtype=object)},
+            coords={
+                "parameter": list(p.free),
+                "quantity": np.array(list(self._likelihood_profiles), dtype=object),
+            },
         )
         ds = ds.assign_coords({dim: np.arange(ds.sizes[dim]) for dim in RAGGED})
         ds = ds.reindex(parameter=list(PARAMS), fill_value=ABSENT | {"direction_vector": 0.0})
@@ -471,13 +478,9 @@ class FamilyFit:
             out |= {f"{kind}_{COMBINATION_KEYS[c]}": v for kind, v in values.items()}
         return out | {f"range_open_{COMBINATION_KEYS[c]}": _open_flag(a, c) for c in COMPOUND}
 
-    def _quantities(self) -> dict:
-        """Quantity -> its likelihood profile, of every quantity profiled."""
-        return self.profile.profiles if self.profile else {}
-
     def _profiles(self) -> dict:
         """The likelihood profiles (quantity x point) and the straight-line ones (direction)."""
-        profiles, free = self._quantities(), self.problem.free
+        profiles, free = self._likelihood_profiles, self.problem.free
         points = max((len(pr.t) for pr in profiles.values()), default=0)
         t, chi2 = np.full((len(profiles), points), np.nan), np.full((len(profiles), points), np.nan)
         for j, pr in enumerate(profiles.values()):

@@ -69,9 +69,9 @@ def _grid_posterior(log_grid: np.ndarray, chi2: np.ndarray) -> tuple[float, floa
     return mean, max(sd, half_step / np.sqrt(3.0))  # never narrower than the grid can resolve
 
 
-def single_changes(problem: Problem, points: int, hypothesis: dict | None = None) -> list[Score]:
+def single_changes(problem: Problem, points: int) -> list[Score]:
     """Scan each free parameter alone over its bounds, every other one at its stated value."""
-    forward = Forward(problem, dict(hypothesis or {}))
+    forward = Forward(problem)
     stated = problem.stated_free
     outside = dict(chi2=np.inf, reproduced=0, numbers=len(problem.observations), worst=np.inf, worst_claim="")
     out = []

@@ -216,7 +216,7 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             "structural_dimensions": int(s) if np.isfinite(s := r.structural_dimensions) else "",
             "phases_visited": " ".join(sorted({ph for run in r.phases for ph in run})),
             "dimensions_note": a.note,
-            "profiles_bounded": profiles_bounded(r, a),
+            "profiles_bounded": profiles_bounded(r),
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
@@ -255,11 +255,11 @@ def _rounded(x: float, missing=""):
     return round(x, 3) if math.isfinite(x) else missing
 
 
-def profiles_bounded(r: FamilyFit, a) -> str:
+def profiles_bounded(r: FamilyFit) -> str:
     """'k of n': of the n quantities profiled (those the structure fixes), how many the data bound, i.e. are
     reported as identifiable (profile above the threshold on both sides, at most a decade wide); '' where
     nothing was profiled. The structural count says what the equations allow, this what the numbers give."""
-    pid, free = r.profile, tuple(r.problem.free)
+    pid, free, a = r.profile, tuple(r.problem.free), r.analysis
     if pid is None or not pid.profiles:
         return ""
     bounded = sum(
