@@ -215,21 +215,12 @@ def _tolerance_sd(row: Claim) -> float:
 ANY_READING = "{reading}"
 
 
-def scene_dataset(scene: str) -> str:
-    """The dataset path a value claim names for a 1-DOF scene run by the exact solver (the catalogue's
-    ``onedof_dataset`` with the reading left as the claims' ``{reading}`` placeholder)."""
-    return catalogue.onedof_dataset(scene, ANY_READING, "exact")
-
-
-def sweep_dataset(sweep: str) -> str:
-    """The dataset path a value claim names for a 1-DOF sweep (the catalogue's ``sweep_dataset``)."""
-    return catalogue.sweep_dataset(sweep, ANY_READING)
-
-
 def runs_by_dataset(scenes: Iterable[str], sweeps: Iterable[str]) -> dict[str, tuple[str, str]]:
-    """Dataset path -> ("scene" | "sweep", its name), for the named 1-DOF scenes and sweeps."""
-    out = {scene_dataset(name): ("scene", name) for name in scenes}
-    out.update({sweep_dataset(name): ("sweep", name) for name in sweeps})
+    """Dataset path -> ("scene" | "sweep", its name), for the named 1-DOF scenes and sweeps: the paths a
+    value claim names (the catalogue's exact-solver ``onedof_dataset`` and ``sweep_dataset``, the reading
+    left as the claims' ``{reading}`` placeholder)."""
+    out = {catalogue.onedof_dataset(name, ANY_READING, "exact"): ("scene", name) for name in scenes}
+    out.update({catalogue.sweep_dataset(name, ANY_READING): ("sweep", name) for name in sweeps})
     return out
 
 
@@ -263,9 +254,10 @@ def claim_run(row: Claim, onedof: InverseOnedof) -> tuple[str, str, dict]:
         overrides = {sweep.parameter: value, **{k: f * value for k, f in (sweep.linked or {}).items()}}
         base = given(onedof.scenes[sweep.scene or onedof.baseline.scene].params)
         return f"{name}:{sweep.parameter}={value:g}", metric, {**base, **overrides}
+    scene, sweep = runs_by_dataset(["<scene>"], ["<sweep>"])
     raise ParameterError(
         f"{where}.dataset: {path!r} is neither the exact-solver dataset of a scene in onedof.scenes "
-        f"({scene_dataset('<scene>')}) nor a sweep in onedof.sweeps ({sweep_dataset('<sweep>')})"
+        f"({scene}) nor a sweep in onedof.sweeps ({sweep})"
     )
 
 
