@@ -351,7 +351,7 @@ ABSENT = {name: np.int8(0) for name in FLAGS} | {"conflict_size": 0.0}
 RAGGED = ("sample", "walker", "coordinate", "profile_point", "direction", "conflict")
 
 
-def _open_flag(a: _Analysis, name: str) -> int:
+def open_flag(a: _Analysis, name: str) -> int:
     """0 bounded, 1 open below, 2 open above, 3 both (see QuantityRange)."""
     lo, hi = a.opens.get(name, (False, False))
     return int(lo) + 2 * int(hi)
@@ -452,7 +452,7 @@ class FamilyFit:
             "on_ridge": a.ridge,
             "posterior_sd_log10": reg.sd_log10 if reg else laplace,
             "laplace_sd_log10": reg.laplace_sd_log10 if reg else laplace,
-            "range_open": [_open_flag(a, q) for q in p.free],
+            "range_open": [open_flag(a, q) for q in p.free],
         }
         samples = reg.samples_free if reg else np.zeros((0, len(p.free)))
         return {k: ("parameter", v) for k, v in per_parameter.items()} | {
@@ -476,7 +476,7 @@ class FamilyFit:
                     "stated": stated.get(c, np.nan),
                 }
             out |= {f"{kind}_{COMBINATION_KEYS[c]}": v for kind, v in values.items()}
-        return out | {f"range_open_{COMBINATION_KEYS[c]}": _open_flag(a, c) for c in COMPOUND}
+        return out | {f"range_open_{COMBINATION_KEYS[c]}": open_flag(a, c) for c in COMPOUND}
 
     def _profiles(self) -> dict:
         """The likelihood profiles (quantity x point) and the straight-line ones (direction)."""

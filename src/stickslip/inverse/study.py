@@ -14,7 +14,7 @@ import numpy as np
 
 from ..schema import Inverse, InverseJob, InverseSettings
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
-from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset
+from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset, open_flag
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
@@ -222,7 +222,7 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
         for i, param in enumerate(p.free):
             row.update(
                 _range_columns(
-                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], a.opens.get(param)
+                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], open_flag(a, param)
                 )
             )
             row[f"stated_{param}"] = float(p.stated_free[i])
@@ -231,7 +231,7 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             if len(COMBINATIONS[combo]) == 1 or combo not in a.combo_lower:  # one parameter: its own columns
                 continue
             point, lo, hi = a.combo_point[combo], a.combo_lower[combo], a.combo_upper[combo]
-            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], a.opens.get(combo)))
+            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], open_flag(a, combo)))
             row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
         search = r.conflicts
         row.update(
@@ -268,19 +268,16 @@ def profiles_bounded(r: FamilyFit) -> str:
     return f"{bounded} of {len(pid.profiles)}"
 
 
-def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
+def _range_columns(key: str, value, lower, upper, ridge: bool, open_code: int) -> dict:
     """Summary columns of one parameter or combination: best_ (empty where it is a range, never a point),
     lower_/upper_ (a range, or the confidence interval of an identifiable one), identifiable_ (1/0) and
     open_ (the side(s) where the range reaches the bounds within the threshold: unbounded by the data)."""
-    lo, hi = opens or (False, False)
     return {
         f"best_{key}": "" if ridge else float(f"{value:.4g}"),
         f"lower_{key}": float(f"{lower:.4g}") if np.isfinite(lower) else "",  # "": no interval measured
         f"upper_{key}": float(f"{upper:.4g}") if np.isfinite(upper) else "",
         f"identifiable_{key}": int(not ridge),
-        f"open_{key}": {(False, False): "", (True, False): "below", (False, True): "above"}.get(
-            (lo, hi), "both"
-        ),
+        f"open_{key}": ("", "below", "above", "both")[open_code],  # open_flag's code,
     }
 
 
