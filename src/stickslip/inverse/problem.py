@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import get_args
 
 import numpy as np
 
@@ -28,10 +29,10 @@ from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..claims.rows import Claim
 from ..model.params import BeltParams, ParameterError
-from ..schema import InverseJob, InverseOnedof, given
+from ..schema import InverseJob, InverseOnedof, InverseParameter, given
 
-#: Free parameters the study may vary, in a fixed order (BeltParams field names).
-PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")
+#: Free parameters the study may vary, in a fixed order (BeltParams field names): the config's own type.
+PARAMS = get_args(InverseParameter)
 SYMBOLS = dict(zip(PARAMS, ("sigma", "C", "mu_s", "N", "K", "M", "v_p")))
 UNITS = dict(zip(PARAMS, ("s mm-1", "N s mm-1", "1", "N", "N mm-1", "kg", "mm s-1")))
 
