@@ -117,13 +117,11 @@ def named_hypotheses(problem: Problem, hypotheses: dict[str, Hypothesis], points
         description, ratio = hypothesis.description, hypothesis.mu_k_ratio
         if ratio is not None:
             grid = np.linspace(ratio.min, ratio.max, points)
-            forward = Forward(problem, {})
-            results = []
-            for r in grid:
-                forward.hypothesis = {**spec, "mu_k_ratio": float(r)}
-                results.append(score(problem, forward.residuals(problem.stated_free)))
-            k = int(np.argmin([s["chi2"] for s in results]))
-            out.append(Score(label, "mu_k/mu_s", float(grid[k]), 1.0, **results[k], description=description))
+            scores = [
+                stated_score(problem, {**spec, "mu_k_ratio": float(r)}, label, description) for r in grid
+            ]
+            k = int(np.argmin([s.chi2 for s in scores]))
+            out.append(replace(scores[k], parameter="mu_k/mu_s", value=float(grid[k]), stated=1.0))
             continue
         s = stated_score(problem, spec, label, description)
         param = next(iter(spec), "")

@@ -149,9 +149,8 @@ def number_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     rows = []
     for fam, r in results.items():
         p, fit = r.problem, r.fit
-        members = set()
-        if r.conflicts is not None:
-            members = {i for c in r.conflicts.conflicts for i in c.members}
+        found = r.conflicts.conflicts if r.conflicts is not None else ()
+        members = {i for c in found for i in c.members}
         for i, o in enumerate(p.observations):
             rows.append(
                 {
