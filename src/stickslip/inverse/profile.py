@@ -208,23 +208,14 @@ def profile_row(forward: Forward, space: _Space, row: np.ndarray, floor: float, 
     q = vt[rank:].T  # the coordinates that keep this quantity
     along = np.linalg.pinv(full) @ np.ones(1)  # moves g . w by 1
     walk = _Walk(forward, space, (g, q, along), pool, floor)
-    ends, opens = [], []
-    for sign in (-1.0, 1.0):
-        t_lo, t_hi = space.row_limits(row)
-        limit = (-t_lo if sign < 0 else t_hi) * (1 - 1e-9)
-        t_in, reached = walk.side(sign, limit, _first_step(space, g, limit))
-        ends.append(sign * t_in)
-        opens.append(reached)
-    order = np.argsort(walk.t, kind="stable")
-    return LikelihoodProfile(
-        t=np.array(walk.t)[order],
-        chi2=np.array(walk.chi2)[order],
-        points=10.0 ** np.array(walk.u)[order],
-        t_lower=ends[0],
-        t_upper=ends[1],
-        open_lower=opens[0],
-        open_upper=opens[1],
+    t_lo, t_hi = space.row_limits(row)
+    (below, open_lower), (above, open_upper) = (
+        walk.side(sign, limit, _first_step(space, g, limit))
+        for sign, limit in ((-1.0, -t_lo * (1 - 1e-9)), (1.0, t_hi * (1 - 1e-9)))
     )
+    order = np.argsort(walk.t, kind="stable")
+    t, chi2, u = (np.array(values)[order] for values in (walk.t, walk.chi2, walk.u))
+    return LikelihoodProfile(t, chi2, 10.0**u, -below, above, open_lower, open_upper)
 
 
 class _Walk:
