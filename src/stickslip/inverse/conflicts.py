@@ -142,14 +142,12 @@ def minimal_conflicts(
             if any(set(c.members) <= set(subset) for c in found) or witnesses.satisfies(subset):
                 continue
             start = witnesses.start(subset)
-            if start is None:
-                start = np.log10(p.stated_free)
             idx = list(subset)
             fitted += 1
             try:
                 res = least_squares(
                     lambda u, idx=idx: recorded(u, idx),
-                    np.clip(start, *inner),
+                    np.clip(np.log10(p.stated_free) if start is None else start, *inner),
                     bounds=(lo, hi),
                     method="trf",
                     diff_step=1e-3,

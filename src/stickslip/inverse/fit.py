@@ -106,11 +106,10 @@ def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None, c
             batch = list(rng.uniform(*inner, size=(SCOUTS_PER_START * (starts - 1), len(lo))))
         cost = np.array([float(np.sum(fun(u) ** 2)) for u in batch])
         x0s += [batch[i] for i in np.argsort(cost, kind="stable")[: starts - 1]]
-    best = None
-    for x in x0s:
-        res = least_squares(fun, x, bounds=(lo, hi), method="trf", diff_step=1e-3, max_nfev=max_nfev)
-        if best is None or res.cost < best.cost:
-            best = res
+    fits = (
+        least_squares(fun, x, bounds=(lo, hi), method="trf", diff_step=1e-3, max_nfev=max_nfev) for x in x0s
+    )
+    best = min(fits, key=lambda res: res.cost)  # the first of equal costs
     found = 10.0**best.x
     closest = p.closest_equivalent(found)
     values = closest if p.in_bounds(closest) else found
