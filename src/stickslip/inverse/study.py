@@ -308,18 +308,14 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
     out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "inverse": inv, "cpu": {}}
     fitted = {fam: [] for fam in families}  # per-figure fits: the joint fit's candidate starts
     for name in figures + ["joint"]:
-        steps = settings.joint_steps if name == "joint" else settings.steps
+        joint = name == "joint"
+        steps = settings.joint_steps if joint else settings.steps
         results = {}
         for fam in families:
             problem = build_problem(job, claims, name, fam)
-            candidates = [_as_free(problem, c) for c in fitted[fam]] if name == "joint" else ()
+            candidates = [_as_free(problem, c) for c in fitted[fam]] if joint else ()
             results[fam] = fit_problem(
-                problem,
-                settings,
-                steps,
-                loo=name == "joint",
-                candidates=candidates,
-                conflicts=name != "joint",
+                problem, settings, steps, loo=joint, candidates=candidates, conflicts=not joint
             )
             fitted[fam].append(dict(zip(problem.free, results[fam].fit.free_values)))
         out["datasets"][name] = figure_dataset(name, results, inv)
@@ -327,7 +323,7 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
         out["numbers"] += number_rows(name, results)
         out["conflicts"] += conflict_rows(name, results)
         out["cpu"][name] = sum(r.cpu for r in results.values())
-        if name == "joint":
+        if joint:
             t0 = time.process_time()
             out["hypotheses"], out["ranking"] = misprint_tables(inv, results)
             out["cpu"]["misprint scans"] = time.process_time() - t0
