@@ -51,7 +51,6 @@ class ConflictSearch:
     max_size: int
     numbers: int
     subsets_fitted: int
-    evaluations: int
     witness: np.ndarray | None
     """A free-parameter set putting every number of the figure within precision (the one of smallest
     chi-square seen), or None: when found, the figure is consistent after all."""
@@ -86,8 +85,6 @@ class _Witnesses:
         return np.where(np.isfinite(a), a, np.inf)
 
     def satisfies(self, subset) -> bool:
-        if not len(self.r):
-            return False
         return bool(np.any(np.all(self._abs(subset) <= 1.0, axis=1)))
 
     def closest(self, subset) -> float | None:
@@ -98,15 +95,14 @@ class _Witnesses:
 
     def full(self) -> np.ndarray | None:
         """The set of smallest chi-square among those putting every number within precision."""
-        ok = np.all(self._abs(range(self.r.shape[1])) <= 1.0, axis=1) if len(self.r) else np.zeros(0, bool)
+        ok = np.all(self._abs(range(self.r.shape[1])) <= 1.0, axis=1)
         if not ok.any():
             return None
         chi2 = np.where(ok, np.sum(np.nan_to_num(self.r, nan=np.inf) ** 2, axis=1), np.inf)
         return 10.0 ** self.u[int(np.argmin(chi2))]
 
     def start(self, subset) -> np.ndarray | None:
-        if not len(self.r):
-            return None
+        """The set of smallest chi-square on the subset (None: no set produces all its numbers)."""
         cost = np.sum(self._abs(subset) ** 2, axis=1)
         return self.u[int(np.argmin(cost))] if np.isfinite(cost).any() else None
 
@@ -126,7 +122,6 @@ def minimal_conflicts(
     lo, hi = p.log_bounds
     inner = lo + 1e-6 * (hi - lo), hi - 1e-6 * (hi - lo)
     witnesses = _Witnesses(n)
-    n0 = forward.evaluations
     for s in seeds:
         s = np.asarray(s, dtype=float)
         if p.in_bounds(s):
@@ -147,14 +142,12 @@ def minimal_conflicts(
             if any(set(c.members) <= set(subset) for c in found) or witnesses.satisfies(subset):
                 continue
             start = witnesses.start(subset)
-            if start is None:
-                start = np.log10(p.stated_free)
             idx = list(subset)
             fitted += 1
             try:
                 res = least_squares(
                     lambda u, idx=idx: recorded(u, idx),
-                    np.clip(start, *inner),
+                    np.clip(np.log10(p.stated_free) if start is None else start, *inner),
                     bounds=(lo, hi),
                     method="trf",
                     diff_step=1e-3,
@@ -169,6 +162,5 @@ def minimal_conflicts(
         max_size=int(max_size),
         numbers=n,
         subsets_fitted=fitted,
-        evaluations=forward.evaluations - n0,
         witness=witnesses.full(),
     )

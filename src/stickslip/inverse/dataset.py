@@ -25,6 +25,7 @@ from .identify import (
     flat_extent,
     on_ridge,
     parameter_ranges,
+    quantity_rows,
 )
 from .problem import COMBINATION_UNITS, COMBINATIONS, PARAMS, SYMBOLS, UNITS, Problem
 from .profile import PL_THRESHOLD, ProfileIdentification, quantity_ranges
@@ -110,9 +111,8 @@ def analyse(r: FamilyFit) -> _Analysis:
     c_ridge = {n: bool(on_ridge(c_lo[n], c_hi[n])) for n in c_lo}
     opens = {}
     if pid is not None:
-        eye = {q: row for q, row in zip(p.free, np.eye(len(p.free)))}
         combo_rows = {n: rows[n] for n in c_lo if len(COMBINATIONS[n]) > 1}
-        ranges = quantity_ranges(p, v, pid, {**eye, **combo_rows})
+        ranges = quantity_ranges(p, v, pid, {**dict(zip(p.free, np.eye(len(p.free)))), **combo_rows})
         for i, q in enumerate(p.free):
             lower[i], upper[i] = min(lower[i], ranges[q].lower), max(upper[i], ranges[q].upper)
             ridge[i] = ridge[i] or _unidentified(ranges[q])
@@ -126,12 +126,25 @@ def analyse(r: FamilyFit) -> _Analysis:
             if q in p.free:
                 i = p.free.index(q)
                 c_lo[n], c_hi[n], c_ridge[n], opens[n] = lower[i], upper[i], bool(ridge[i]), opens[q]
-    # no quantity the equations leave free is a point: its range covers at least the fibre of the fit
-    _fibre_ranges(r, v, lower, upper, c_lo, c_hi)
-    # no quantity spanning more than a decade is called identifiable, and none the equations leave free
-    ridge |= _wider_than_a_decade(lower, upper)
-    c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) for n in c_ridge}
-    ridge, c_ridge = _structural_ridges(r, ridge, c_ridge)
+    # no quantity the equations leave free (exact, so the same on every CPU) is a point: its range covers at
+    # least its extent over the fit's fibre (where no profile traced it, as in the joint problem, the
+    # straight-line ridges see only the fibre's straight part)
+    loose = _loose_rows(r)
+    if loose:
+        lo, hi = p.log_bounds
+        rows = np.array(list(loose.values()))
+        ext = 10.0 ** fibre_extent(r.structure, tuple(p.free), np.log10(v), rows, lo, hi, p.plateau_pair)
+        for n, (e_lo, e_hi) in zip(loose, ext):
+            if n in p.free:
+                i = p.free.index(n)
+                lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
+            if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
+                c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
+    # nor is a quantity spanning more than a decade
+    ridge = np.array(
+        [bool(f) or q in loose for q, f in zip(p.free, ridge | _wider_than_a_decade(lower, upper))]
+    )
+    c_ridge = {n: c_ridge[n] or bool(_wider_than_a_decade(c_lo[n], c_hi[n])) or n in loose for n in c_ridge}
     dims, note = structural_count(r)
     return _Analysis(v, lower, upper, ridge, combos, c_lo, c_hi, dims, opens, c_ridge, note)
 
@@ -147,42 +160,11 @@ def structural_count(r: FamilyFit) -> tuple[float, str]:
     return s, ""
 
 
-def _fibre_ranges(r: FamilyFit, v, lower, upper, c_lo: dict, c_hi: dict) -> None:
-    """Widen (in place) the range of every free parameter and combination the equations leave free to its
-    extent over the fit's fibre (``structure.fibre_extent``): where no profile traced it (the joint problem,
-    a figure the settings do not profile), the straight-line ridges see only the fibre's straight part."""
-    p, free, loose = r.problem, tuple(r.problem.free), _loose_rows(r)
-    if not loose:
-        return
-    u0 = np.log10(v)
-    lo, hi = p.log_bounds
-    pair = None
-    if p.nonnegative_plateau and "plateau_speed" in free:
-        pair = (free.index("sigma"), free.index("plateau_speed"))
-    ext = 10.0 ** fibre_extent(r.structure, free, u0, np.array(list(loose.values())), lo, hi, pair)
-    for (n, _), (e_lo, e_hi) in zip(loose.items(), ext):
-        if n in free:
-            i = free.index(n)
-            lower[i], upper[i] = min(lower[i], e_lo), max(upper[i], e_hi)
-        if n in c_lo:  # a combination, or a one-parameter one (sigma, v_p)
-            c_lo[n], c_hi[n] = min(c_lo[n], e_lo), max(c_hi[n], e_hi)
-
-
-def _structural_ridges(r: FamilyFit, ridge, c_ridge: dict):
-    """Parameters and combinations the equations leave free (``identifiable_in_structure``) are ranges,
-    whatever the profiles found: exact, so the same on every CPU."""
-    loose = _loose_rows(r)
-    ridge = np.array([bool(flag) or q in loose for q, flag in zip(r.problem.free, ridge)])
-    return ridge, {n: flag or n in loose for n, flag in c_ridge.items()}
-
-
 def _loose_rows(r: FamilyFit) -> dict:
     """Name -> log10 row of each free parameter and combination the equations leave free (sigma: both)."""
     runs, free = r.structure or (), tuple(r.problem.free)
-    rows = {**dict(zip(free, np.eye(len(free)))), **combination_rows(r.problem)}
-    return {
-        n: row for n, row in rows.items() if runs and not identifiable_in_structure(runs, free, tuple(row))
-    }
+    rows = quantity_rows(r.problem).items()
+    return {n: row for n, row in rows if runs and not identifiable_in_structure(runs, free, tuple(row))}
 
 
 #: A quantity whose interval spans more than this ratio is never called identifiable.
@@ -369,7 +351,7 @@ ABSENT = {name: np.int8(0) for name in FLAGS} | {"conflict_size": 0.0}
 RAGGED = ("sample", "walker", "coordinate", "profile_point", "direction", "conflict")
 
 
-def _open_flag(a: _Analysis, name: str) -> int:
+def open_flag(a: _Analysis, name: str) -> int:
     """0 bounded, 1 open below, 2 open above, 3 both (see QuantityRange)."""
     lo, hi = a.opens.get(name, (False, False))
     return int(lo) + 2 * int(hi)
@@ -400,6 +382,10 @@ class FamilyFit:
     @cached_property
     def analysis(self) -> _Analysis:
         return analyse(self)
+
+    @property
+    def _likelihood_profiles(self) -> dict:
+        return self.profile.profiles if self.profile else {}
 
     def to_dataset(self) -> xr.Dataset:
         """This family's variables with their CF attributes: each ragged dimension (``RAGGED``) as long as
@@ -433,7 +419,10 @@ class FamilyFit:
         }
         ds = xr.Dataset(
             {name: _variable(name, v) for name, v in data.items()},
-            coords={"parameter": list(p.free), "quantity": np.array(list(self._quantities()), dtype=object)},
+            coords={
+                "parameter": list(p.free),
+                "quantity": np.array(list(self._likelihood_profiles), dtype=object),
+            },
         )
         ds = ds.assign_coords({dim: np.arange(ds.sizes[dim]) for dim in RAGGED})
         ds = ds.reindex(parameter=list(PARAMS), fill_value=ABSENT | {"direction_vector": 0.0})
@@ -463,7 +452,7 @@ class FamilyFit:
             "on_ridge": a.ridge,
             "posterior_sd_log10": reg.sd_log10 if reg else laplace,
             "laplace_sd_log10": reg.laplace_sd_log10 if reg else laplace,
-            "range_open": [_open_flag(a, q) for q in p.free],
+            "range_open": [open_flag(a, q) for q in p.free],
         }
         samples = reg.samples_free if reg else np.zeros((0, len(p.free)))
         return {k: ("parameter", v) for k, v in per_parameter.items()} | {
@@ -487,15 +476,11 @@ class FamilyFit:
                     "stated": stated.get(c, np.nan),
                 }
             out |= {f"{kind}_{COMBINATION_KEYS[c]}": v for kind, v in values.items()}
-        return out | {f"range_open_{COMBINATION_KEYS[c]}": _open_flag(a, c) for c in COMPOUND}
-
-    def _quantities(self) -> dict:
-        """Quantity -> its likelihood profile, of every quantity profiled."""
-        return self.profile.profiles if self.profile else {}
+        return out | {f"range_open_{COMBINATION_KEYS[c]}": open_flag(a, c) for c in COMPOUND}
 
     def _profiles(self) -> dict:
         """The likelihood profiles (quantity x point) and the straight-line ones (direction)."""
-        profiles, free = self._quantities(), self.problem.free
+        profiles, free = self._likelihood_profiles, self.problem.free
         points = max((len(pr.t) for pr in profiles.values()), default=0)
         t, chi2 = np.full((len(profiles), points), np.nan), np.full((len(profiles), points), np.nan)
         for j, pr in enumerate(profiles.values()):
@@ -504,7 +489,7 @@ class FamilyFit:
         return {
             "likelihood_profile_offset": (("quantity", "profile_point"), t),
             "likelihood_profile_chi_square": (("quantity", "profile_point"), chi2),
-            "likelihood_profile_fixed": ("quantity", [n in self.profile.fixed for n in profiles]),
+            "likelihood_profile_fixed": ("quantity", np.zeros(len(profiles))),  # none: the structure counts
             "direction_vector": (
                 ("direction", "parameter"),
                 np.reshape([pr.direction for pr in directions], (len(directions), len(free))),

@@ -12,24 +12,20 @@ reading precision (|residual| <= 1), otherwise *inconsistent*.
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, replace
 
 import emcee
 import numpy as np
 from scipy.optimize import least_squares
 
 from .forward import Forward
-from .problem import Problem, with_observations
+from .problem import Problem
 
 #: Residual given to the optimiser for a number an infeasible parameter set cannot produce (and the bound
 #: of every residual the optimiser sees).
 INFEASIBLE_RESIDUAL = 100.0
-
-
 #: Below this 1 - h_ii a leave-one-out residual is undefined (the number alone fixes a direction).
 LOO_MIN_LEVER = 0.05
-
 #: Seeded random points scouted per extra least-squares start.
 SCOUTS_PER_START = 8
 
@@ -39,11 +35,13 @@ class BestFit:
     free_values: np.ndarray
     """The best-fitting set closest to the stated one (same motion as the optimiser's point)."""
     residuals: np.ndarray
-    chi2: float
-    cost_by_start: list
     jacobian: np.ndarray
     """d residual / d log10(free parameter) at the optimum (n_numbers x n_free)."""
-    evaluations: int
+
+    @property
+    def chi2(self) -> float:
+        r = self.residuals
+        return float(r @ r) if np.all(np.isfinite(r)) else np.inf
 
     @property
     def worst(self) -> float:
@@ -56,18 +54,14 @@ class BestFit:
 
 @dataclass
 class Region:
-    samples_w: np.ndarray
     samples_free: np.ndarray
     log_likelihood: np.ndarray
     acceptance: np.ndarray
     autocorr_time: np.ndarray
-    walkers: int
     steps: int
-    burn: int
     infeasible_fraction: float
     laplace_sd_log10: np.ndarray
     """Gauss-Newton (Laplace) standard deviation of log10 of each free parameter at the best fit."""
-    extras: dict = field(default_factory=dict)
 
     @property
     def converged(self) -> bool:
@@ -105,7 +99,6 @@ def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None, c
     first = np.log10(p.stated_free if x0 is None else np.asarray(x0, dtype=float))
     inner = lo + 1e-6 * (hi - lo), hi - 1e-6 * (hi - lo)
     fun = _fun(forward, p)
-    n0 = forward.evaluations
     x0s = [np.clip(first, *inner)]
     if starts > 1:  # the other starts: the best of the candidates (e.g. other fits) or of a seeded batch
         batch = [np.clip(np.log10(np.asarray(c, dtype=float)), *inner) for c in candidates]
@@ -113,48 +106,28 @@ def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None, c
             batch = list(rng.uniform(*inner, size=(SCOUTS_PER_START * (starts - 1), len(lo))))
         cost = np.array([float(np.sum(fun(u) ** 2)) for u in batch])
         x0s += [batch[i] for i in np.argsort(cost, kind="stable")[: starts - 1]]
-    best, costs = None, []
-    for x in x0s:
-        res = least_squares(fun, x, bounds=(lo, hi), method="trf", diff_step=1e-3, max_nfev=max_nfev)
-        costs.append(float(res.cost))
-        if best is None or res.cost < best.cost:
-            best = res
+    fits = (
+        least_squares(fun, x, bounds=(lo, hi), method="trf", diff_step=1e-3, max_nfev=max_nfev) for x in x0s
+    )
+    best = min(fits, key=lambda res: res.cost)  # the first of equal costs
     found = 10.0**best.x
     closest = p.closest_equivalent(found)
     values = closest if p.in_bounds(closest) else found
-    r = forward.residuals(values)
-    return BestFit(
-        free_values=values,
-        residuals=r,
-        chi2=float(r @ r) if np.all(np.isfinite(r)) else np.inf,
-        cost_by_start=costs,
-        jacobian=np.asarray(best.jac, dtype=float),
-        evaluations=forward.evaluations - n0,
-    )
+    return BestFit(values, forward.residuals(values), np.asarray(best.jac, dtype=float))
 
 
 def fit_at(forward: Forward, free_values, diff_step: float = 1e-3) -> BestFit:
     """A BestFit at a given set (e.g. a witness of consistency found after the least-squares fit), its
     Jacobian by central differences in log10 with the optimiser's relative step."""
-    p = forward.problem
-    n0 = forward.evaluations
     values = np.asarray(free_values, dtype=float)
     u = np.log10(values)
-    fun = _fun(forward, p)
+    fun = _fun(forward, forward.problem)
     cols = []
     for j in range(len(u)):
         e = np.zeros_like(u)
         e[j] = diff_step * max(abs(u[j]), 1.0)
         cols.append((fun(u + e) - fun(u - e)) / (2 * e[j]))
-    r = forward.residuals(values)
-    return BestFit(
-        free_values=values,
-        residuals=r,
-        chi2=float(r @ r) if np.all(np.isfinite(r)) else np.inf,
-        cost_by_start=[],
-        jacobian=np.array(cols).T,
-        evaluations=forward.evaluations - n0,
-    )
+    return BestFit(values, forward.residuals(values), np.array(cols).T)
 
 
 def prior_precision(problem: Problem) -> float:
@@ -165,7 +138,8 @@ def prior_precision(problem: Problem) -> float:
 
 
 def laplace_cov_w(problem: Problem, jacobian: np.ndarray) -> np.ndarray:
-    """Gauss-Newton (Laplace) covariance of the identifiable coordinates w at a best fit."""
+    """Gauss-Newton (Laplace) covariance of the identifiable coordinates w at a best fit (with the weak prior
+    of ``prior_precision``)."""
     basis = problem.identifiable_basis()
     jw = jacobian @ basis
     return np.linalg.inv(jw.T @ jw + prior_precision(problem) * np.eye(basis.shape[1]))
@@ -178,18 +152,6 @@ def laplace_sd(problem: Problem, jacobian: np.ndarray) -> np.ndarray:
     return np.sqrt(np.clip(np.diag(basis @ cov_w @ basis.T), 0.0, None))
 
 
-def log_probability(forward: Forward):
-    p = forward.problem
-
-    def log_prob(w):
-        values = p.from_coordinates(w)
-        if not p.in_bounds(values):
-            return -np.inf
-        return forward.log_likelihood(values)
-
-    return log_prob
-
-
 def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed: int) -> Region:
     """emcee from the best fit's Laplace approximation, seeded; the first half of the chain is burn-in."""
     p = forward.problem
@@ -198,7 +160,11 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
         raise ValueError(f"inverse.settings.walkers: {walkers} < 2 x {ndim} identifiable dimensions")
     rng = np.random.default_rng(seed)
     w0 = p.to_coordinates(fit.free_values)
-    log_prob = log_probability(forward)
+
+    def log_prob(w):
+        values = p.from_coordinates(w)
+        return forward.log_likelihood(values) if p.in_bounds(values) else -np.inf
+
     # start from the Laplace approximation (capped), so the walkers begin spread along weak directions
     spread = np.clip(np.sqrt(np.diag(laplace_cov_w(p, fit.jacobian))), 1e-3, 0.3)
     start = []
@@ -225,14 +191,11 @@ def sample_region(forward: Forward, fit: BestFit, walkers: int, steps: int, seed
     free = np.array([p.from_coordinates(w) for w in chain]).reshape(-1, len(p.free))
     used = max(forward.evaluations - n0, 1)
     return Region(
-        samples_w=chain,
         samples_free=free,
         log_likelihood=logp,
         acceptance=np.asarray(sampler.acceptance_fraction, dtype=float),
         autocorr_time=np.asarray(tau, dtype=float),
-        walkers=walkers,
         steps=steps,
-        burn=burn,
         infeasible_fraction=(forward.infeasible - inf0) / used,
         laplace_sd_log10=laplace_sd(p, fit.jacobian),
     )
@@ -245,9 +208,8 @@ def loo_linear(problem: Problem, fit: BestFit) -> np.ndarray:
     prior of ``prior_precision``); a number that alone fixes a direction (1 - h_ii < LOO_MIN_LEVER) gets NaN:
     left out, nothing predicts it, and the linearisation would divide by round-off.
     """
-    basis = problem.identifiable_basis()
-    jw = fit.jacobian @ basis
-    h = jw @ np.linalg.inv(jw.T @ jw + prior_precision(problem) * np.eye(basis.shape[1])) @ jw.T
+    jw = fit.jacobian @ problem.identifiable_basis()
+    h = jw @ laplace_cov_w(problem, fit.jacobian) @ jw.T
     lever = 1.0 - np.diag(h)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(lever > LOO_MIN_LEVER, fit.residuals / lever, np.nan)
@@ -258,15 +220,8 @@ def loo_refit(forward: Forward, fit: BestFit, max_nfev: int, seed: int) -> np.nd
     p = forward.problem
     out = np.full(len(p.observations), np.nan)
     for i in range(len(p.observations)):
-        reduced = with_observations(p, [o for k, o in enumerate(p.observations) if k != i])
+        reduced = replace(p, observations=tuple(o for k, o in enumerate(p.observations) if k != i))
         sub = Forward(reduced, dict(forward.hypothesis))
         refit = best_fit(sub, 1, max_nfev, seed, x0=fit.free_values)
         out[i] = forward.residuals(refit.free_values)[i]
     return out
-
-
-def timed(fn, *args, **kwargs):
-    """(result, CPU seconds) of a call."""
-    t0 = time.process_time()
-    result = fn(*args, **kwargs)
-    return result, time.process_time() - t0

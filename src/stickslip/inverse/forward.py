@@ -136,9 +136,7 @@ class Forward:
     problem: Problem
     hypothesis: dict = field(default_factory=dict)
     evaluations: int = 0
-    runs: int = 0
     infeasible: int = 0
-    failed_runs: int = 0
     _cache: dict = field(default_factory=dict, repr=False)
 
     def run_metrics(self, free_values, run_index: int) -> dict:
@@ -156,8 +154,6 @@ class Forward:
             n = int(round(s["t_end"] / dt))
             with np.errstate(over="ignore", invalid="ignore"):  # runs growing without bound are data here
                 traj = solver.solve(model, s["t_end"], np.linspace(0.0, n * dt, n + 1))
-            self.runs += 1
-            self.failed_runs += int(not traj.ok)
             self._cache[key] = observe(traj, s["transient"], s["count_window"], names)
             if len(self._cache) > 4096:
                 self._cache.pop(next(iter(self._cache)))

@@ -12,7 +12,7 @@ unit reading), the Eq. 4 sigma V_b term, and a kinetic coefficient mu_k = r mu_s
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -39,14 +39,20 @@ class Score:
         return {"family": family, **self.__dict__}
 
 
-def score(problem: Problem, residuals: np.ndarray) -> tuple[float, int, float, str]:
-    """(chi2, numbers within precision, worst |residual|, its claim); infeasible -> inf, 0."""
+def score(problem: Problem, residuals: np.ndarray) -> dict:
+    """chi2, the numbers within precision and of the problem, the worst |residual| and its claim (the first
+    number not produced, with chi2 and worst inf, where the set is infeasible)."""
     r = np.asarray(residuals, dtype=float)
-    if not np.all(np.isfinite(r)):
-        bad = int(np.argmax(~np.isfinite(r)))
-        return np.inf, int(np.sum(np.abs(r[np.isfinite(r)]) <= 1.0)), np.inf, problem.observations[bad].claim
-    k = int(np.argmax(np.abs(r)))
-    return float(r @ r), int(np.sum(np.abs(r) <= 1.0)), float(abs(r[k])), problem.observations[k].claim
+    finite = np.isfinite(r)
+    feasible = bool(finite.all())
+    k = int(np.argmax(np.abs(r))) if feasible else int(np.argmax(~finite))
+    return dict(
+        chi2=float(r @ r) if feasible else np.inf,
+        reproduced=int(np.sum(np.abs(r[finite]) <= 1.0)),
+        numbers=len(problem.observations),
+        worst=float(abs(r[k])) if feasible else np.inf,
+        worst_claim=problem.observations[k].claim,
+    )
 
 
 def _grid_posterior(log_grid: np.ndarray, chi2: np.ndarray) -> tuple[float, float]:
@@ -63,43 +69,34 @@ def _grid_posterior(log_grid: np.ndarray, chi2: np.ndarray) -> tuple[float, floa
     return mean, max(sd, half_step / np.sqrt(3.0))  # never narrower than the grid can resolve
 
 
-def single_changes(problem: Problem, points: int, hypothesis: dict | None = None) -> list[Score]:
+def single_changes(problem: Problem, points: int) -> list[Score]:
     """Scan each free parameter alone over its bounds, every other one at its stated value."""
-    forward = Forward(problem, dict(hypothesis or {}))
+    forward = Forward(problem)
     stated = problem.stated_free
+    outside = dict(chi2=np.inf, reproduced=0, numbers=len(problem.observations), worst=np.inf, worst_claim="")
     out = []
     for i, name in enumerate(problem.free):
         lo, hi = problem.bounds[name]
         grid = np.geomspace(lo, hi, points)
-        chi2, scores = [], []
+        scores = []
         for value in grid:
             values = stated.copy()
             values[i] = value
-            s = (
-                score(problem, forward.residuals(values))
-                if problem.in_bounds(values)
-                else (np.inf, 0, np.inf, "")
-            )
-            chi2.append(s[0])
-            scores.append(s)
-        chi2 = np.array(chi2)
+            scores.append(score(problem, forward.residuals(values)) if problem.in_bounds(values) else outside)
+        chi2 = np.array([s["chi2"] for s in scores])
         k = int(np.argmin(chi2)) if np.isfinite(chi2).any() else 0
         _, sd = _grid_posterior(np.log10(grid), chi2)
-        c, n_ok, worst, claim = scores[k]
         z = (np.log10(grid[k]) - np.log10(stated[i])) / sd if np.isfinite(sd) and sd > 0 else np.nan
+        description = f"only {name} changed, scanned over the bounds"
         out.append(
             Score(
                 "single_change",
                 name,
                 float(grid[k]),
                 float(stated[i]),
-                c,
-                n_ok,
-                len(problem.observations),
-                worst,
-                claim,
-                float(z),
-                f"only {name} changed, scanned over the bounds",
+                **scores[k],
+                z=float(z),
+                description=description,
             )
         )
     return out
@@ -107,19 +104,8 @@ def single_changes(problem: Problem, points: int, hypothesis: dict | None = None
 
 def stated_score(problem: Problem, hypothesis: dict | None = None, label="stated", description="") -> Score:
     forward = Forward(problem, dict(hypothesis or {}))
-    c, n_ok, worst, claim = score(problem, forward.residuals(problem.stated_free))
-    return Score(
-        label,
-        "",
-        np.nan,
-        np.nan,
-        c,
-        n_ok,
-        len(problem.observations),
-        worst,
-        claim,
-        description=description or "every parameter as stated",
-    )
+    s = score(problem, forward.residuals(problem.stated_free))
+    return Score(label, "", np.nan, np.nan, **s, description=description or "every parameter as stated")
 
 
 def named_hypotheses(problem: Problem, hypotheses: dict[str, Hypothesis], points: int) -> list[Score]:
@@ -131,45 +117,17 @@ def named_hypotheses(problem: Problem, hypotheses: dict[str, Hypothesis], points
         description, ratio = hypothesis.description, hypothesis.mu_k_ratio
         if ratio is not None:
             grid = np.linspace(ratio.min, ratio.max, points)
-            forward = Forward(problem, {})
-            results = []
-            for r in grid:
-                forward.hypothesis = {**spec, "mu_k_ratio": float(r)}
-                results.append(score(problem, forward.residuals(problem.stated_free)))
-            k = int(np.argmin([s[0] for s in results]))
-            c, n_ok, worst, claim = results[k]
-            out.append(
-                Score(
-                    label,
-                    "mu_k/mu_s",
-                    float(grid[k]),
-                    1.0,
-                    c,
-                    n_ok,
-                    len(problem.observations),
-                    worst,
-                    claim,
-                    description=description,
-                )
-            )
+            scores = [
+                stated_score(problem, {**spec, "mu_k_ratio": float(r)}, label, description) for r in grid
+            ]
+            k = int(np.argmin([s.chi2 for s in scores]))
+            out.append(replace(scores[k], parameter="mu_k/mu_s", value=float(grid[k]), stated=1.0))
             continue
         s = stated_score(problem, spec, label, description)
         param = next(iter(spec), "")
         value = spec.get(param, np.nan)
-        out.append(
-            Score(
-                label,
-                param,
-                float(value) if isinstance(value, (int, float)) else np.nan,
-                np.nan,
-                s.chi2,
-                s.reproduced,
-                s.numbers,
-                s.worst,
-                s.worst_claim,
-                description=description,
-            )
-        )
+        value = float(value) if isinstance(value, (int, float)) else np.nan
+        out.append(replace(s, parameter=param, value=value))
     return out
 
 

@@ -1,36 +1,24 @@
-"""Identifiable dimensions from chi-square profiles along the flat and near-flat directions of a best fit.
+"""Straight-line chi-square profiles along every direction of a best fit (a diagnostic: the study's
+dimensions are the equations', ``structure``, and what the data bound is the profile likelihood's,
+``profile``, which also follows curved valleys; this module sees their tangent only).
 
-The numerical rank of a Jacobian says which directions change the residuals *at all*; it cannot tell a
-direction along which chi-square rises by 1e-6 over the whole physical range (a near-exact ridge) from one
-that is pinned. What the reported numbers identify is decided here by the data's own precision:
+A Jacobian's numerical rank cannot tell a direction along which chi-square rises by 1e-6 over the whole
+physical range (a near-exact ridge) from a pinned one; the data's own precision decides here:
 
-1. *Directions* (unit vectors in log10 of the free parameters, at the best fit u0): the structural null
-   space of the problem (the orthogonal complement of ``Problem.identifiable_basis``: parameter sets with the
-   same motion, exact by the equation of motion) and, inside the identifiable subspace, the right-singular
-   vectors of the residual Jacobian in the identifiable coordinates (the optimiser's, else central
-   differences with step ``JACOBIAN_STEP`` in log10). Every direction is profiled, not only those of small
-   singular value.
-2. *Profile*: chi2(u0 + t d) at t = +-t1 * 2^k (t1 from the direction's slope, see ``profile``), stepping
-   out on each side until chi-square
-   exceeds the smallest value seen on the profile by ``threshold`` (default 1: one reading precision on one
-   number, the precision every residual is scaled by) or the parameter bounds are reached (config
-   ``inverse.bounds`` and the plateau constraint; the last point is evaluated on the bound). An infeasible
-   set (a number the run cannot produce) ends the profile. A direction flat by construction (structural, or
-   beyond the number of numbers) is evaluated on the bounds first and stepped only where that fails.
-3. *Ridge*: a direction whose profile stays within the threshold up to the bounds on both sides, or one
-   of zero first-order sensitivity because the figure has fewer numbers than identifiable coordinates (m
-   numbers fix at most m directions; the others lie in a valley that may curve away from a straight line,
-   so its profile alone would miss it). The number of identifiable dimensions is the number of free
-   parameters minus the number of ridges.
+1. *Directions* (unit vectors in log10 of the free parameters at the best fit u0): the structural null space
+   (the complement of ``Problem.identifiable_basis``: the same motion) and the right-singular vectors of the
+   residual Jacobian in the identifiable coordinates (central differences with step ``JACOBIAN_STEP``).
+   Every direction is profiled, not only those of small singular value.
+2. *Profile* (``profile``): chi2(u0 + t d), stepping out on each side until chi-square exceeds the smallest
+   value seen by ``PROFILE_THRESHOLD`` (1: one reading precision on one number) or the bounds are reached
+   (config ``inverse.bounds`` and the plateau constraint); an infeasible set ends it.
+3. *Ridge*: a direction within the threshold up to the bounds on both sides, or one no number constrains to
+   first order (m numbers fix at most m directions). Identifiable dimensions: free parameters minus ridges.
 
-Curved valleys (a ridge that bends in log10 coordinates) are found by the profile likelihood of
-``inverse.profile``; this module sees their tangent only.
-
-Along the ridges a parameter is not a point: its *range* is the extent of the flat set within the bounds,
-a linear programme over the ridge directions (structural ridges free, a profiled one within its profiled
-interval; bounds and the plateau constraint sigma v_p <= 1 are linear in log10). Limits, stated where the
-results are: a profile is a straight line (a curved valley is followed along its tangent only), its grid
-doubles outward (a bump narrower than a step is not seen), and two profiled ridges are not checked jointly.
+A parameter along the ridges is a *range*: the extent of the flat set within the bounds, a linear programme
+over the ridge directions (structural ones free, a profiled one within its interval; the bounds and sigma
+v_p <= 1 are linear in log10). Limits: a profile is a straight line, its grid doubles outward (a bump
+narrower than a step is not seen), and two profiled ridges are not checked jointly.
 """
 
 from __future__ import annotations
@@ -72,34 +60,24 @@ class Profile:
     """True where the profile reached the parameter bounds within the threshold."""
     rise: float
     """Largest chi-square rise above the profile's minimum within [t_lower, t_upper]."""
-    evaluations: int
-
-    @property
-    def flat_to_bounds(self) -> bool:
-        return self.bound_lower and self.bound_upper
 
     @property
     def ridge(self) -> bool:
-        return self.flat_to_bounds or self.unconstrained
+        return (self.bound_lower and self.bound_upper) or self.unconstrained
 
 
 @dataclass(frozen=True)
 class Identification:
     profiles: tuple
-    threshold: float
     free: int
-
-    @property
-    def ridges(self) -> int:
-        return sum(p.ridge for p in self.profiles)
-
-    @property
-    def dimensions(self) -> int:
-        return self.free - self.ridges
 
     @property
     def ridge_directions(self) -> list[Profile]:
         return [p for p in self.profiles if p.ridge]
+
+    @property
+    def dimensions(self) -> int:
+        return self.free - len(self.ridge_directions)
 
 
 def _chi2(forward: Forward, u: np.ndarray) -> float:
@@ -115,93 +93,59 @@ def bound_step(problem: Problem, u0: np.ndarray, d: np.ndarray, sign: float) -> 
         t_hi = np.where(step > 0, (hi - u0) / step, np.inf)
         t_lo = np.where(step < 0, (lo - u0) / step, np.inf)
     t = float(max(0.0, min(np.min(t_hi), np.min(t_lo))))
-    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
-        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
+    if problem.plateau_pair is not None:
+        i, j = problem.plateau_pair
         slope, value = step[i] + step[j], u0[i] + u0[j]
         if slope > 0:
             t = min(t, max(0.0, -value / slope))
     return t
 
 
-def profile(
-    forward: Forward,
-    u0: np.ndarray,
-    d: np.ndarray,
-    threshold: float,
-    chi2_0: float,
-    slope: float = 0.0,
-    ends_first: bool = False,
-) -> tuple:
-    """(t_lower, t_upper, reached lower bound, reached upper bound, largest rise, evaluations) along d.
+def profile(forward: Forward, u0: np.ndarray, d: np.ndarray, chi2_0: float, slope=0.0, ends_first=False):
+    """(t_lower, t_upper, reached lower bound, reached upper bound, largest rise) along d.
 
-    The first step on each side is where the linearisation predicts a rise of half the threshold (sqrt(
-    threshold / 2) / slope, at least PROFILE_FIRST_STEP; without a slope an eighth of the way to the bound);
-    each further step doubles it, up to the bound. ``ends_first``: a direction already known to be flat
-    (structural, or beyond the number of reported numbers) is evaluated on each bound first; within the
-    threshold there, that side is done (no interior point), else it is stepped out as any other.
+    The first step on each side is where the linearisation predicts a rise of half the threshold (at least
+    PROFILE_FIRST_STEP; without a slope an eighth of the way to the bound); each further step doubles it, up
+    to the bound, the last point on it. ``ends_first``: a direction known to be flat (structural, or beyond
+    the number of reported numbers) is evaluated on each bound first; within the threshold there, that side
+    is done, else it is stepped out as any other.
     """
-    p = forward.problem
-    seen = [chi2_0]
-    ends, reached, evals = [], [], 0
-    points = {0.0: chi2_0}
+    seen, points, ends, reached = [chi2_0], {0.0: chi2_0}, [], []
     for sign in (-1.0, 1.0):
-        limit = bound_step(p, u0, d, sign) * (1 - 1e-9)
-        first = np.sqrt(threshold / 2) / slope if slope > 0 and np.isfinite(slope) else limit / 8
+        limit = bound_step(forward.problem, u0, d, sign) * (1 - 1e-9)
+        first = np.sqrt(PROFILE_THRESHOLD / 2) / slope if slope > 0 and np.isfinite(slope) else limit / 8
         first = max(PROFILE_FIRST_STEP, float(first))
-        t_in, hit = 0.0, limit <= 0.0
+        t_in, hit, k = 0.0, limit <= 0.0, 0
         if ends_first and not hit:
-            c = _chi2(forward, u0 + sign * limit * d)
-            evals += 1
-            points[sign * limit] = c
-            if c <= min(seen) + threshold:
+            c = points[sign * limit] = _chi2(forward, u0 + sign * limit * d)
+            if c <= min(seen) + PROFILE_THRESHOLD:
                 seen.append(c)
                 ends.append(sign * limit)
                 reached.append(True)
                 continue
-        k = 0
         while not hit:
             t = min(first * 2.0**k, limit)
-            c = _chi2(forward, u0 + sign * t * d)
-            evals += 1
-            points[sign * t] = c
+            c = points[sign * t] = _chi2(forward, u0 + sign * t * d)
             seen.append(c)
-            if not (c <= min(seen) + threshold):
+            if not (c <= min(seen) + PROFILE_THRESHOLD):
                 break
-            t_in = t
-            if t >= limit:
-                hit = True
-            k += 1
+            t_in, hit, k = t, t >= limit, k + 1
         ends.append(sign * t_in)
         reached.append(hit)
-    floor = min(seen)
     inside = [c for t, c in points.items() if ends[0] <= t <= ends[1] and np.isfinite(c)]
-    rise = max(inside) - floor if inside else np.nan
+    rise = max(inside) - min(seen) if inside else np.nan
     # a later, lower minimum can leave earlier points above the threshold: the interval is then the
     # connected run around the best fit, as stepped; ``rise`` reports how flat it was
-    return ends[0], ends[1], reached[0], reached[1], float(rise), evals
+    return ends[0], ends[1], reached[0], reached[1], float(rise)
 
 
-def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None) -> list[tuple]:
+def directions(problem: Problem, forward: Forward, u0: np.ndarray) -> list[tuple]:
     """(unit direction, singular value, structural, unconstrained) for every direction of the free log10
-    space; unconstrained: beyond the rank the number of reported numbers allows.
-
-    ``jacobian``: d residual / d log10(free parameter) at a set with the same motion (e.g. the optimiser's);
-    without one (or with a non-finite one) it is taken by central differences here.
-    """
+    space; unconstrained: beyond the rank the number of reported numbers allows."""
     basis = problem.identifiable_basis()
-    n, k = basis.shape
-    out = []
-    if k < n:  # structural null space: the complement of the identifiable basis
-        _, _, vt = np.linalg.svd(basis.T, full_matrices=True)
-        for v in vt[k:]:
-            out.append((_signed(v), 0.0, True, False))
-    cols = []
-    for j in range(k):
-        e = basis[:, j] * JACOBIAN_STEP
-        cols.append(
-            (forward.residuals(10.0 ** (u0 + e)) - forward.residuals(10.0 ** (u0 - e))) / (2 * JACOBIAN_STEP)
-        )
-    jw = np.array(cols).T if cols else np.zeros((len(problem.observations), 0))
+    k = basis.shape[1]
+    out = [(_signed(v), 0.0, True, False) for v in problem.null_basis().T]  # the same motion
+    jw = jacobian_w(forward, basis, u0)
     if not np.all(np.isfinite(jw)):  # a neighbour infeasible: the coordinate axes themselves are profiled
         out += [(_signed(basis[:, j]), np.nan, False, False) for j in range(k)]
         return out
@@ -213,27 +157,44 @@ def directions(problem: Problem, forward: Forward, u0: np.ndarray, jacobian=None
     return out
 
 
+def jacobian_w(forward: Forward, basis: np.ndarray, u0: np.ndarray) -> np.ndarray:
+    """d residual / d w at u0 (w: coordinates along the columns of ``basis``), central differences."""
+    cols = [
+        (forward.residuals(10.0 ** (u0 + e)) - forward.residuals(10.0 ** (u0 - e))) / (2 * JACOBIAN_STEP)
+        for e in basis.T * JACOBIAN_STEP
+    ]
+    return np.array(cols).T if cols else np.zeros((len(forward.problem.observations), 0))
+
+
 def _signed(v: np.ndarray) -> np.ndarray:
     v = np.asarray(v, dtype=float) / np.linalg.norm(v)
     return v * np.sign(v[np.argmax(np.abs(v))])
 
 
-def identify(
-    forward: Forward, free_values, threshold: float = PROFILE_THRESHOLD, jacobian=None
-) -> Identification:
-    """Profile chi-square along every direction at ``free_values`` (a best fit); see the module text.
-    ``jacobian``: the optimiser's, if at hand (see ``directions``)."""
+def identify(forward: Forward, free_values) -> Identification:
+    """Profile chi-square along every direction at ``free_values`` (a best fit); see the module text."""
     p = forward.problem
     u0 = np.log10(np.asarray(free_values, dtype=float))
     chi2_0 = _chi2(forward, u0)
     if not np.isfinite(chi2_0):
         raise ValueError(f"{p.name}/{p.family}: the best fit is infeasible; nothing to profile")
     profiles = []
-    for d, s, structural, unconstrained in directions(p, forward, u0, jacobian):
-        known_flat = structural or unconstrained
-        t_lo, t_hi, b_lo, b_hi, rise, evals = profile(forward, u0, d, threshold, chi2_0, s, known_flat)
-        profiles.append(Profile(d, s, structural, unconstrained, t_lo, t_hi, b_lo, b_hi, rise, evals))
-    return Identification(tuple(profiles), float(threshold), len(p.free))
+    for d, s, structural, unconstrained in directions(p, forward, u0):
+        ends = profile(forward, u0, d, chi2_0, s, structural or unconstrained)
+        profiles.append(Profile(d, s, structural, unconstrained, *ends))
+    return Identification(tuple(profiles), len(p.free))
+
+
+def shift_constraints(problem: Problem, d: np.ndarray, u) -> tuple[np.ndarray, np.ndarray]:
+    """(A, b) with A s <= b for a shift s along the columns of ``d`` keeping u + d s within the bounds: the
+    box and, with the plateau constraint, sigma v_p <= 1 (both linear in log10)."""
+    lo, hi = problem.log_bounds
+    a, b = [d, -d], [hi - u, u - lo]
+    if problem.plateau_pair is not None:
+        i, j = problem.plateau_pair
+        a.append((d[i] + d[j])[None, :])
+        b.append(np.array([-(u[i] + u[j])]))
+    return np.vstack(a), np.concatenate(b)
 
 
 def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.ndarray) -> np.ndarray:
@@ -246,15 +207,8 @@ def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.n
     ridges = ident.ridge_directions
     if not ridges:
         return np.zeros((len(rows), 2))
-    u0 = np.log10(np.asarray(free_values, dtype=float))
     d = np.column_stack([r.direction for r in ridges])
-    lo, hi = problem.log_bounds
-    a_ub, b_ub = [d, -d], [hi - u0, u0 - lo]
-    if problem.nonnegative_plateau and "plateau_speed" in problem.free:
-        i, j = problem.free.index("sigma"), problem.free.index("plateau_speed")
-        a_ub.append((d[i] + d[j])[None, :])
-        b_ub.append(np.array([-(u0[i] + u0[j])]))
-    a_ub, b_ub = np.vstack(a_ub), np.concatenate(b_ub)
+    a_ub, b_ub = shift_constraints(problem, d, np.log10(np.asarray(free_values, dtype=float)))
     box = [(None, None) if r.structural else (r.t_lower, r.t_upper) for r in ridges]
     out = np.zeros((len(rows), 2))
     for n, row in enumerate(rows):
@@ -279,6 +233,12 @@ def combination_rows(problem: Problem) -> dict[str, np.ndarray]:
         for name, combo in COMBINATIONS.items()
         if any(p in problem.free for p in combo)
     }
+
+
+def quantity_rows(problem: Problem) -> dict[str, np.ndarray]:
+    """log10 exponents over the free parameters of each free parameter, then of each combination (a
+    one-parameter one, sigma, keeps its parameter's place)."""
+    return {**dict(zip(problem.free, np.eye(len(problem.free)))), **combination_rows(problem)}
 
 
 def on_ridge(lower, upper) -> np.ndarray:

@@ -4,28 +4,24 @@
 from __future__ import annotations
 
 import csv
-import os
-import tempfile
+import io
 from pathlib import Path
 
 import numpy as np
 
 from ..catalogue import INVERSE_TABLES
-from ..io.netcdf import publish, write_dataset
+from ..io.netcdf import write_dataset
+from ..io.text_files import write_text_atomic
 from .dataset import INTERPRETATION
 
 
 def write_csv(rows: list[dict], path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fields = list(dict.fromkeys(k for row in rows for k in row))
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    with os.fdopen(fd, "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=fields)
-        writer.writeheader()
-        writer.writerows(rows)
-    publish(tmp, path)
-    return path
+    """Rows as CSV (the union of their keys as columns, in first-seen order), written atomically."""
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=list(dict.fromkeys(k for row in rows for k in row)))
+    writer.writeheader()
+    writer.writerows(rows)
+    return write_text_atomic(path, buf.getvalue())
 
 
 def corner_plot(ds, family: str, path) -> Path:

@@ -1,7 +1,7 @@
 """An identification problem: runs of the forward model, the reported numbers they must reproduce, the free
 parameters with their bounds, and the directions of parameter space the numbers can identify at all.
 
-The reported numbers, their tolerances and reasons come from the claims table by claim id; the stated
+The reported numbers and their tolerances come from the claims table by claim id; the stated
 parameters from the pipeline config (onedof.defaults and the figure's scene or sweep). Nothing is copied.
 
 Identifiability. In the units-as-given reading the equation of motion divided by M is
@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import get_args
 
 import numpy as np
 
@@ -28,28 +29,12 @@ from .. import catalogue
 from ..analysis.metrics import PAPER_COUNT_WINDOW
 from ..claims.rows import Claim
 from ..model.params import BeltParams, ParameterError
-from ..schema import InverseJob, InverseOnedof, given
+from ..schema import InverseJob, InverseOnedof, InverseParameter, given
 
-#: Free parameters the study may vary, in a fixed order (BeltParams field names).
-PARAMS = ("sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed")
-SYMBOLS = {
-    "sigma": "sigma",
-    "damping": "C",
-    "mu_s": "mu_s",
-    "normal_force": "N",
-    "stiffness": "K",
-    "mass": "M",
-    "plateau_speed": "v_p",
-}
-UNITS = {
-    "sigma": "s mm-1",
-    "damping": "N s mm-1",
-    "mu_s": "1",
-    "normal_force": "N",
-    "stiffness": "N mm-1",
-    "mass": "kg",
-    "plateau_speed": "mm s-1",
-}
+#: Free parameters the study may vary, in a fixed order (BeltParams field names): the config's own type.
+PARAMS = get_args(InverseParameter)
+SYMBOLS = dict(zip(PARAMS, ("sigma", "C", "mu_s", "N", "K", "M", "v_p")))
+UNITS = dict(zip(PARAMS, ("s mm-1", "N s mm-1", "1", "N", "N mm-1", "kg", "mm s-1")))
 
 #: log10 of the combinations a run depends on, as rows over PARAMS.
 COMBINATIONS = {
@@ -88,9 +73,7 @@ class Observation:
     value: float
     sd: float
     unit: str
-    reason: str
     figure: str
-    quote: str = ""
 
 
 @dataclass(frozen=True)
@@ -125,6 +108,13 @@ class Problem:
         lo = np.log10([self.bounds[p][0] for p in self.free])
         hi = np.log10([self.bounds[p][1] for p in self.free])
         return lo, hi
+
+    @property
+    def plateau_pair(self) -> tuple[int, int] | None:
+        """Indices in ``free`` of sigma and v_p where the plateau constraint sigma v_p <= 1 applies."""
+        if self.nonnegative_plateau and "plateau_speed" in self.free:
+            return self.free.index("sigma"), self.free.index("plateau_speed")
+        return None
 
     def values(self, free_values) -> dict:
         """Free parameter values as a mapping."""
@@ -167,6 +157,12 @@ class Problem:
         signs = np.sign(basis[np.argmax(np.abs(basis), axis=0), np.arange(rank)])
         return basis * signs
 
+    def null_basis(self) -> np.ndarray:
+        """Orthonormal basis (columns) of the free log10 directions that change no run: the same motion."""
+        basis = self.identifiable_basis()
+        n, k = basis.shape
+        return np.linalg.svd(basis.T, full_matrices=True)[2][k:].T if k < n else np.zeros((n, 0))
+
     def from_coordinates(self, w) -> np.ndarray:
         """Free parameter values of identifiable coordinates w: the set closest to the stated one."""
         basis = self.identifiable_basis()
@@ -180,15 +176,14 @@ class Problem:
         """The set giving the same motion as ``free_values`` that is closest to the stated set."""
         return self.from_coordinates(self.to_coordinates(free_values))
 
-    def combinations(self, free_values, run: RunDef | None = None) -> dict:
-        """K/M, C/M, mu_s N/M, sigma (and v_p) of a parameter set, for the first run or the one given."""
-        p = self.run_params(free_values, run or self.runs[0]).as_dict()
-        out = {}
-        for name, combo in COMBINATIONS.items():
-            if name == "v_p" and "plateau_speed" not in self.free:
-                continue
-            out[name] = float(np.prod([p[k] ** e for k, e in combo.items()]))
-        return out
+    def combinations(self, free_values) -> dict:
+        """K/M, C/M, mu_s N/M, sigma (and v_p, where free) of a parameter set in the first run."""
+        p = self.run_params(free_values, self.runs[0]).as_dict()
+        return {
+            name: float(np.prod([p[k] ** e for k, e in combo.items()]))
+            for name, combo in COMBINATIONS.items()
+            if name != "v_p" or "plateau_speed" in self.free
+        }
 
 
 # -- building problems from the config and the claims table ----------------------------------------------
@@ -206,7 +201,7 @@ def by_id(claims) -> dict[str, Claim]:
     return {row.id: row for row in claims}
 
 
-def _tolerance_sd(row: Claim) -> tuple[float, str]:
+def _tolerance_sd(row: Claim) -> float:
     """The reading precision of a value row as a standard deviation: its relative band if it has one (a
     value row always has a tolerance with rel or abs: stickslip.claims.rows)."""
     tol = row.tolerance
@@ -214,28 +209,19 @@ def _tolerance_sd(row: Claim) -> tuple[float, str]:
     sd = tol.rel * abs(row.value) if tol.rel is not None else tol.abs
     if not (math.isfinite(sd) and sd > 0):  # rel or abs 0 is a valid band, but no spread to fit with
         raise ParameterError(f"{where}: must give a positive spread, got {sd!r}")
-    return sd, tol.reason
+    return sd
 
 
 #: a claim names a per-reading dataset with this placeholder for the reading
 ANY_READING = "{reading}"
 
 
-def scene_dataset(scene: str) -> str:
-    """The dataset path a value claim names for a 1-DOF scene run by the exact solver (the catalogue's
-    ``onedof_dataset`` with the reading left as the claims' ``{reading}`` placeholder)."""
-    return catalogue.onedof_dataset(scene, ANY_READING, "exact")
-
-
-def sweep_dataset(sweep: str) -> str:
-    """The dataset path a value claim names for a 1-DOF sweep (the catalogue's ``sweep_dataset``)."""
-    return catalogue.sweep_dataset(sweep, ANY_READING)
-
-
 def runs_by_dataset(scenes: Iterable[str], sweeps: Iterable[str]) -> dict[str, tuple[str, str]]:
-    """Dataset path -> ("scene" | "sweep", its name), for the named 1-DOF scenes and sweeps."""
-    out = {scene_dataset(name): ("scene", name) for name in scenes}
-    out.update({sweep_dataset(name): ("sweep", name) for name in sweeps})
+    """Dataset path -> ("scene" | "sweep", its name), for the named 1-DOF scenes and sweeps: the paths a
+    value claim names (the catalogue's exact-solver ``onedof_dataset`` and ``sweep_dataset``, the reading
+    left as the claims' ``{reading}`` placeholder)."""
+    out = {catalogue.onedof_dataset(name, ANY_READING, "exact"): ("scene", name) for name in scenes}
+    out.update({catalogue.sweep_dataset(name, ANY_READING): ("sweep", name) for name in sweeps})
     return out
 
 
@@ -269,9 +255,10 @@ def claim_run(row: Claim, onedof: InverseOnedof) -> tuple[str, str, dict]:
         overrides = {sweep.parameter: value, **{k: f * value for k, f in (sweep.linked or {}).items()}}
         base = given(onedof.scenes[sweep.scene or onedof.baseline.scene].params)
         return f"{name}:{sweep.parameter}={value:g}", metric, {**base, **overrides}
+    scene, sweep = runs_by_dataset(["<scene>"], ["<sweep>"])
     raise ParameterError(
         f"{where}.dataset: {path!r} is neither the exact-solver dataset of a scene in onedof.scenes "
-        f"({scene_dataset('<scene>')}) nor a sweep in onedof.sweeps ({sweep_dataset('<sweep>')})"
+        f"({scene}) nor a sweep in onedof.sweeps ({sweep})"
     )
 
 
@@ -285,7 +272,6 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
         stated["plateau_speed"] = math.inf
     runs: list[RunDef] = []
     observations = []
-    fixed_everywhere: set[str] | None = None
     for fig in figures:
         figure = inv.figures[fig]
         one_scene = name != "joint" and figure.scene is not None
@@ -300,26 +286,24 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
             if run_name not in names:
                 runs.append(RunDef(run_name, overrides))
                 names.append(run_name)
-            sd, reason = _tolerance_sd(row)
             observations.append(
                 Observation(
                     claim=cid,
                     run=names.index(run_name),
                     metric=metric,
                     value=row.value,
-                    sd=sd,
+                    sd=_tolerance_sd(row),
                     unit=row.unit,  # a value row always has one (stickslip.claims.rows)
-                    reason=reason,
                     figure=fig,
-                    quote=row.quote,
                 )
             )
         if one_scene:
             stated.update(given(onedof.scenes[figure.scene].params))
-    for run in runs:
-        keys = {k for k in run.overrides if k in fam.free}
-        fixed_everywhere = keys if fixed_everywhere is None else fixed_everywhere & keys
-    free = tuple(p for p in PARAMS if p in fam.free and p not in (fixed_everywhere or set()))
+    fixed = [
+        set(run.overrides) & set(fam.free) for run in runs
+    ]  # a sweep's parameter, where every run sets it
+    fixed_everywhere = set.intersection(*fixed) if fixed else set()
+    free = tuple(p for p in PARAMS if p in fam.free and p not in fixed_everywhere)
     defaults = onedof.defaults
     return Problem(
         name=name,
@@ -339,10 +323,3 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
         },
         nonnegative_plateau="nonnegative_plateau_friction" in (inv.constraints or {}),
     )
-
-
-def with_observations(problem: Problem, observations) -> Problem:
-    """The same problem fitted to other numbers (recovery checks, leave-one-out)."""
-    from dataclasses import replace
-
-    return replace(problem, observations=tuple(observations))

@@ -22,12 +22,9 @@ parameters) is *fixed* on a grid and chi-square is *re-minimised over everything
 * q is *identifiable* when its profile exceeds the threshold on both sides within the bounds; its interval
   is then a confidence interval around the best fit. Otherwise q is a *range* (never a point): the side that
   stays within the threshold up to the bound is *open* (the data do not bound it there).
-* With the runs' structure (``structure.problem_structure``, derived from the equations) only the quantities
-  the structure leaves identifiable are profiled, and the dimensions are the structure's (exact); a quantity
-  it leaves free is a range over the fibre (``structure.fibre_extent``) of the best fit and of each profile's
-  ends. Without it (a problem profiled on its own), dimensions are counted as Raue et al. resolve a
-  non-identifiability: fix one non-identifiable quantity at its best fit and profile the others again, until
-  every one is identifiable; the number fixed is the number of flat dimensions of the motion.
+* Only the quantities the runs' structure (``structure.problem_structure``, derived from the equations)
+  leaves identifiable are profiled, and the dimensions are the structure's (exact); a quantity it leaves
+  free is a range over the fibre (``structure.fibre_extent``) of the best fit and of each profile's ends.
 
 Limits: a grid point is judged by a local minimisation with a fixed budget, so a flat set reachable only
 through a barrier is not seen (the profile is then an upper bound of PL_q); the grid doubles outward, so a
@@ -44,8 +41,8 @@ from scipy.stats import chi2 as chi2_distribution
 
 from .fit import _fun
 from .forward import Forward
-from .identify import JACOBIAN_STEP
-from .problem import COMBINATIONS, Problem
+from .identify import JACOBIAN_STEP, jacobian_w, quantity_rows, shift_constraints
+from .problem import Problem
 from .structure import fibre_extent, identifiable_in_structure, runs_rank
 
 #: Confidence of the profile-likelihood intervals (pointwise, one parameter).
@@ -66,24 +63,17 @@ PL_HALVINGS = 2
 #: risen by this fraction of it: a smooth rise, stepped to 1/8 of a step by the halvings, ends above it; a
 #: valley the re-minimisation cannot follow further (an exact ridge stays at the floor) does not.
 PL_RISE = 0.25
-#: A profiled quantity moves along a flat dimension, and is a range, when its spread over the sets the open
-#: profiles found within the threshold exceeds this multiple of its linearised 95 % interval at the best fit
-#: (the error bar a point would claim; 2 leaves room for the valley's own width and the Jacobian's noise).
-PL_FLAT_FACTOR = 2.0
 #: Largest grid step [log10 units]: the next set is extrapolated from the last ones, which a curved valley
 #: allows over a short step only.
 PL_MAX_STEP = 0.2
 #: Smallest first grid step [log10 units].
 PL_FIRST_STEP = 0.01
-#: A row whose component outside the identifiable subspace exceeds this is not profiled (structural).
+#: A row whose component along the structural null space is below this does not move along it.
 ROW_SPACE_TOL = 1e-9
 
 
 @dataclass(frozen=True)
 class LikelihoodProfile:
-    name: str
-    row: np.ndarray
-    """The profiled quantity as a row over the free log10 parameters."""
     t: np.ndarray
     """Offsets [log10 units] from the best fit evaluated, ascending."""
     chi2: np.ndarray
@@ -96,38 +86,22 @@ class LikelihoodProfile:
     open_lower: bool
     open_upper: bool
     """Within the threshold up to the bound of the quantity on that side."""
-    evaluations: int
 
     @property
     def identifiable(self) -> bool:
         return not (self.open_lower or self.open_upper)
 
-    def within(self, floor: float, threshold: float) -> np.ndarray:
-        """Free parameter sets of the profile inside [t_lower, t_upper] (within the threshold)."""
-        keep = (self.t >= self.t_lower) & (self.t <= self.t_upper) & (self.chi2 <= floor + threshold)
-        return self.points[keep]
-
 
 @dataclass(frozen=True)
 class ProfileIdentification:
     profiles: dict
-    """Name -> LikelihoodProfile of the first round (every other quantity free)."""
-    fixed: tuple
-    """Quantities fixed, one per flat dimension, in the order they were fixed."""
-    motion_dimensions: int
-    threshold: float
+    """Name -> LikelihoodProfile of every quantity the structure leaves identifiable."""
+    dimensions: int
+    """The structural dimension (``structure.runs_rank``): exact."""
     floor: float
     """Smallest chi-square seen (the best fit's, or lower where a profile found one)."""
-    evaluations: int
-    jacobian_w: np.ndarray | None = None
-    """d residual / d identifiable coordinate at the best fit (central differences)."""
-    structure: tuple = ()
-    """The runs' structure (``structure.problem_structure``): what the equations leave free, exactly. With
-    it only the structurally identifiable quantities are profiled, and nothing is fixed."""
-
-    @property
-    def dimensions(self) -> int:
-        return self.motion_dimensions - len(self.fixed)
+    structure: tuple
+    """The runs' structure (``structure.problem_structure``): what the equations leave free, exactly."""
 
 
 class _Within(Exception):
@@ -135,46 +109,18 @@ class _Within(Exception):
         self.z = z
 
 
-def profiled_rows(problem: Problem, structure: tuple = ()) -> dict[str, np.ndarray]:
-    """Quantities to profile: every free parameter the motion determines on its own, and every combination
-    (K/M, C/M, mu_s N/M, ...) that involves a parameter the motion does not determine on its own.
-
-    With the runs' ``structure`` (derived from the equations), exactly the quantities the equations fix:
-    a quantity they leave free is a range whatever the data, so profiling it would only trace the fibre
-    (``structure.fibre_extent`` gives that exactly, without a forward run)."""
-    if structure:
-        return structural_rows(problem, structure)
-    basis = problem.identifiable_basis()
-    eye = np.eye(len(problem.free))
-
-    def in_row_space(row):
-        return np.linalg.norm(row - basis @ (basis.T @ row)) <= ROW_SPACE_TOL * np.linalg.norm(row)
-
-    rows = {p: eye[i] for i, p in enumerate(problem.free) if in_row_space(eye[i])}
-    for name, combo in COMBINATIONS.items():
-        row = np.array([float(combo.get(p, 0)) for p in problem.free])
-        if name in rows or not np.any(row) or not in_row_space(row):
-            continue
-        if any(row[i] and p not in rows for i, p in enumerate(problem.free)):
-            rows[name] = row
-    return rows
-
-
 def structural_rows(problem: Problem, structure: tuple) -> dict[str, np.ndarray]:
-    """Free parameters, then combinations of several, whose log10 row lies in the row space of the runs'
-    derived combinations (``structure.identifiable_in_structure``: an exact rank)."""
+    """The quantities to profile: free parameters, then combinations of several, whose log10 row lies in the
+    row space of the runs' derived combinations (``structure.identifiable_in_structure``: an exact rank). A
+    quantity the equations leave free is a range whatever the data: profiling it would only trace the fibre,
+    which ``structure.fibre_extent`` gives exactly, without a forward run."""
     free = tuple(problem.free)
-    eye = np.eye(len(free))
-    rows = {
-        q: eye[i] for i, q in enumerate(free) if identifiable_in_structure(structure, free, tuple(eye[i]))
+    return {
+        name: row
+        for name, row in quantity_rows(problem).items()
+        if (name in free or np.count_nonzero(row) > 1)
+        and identifiable_in_structure(structure, free, tuple(row))
     }
-    for name, combo in COMBINATIONS.items():
-        row = np.array([float(combo.get(q, 0)) for q in free])
-        if name in rows or np.count_nonzero(row) < 2:
-            continue
-        if identifiable_in_structure(structure, free, tuple(row)):
-            rows[name] = row
-    return rows
 
 
 class _Space:
@@ -182,48 +128,33 @@ class _Space:
 
     def __init__(self, problem: Problem, u0: np.ndarray):
         self.p, self.u0 = problem, u0
-        self.basis = problem.identifiable_basis()
-        n, k = self.basis.shape
-        self.null = np.linalg.svd(self.basis.T, full_matrices=True)[2][k:].T if k < n else np.zeros((n, 0))
+        self.basis, self.null = problem.identifiable_basis(), problem.null_basis()
         self.lo, self.hi = problem.log_bounds
-        self.plateau = problem.nonnegative_plateau and "plateau_speed" in problem.free
         self.jacobian_w, self.r0 = None, None
 
     def jacobian(self, forward: Forward) -> np.ndarray:
         """d residual / d w at the best fit by central differences (step JACOBIAN_STEP), once."""
         if self.jacobian_w is None:
             self.r0 = forward.residuals(10.0**self.u0)
-            cols = []
-            for e in self.basis.T * JACOBIAN_STEP:
-                up, down = forward.residuals(10.0 ** (self.u0 + e)), forward.residuals(10.0 ** (self.u0 - e))
-                cols.append((up - down) / (2 * JACOBIAN_STEP))
-            self.jacobian_w = np.array(cols).T
+            self.jacobian_w = jacobian_w(forward, self.basis, self.u0)
         return self.jacobian_w
-
-    def _constraints(self, u) -> tuple[np.ndarray, np.ndarray]:
-        """A_ub s <= b_ub for a shift s along the null space keeping u + N s within the bounds."""
-        a, b = [self.null, -self.null], [self.hi - u, u - self.lo]
-        if self.plateau:
-            i, j = self.p.free.index("sigma"), self.p.free.index("plateau_speed")
-            a.append((self.null[i] + self.null[j])[None, :])
-            b.append(np.array([-(u[i] + u[j])]))
-        return np.vstack(a), np.concatenate(b)
 
     def feasible(self, w) -> np.ndarray:
         """log10 free values with coordinates w: through the best fit, else shifted into the bounds."""
         u = self.u0 + self.basis @ w
         if self.p.in_bounds(_power10(u)) or self.null.shape[1] == 0:
             return u
-        a, b = self._constraints(u)
+        a, b = shift_constraints(self.p, self.null, u)
         res = linprog(np.zeros(self.null.shape[1]), A_ub=a, b_ub=b, bounds=(None, None), method="highs")
         return u + self.null @ res.x if res.status == 0 else u
 
-    def extent(self, u, rows: np.ndarray) -> np.ndarray:
-        """(lower, upper) of each row . u over the structural shifts of u within the bounds."""
-        out = np.tile((rows @ u)[:, None], (1, 2))
+    def extremes(self, u, rows: np.ndarray) -> tuple[np.ndarray, list]:
+        """(lower, upper) of each row . u over the structural shifts of u within the bounds, and the shifted
+        sets where each is reached (on the straight part of the fibre: starts for ``fibre_extent``)."""
+        out, sets = np.tile((rows @ u)[:, None], (1, 2)), []
         if self.null.shape[1] == 0:
-            return out
-        a, b = self._constraints(u)
+            return out, sets
+        a, b = shift_constraints(self.p, self.null, u)
         for n, row in enumerate(rows):
             c = row @ self.null
             if np.linalg.norm(c) <= ROW_SPACE_TOL:
@@ -231,7 +162,9 @@ class _Space:
             for col, sign in ((0, 1.0), (1, -1.0)):
                 res = linprog(sign * c, A_ub=a, b_ub=np.maximum(b, 0.0), bounds=(None, None), method="highs")
                 out[n, col] += sign * res.fun if res.status == 0 else np.nan
-        return out
+                if res.status == 0:
+                    sets.append(u + self.null @ res.x)
+        return out, sets
 
     def slack(self, u) -> float:
         """Largest distance [log10] to the box bounds of any set with the motion of u (structural shifts)."""
@@ -252,73 +185,49 @@ class _Space:
         return float(lo), float(hi)
 
 
-def _first_step(space: _Space, g: np.ndarray, threshold: float, limit: float) -> float:
+def _first_step(space: _Space, g: np.ndarray, limit: float) -> float:
     """Offset where the linearised profile rises by half the threshold (Gauss-Newton spread of g . w)."""
     jw = space.jacobian_w
     if jw is None or not np.all(np.isfinite(jw)):
         return max(PL_FIRST_STEP, limit / 8)
     var = float(g @ np.linalg.pinv(jw.T @ jw) @ g) / float(g @ g) ** 2
-    step = np.sqrt(threshold / 2 * var) if var > 0 else limit / 8
+    step = np.sqrt(PL_THRESHOLD / 2 * var) if var > 0 else limit / 8
     return float(np.clip(step, PL_FIRST_STEP, max(min(limit / 8, PL_MAX_STEP), PL_FIRST_STEP)))
 
 
-def profile_row(
-    forward: Forward,
-    space: _Space,
-    name: str,
-    row: np.ndarray,
-    floor: float,
-    fixed=(),
-    pool: list | None = None,
-    threshold: float = PL_THRESHOLD,
-) -> LikelihoodProfile | None:
-    """The profile likelihood of one quantity (see the module text); None where the fixed quantities
-    already determine it. ``pool``: log10 sets already found within the threshold (by other profiles),
-    tried as starts where the extrapolated one fails; the sets found here are added to it."""
+def profile_row(forward: Forward, space: _Space, row: np.ndarray, floor: float, pool: list):
+    """The profile likelihood (a ``LikelihoodProfile``) of one quantity (see the module text); None where
+    it does not move the identifiable coordinates. ``pool``: log10 sets already found within the threshold
+    (by other profiles), tried as starts where the extrapolated one fails; the sets found here join it."""
     g = space.basis.T @ row
-    cons = np.array([space.basis.T @ f for f in fixed]).reshape(-1, len(g))
-    full = np.vstack([cons, g])
+    full = np.vstack([g])
     _, s, vt = np.linalg.svd(full, full_matrices=True)
     rank = int(np.sum(s > 1e-10 * max(s.max(), 1.0)))
-    if rank <= len(cons):
+    if rank == 0:
         return None
-    q = vt[rank:].T  # the coordinates that keep every fixed quantity and this one
-    along = np.linalg.pinv(full) @ np.r_[np.zeros(len(cons)), 1.0]  # moves g . w by 1, keeps the others
-    evals = forward.evaluations
-    walk = _Walk(forward, space, (g, q, along), [] if pool is None else pool, threshold, floor)
-    ends, opens = [], []
-    for sign in (-1.0, 1.0):
-        t_lo, t_hi = space.row_limits(row)
-        limit = (-t_lo if sign < 0 else t_hi) * (1 - 1e-9)
-        t_in, reached = walk.side(sign, limit, _first_step(space, g, threshold, limit), bool(fixed))
-        ends.append(sign * t_in)
-        opens.append(reached)
-    order = np.argsort(walk.t, kind="stable")
-    return LikelihoodProfile(
-        name=name,
-        row=row,
-        t=np.array(walk.t)[order],
-        chi2=np.array(walk.chi2)[order],
-        points=10.0 ** np.array(walk.u)[order],
-        t_lower=ends[0],
-        t_upper=ends[1],
-        open_lower=opens[0],
-        open_upper=opens[1],
-        evaluations=forward.evaluations - evals,
+    q = vt[rank:].T  # the coordinates that keep this quantity
+    along = np.linalg.pinv(full) @ np.ones(1)  # moves g . w by 1
+    walk = _Walk(forward, space, (g, q, along), pool, floor)
+    t_lo, t_hi = space.row_limits(row)
+    (below, open_lower), (above, open_upper) = (
+        walk.side(sign, limit, _first_step(space, g, limit))
+        for sign, limit in ((-1.0, -t_lo * (1 - 1e-9)), (1.0, t_hi * (1 - 1e-9)))
     )
+    order = np.argsort(walk.t, kind="stable")
+    t, chi2, u = (np.array(values)[order] for values in (walk.t, walk.chi2, walk.u))
+    return LikelihoodProfile(t, chi2, 10.0**u, -below, above, open_lower, open_upper)
 
 
 class _Walk:
     """The grid of one profile: every point evaluated (t, chi-square, set), stepping out side by side."""
 
-    def __init__(self, forward, space, coordinates, pool, threshold, floor):
+    def __init__(self, forward, space, coordinates, pool, floor):
         self.g, self.q, self.along = coordinates  # the quantity, the free coordinates, the step along it
-        self.fun, self.space, self.pool = _fun(forward, space.p), space, pool
-        self.threshold, self.floor = threshold, floor
+        self.fun, self.space, self.pool, self.floor = _fun(forward, space.p), space, pool, floor
         self.jq = space.jacobian(forward) @ self.q if self.q.shape[1] else None
         self.t, self.chi2, self.u = [0.0], [floor], [space.u0]
 
-    def side(self, sign: float, limit: float, step: float, constrained: bool) -> tuple[float, bool]:
+    def side(self, sign: float, limit: float, step: float) -> tuple[float, bool]:
         """(last offset within the threshold, whether the data leave that side open) stepping out: open when
         the bound of the quantity is reached within the threshold, when the valley runs into the bounds of
         the others (no set within the bounds found, or the last set within the threshold lies within PL_EDGE
@@ -331,15 +240,14 @@ class _Walk:
                 sign * t, _predict(zs, ts, t, self.jq, self.space, self.along * sign * t), zs[-1]
             )
             self.t.append(sign * t), self.chi2.append(c), self.u.append(u)
-            if not c <= self.floor + self.threshold:
+            if not c <= self.floor + PL_THRESHOLD:
                 if halvings < PL_HALVINGS:  # a curved valley may have been overshot: shorter steps on
                     step, halvings, grow = step / 2, halvings + 1, 1.0
                     continue
-                flat = c_in < self.floor + PL_RISE * self.threshold  # had not risen: no data bound
+                flat = c_in < self.floor + PL_RISE * PL_THRESHOLD  # had not risen: no data bound
                 return t_in, bool(np.isinf(c) or flat or self.space.slack(u_in) < PL_EDGE)
             self.floor = min(self.floor, c)
-            if not constrained:
-                self.pool.append(u)
+            self.pool.append(u)
             zs.append(z), ts.append(t)
             t_in, reached, step, u_in, c_in = t, t >= limit, min(grow * step, PL_MAX_STEP), u, c
         return t_in, reached
@@ -350,7 +258,7 @@ class _Walk:
         w_fixed = self.along * t
         best = self.point(w_fixed, predicted)
         for start in (previous, *self.from_pool(w_fixed)):
-            if best[1] <= self.floor + self.threshold or start is None:
+            if best[1] <= self.floor + PL_THRESHOLD or start is None:
                 break
             if start is previous and np.allclose(previous, predicted):
                 continue
@@ -359,7 +267,7 @@ class _Walk:
 
     def point(self, w_fixed, z0):
         return _minimise(
-            self.fun, self.space, w_fixed, self.q, z0, self.floor + PL_CLOSE * self.threshold, PL_NFEV
+            self.fun, self.space, w_fixed, self.q, z0, self.floor + PL_CLOSE * PL_THRESHOLD, PL_NFEV
         )
 
     def from_pool(self, w_fixed) -> list:
@@ -415,106 +323,30 @@ def _power10(u) -> np.ndarray:
         return 10.0**u
 
 
-def profile_identify(forward: Forward, free_values, structure: tuple = ()) -> ProfileIdentification:
-    """Profile every quantity of ``profiled_rows`` at a best fit. With the runs' ``structure`` the dimensions
-    are the equations' (exact) and only the structurally identifiable quantities are profiled; without it,
-    flat ones are fixed one by one (module text)."""
+def profile_identify(forward: Forward, free_values, structure: tuple) -> ProfileIdentification:
+    """Profile every quantity the runs' ``structure`` leaves identifiable (``structural_rows``) at a best
+    fit; the dimensions are the equations' (exact)."""
     p = forward.problem
     u0 = np.log10(np.asarray(free_values, dtype=float))
     space = _Space(p, u0)
     r0 = forward.residuals(10.0**u0)
     floor = float(r0 @ r0)
-    evals = forward.evaluations
-    rows = profiled_rows(p, structure)
     profiles, pool = {}, []
-    for name, row in rows.items():
-        pr = profile_row(forward, space, name, row, floor, pool=pool)
+    for name, row in structural_rows(p, structure).items():
+        pr = profile_row(forward, space, row, floor, pool)
         if pr is not None:
             profiles[name] = pr
             floor = min(floor, float(np.min(pr.chi2)))
-    if structure:
-        return ProfileIdentification(
-            profiles,
-            (),
-            runs_rank(structure, tuple(p.free)),
-            PL_THRESHOLD,
-            floor,
-            forward.evaluations - evals + 1,
-            space.jacobian_w,
-            structure,
-        )
-    fixed = []
-    flat = [n for n, pr in profiles.items() if not pr.identifiable]
-    while flat:
-        fixed.append(flat[0])
-        again = []
-        for name in flat[1:]:
-            pr = profile_row(forward, space, name, rows[name], floor, [rows[f] for f in fixed], pool)
-            if pr is not None and not pr.identifiable:
-                again.append(name)
-        flat = again
-    k = space.basis.shape[1]
-    return ProfileIdentification(
-        profiles, tuple(fixed), k, PL_THRESHOLD, floor, forward.evaluations - evals + 1, space.jacobian_w
-    )
+    return ProfileIdentification(profiles, runs_rank(structure, tuple(p.free)), floor, structure)
 
 
-def profile_ranges(problem: Problem, free_values, pid: ProfileIdentification, rows: np.ndarray) -> np.ndarray:
-    """(lower, upper) log10 change of each row . u from the best fit over the sets the profiles found within
-    the threshold, each moved along the structural null space within the bounds (with the runs' structure:
-    over the whole fibre, ``structure.fibre_extent``; from the best fit and each profile's two ends, the
-    sets between lie on the same valley)."""
-    u0 = np.log10(np.asarray(free_values, dtype=float))
-    space = _Space(problem, u0)
-    rows = np.atleast_2d(np.asarray(rows, dtype=float))
-    if pid.structure:
-        points = [u0] + [u for pr in pid.profiles.values() for u in _ends(pr, pid)]
-    else:
-        points = [u0] + [
-            np.log10(x) for pr in pid.profiles.values() for x in pr.within(pid.floor, pid.threshold)
-        ]
-    ext = np.array([space.extent(u, rows) for u in points])  # points x rows x 2
-    if pid.structure:
-        lo, hi = problem.log_bounds
-        pair = (problem.free.index("sigma"), problem.free.index("plateau_speed")) if space.plateau else None
-        fibre = np.array(
-            [
-                fibre_extent(
-                    pid.structure, tuple(problem.free), u, rows, lo, hi, pair, _corners(space, u, rows)
-                )
-                for u in points
-            ]
-        )
-        ext = np.stack([np.fmin(ext[..., 0], fibre[..., 0]), np.fmax(ext[..., 1], fibre[..., 1])], axis=-1)
-    base = rows @ u0
-    return np.column_stack([np.nanmin(ext[:, :, 0], axis=0) - base, np.nanmax(ext[:, :, 1], axis=0) - base])
-
-
-def _ends(pr: LikelihoodProfile, pid: ProfileIdentification) -> list:
+def _ends(pr: LikelihoodProfile, floor: float) -> list:
     """log10 sets at the two ends of a profile's interval within the threshold."""
-    keep = (pr.t >= pr.t_lower) & (pr.t <= pr.t_upper) & (pr.chi2 <= pid.floor + pid.threshold)
+    keep = (pr.t >= pr.t_lower) & (pr.t <= pr.t_upper) & (pr.chi2 <= floor + PL_THRESHOLD)
     if not np.any(keep):
         return []
     t, u = pr.t[keep], np.log10(pr.points[keep])
     return [u[int(np.argmin(t))], u[int(np.argmax(t))]]
-
-
-def _corners(space: _Space, u, rows: np.ndarray) -> list:
-    """Sets on the straight part of the fibre through u (the linear null space) where each row is extreme:
-    starts for ``fibre_extent``."""
-    if space.null.shape[1] == 0:
-        return []
-    a, b = space._constraints(u)
-    out = []
-    for row in rows:
-        c = row @ space.null
-        if np.linalg.norm(c) <= ROW_SPACE_TOL:
-            continue
-        for sign in (1.0, -1.0):
-            res = linprog(sign * c, A_ub=a, b_ub=np.maximum(b, 0.0), bounds=(None, None), method="highs")
-            if res.status == 0:
-                out.append(u + space.null @ res.x)
-    return out
 
 
 @dataclass(frozen=True)
@@ -528,58 +360,46 @@ class QuantityRange:
     """The range reaches the bounds on that side within the threshold (the data do not bound it there)."""
     profiled: bool
     identifiable: bool
-    """Profiled, its profile exceeds the threshold on both sides within the bounds, and it does not move
-    along a flat dimension (``quantity_ranges``)."""
+    """Profiled, and its profile exceeds the threshold on both sides within the bounds."""
 
 
 def quantity_ranges(problem: Problem, free_values, pid: ProfileIdentification, rows: dict) -> dict:
     """Name -> QuantityRange of each row (a free parameter or a combination, in log10 exponents over the
-    free parameters): the extent over every set the profiles found within the threshold, each moved along
-    the structural null space within the bounds; open where that reaches the row's limit over the bounds
-    box or where its own profile ended on the bounds."""
+    free parameters): the extent over the fibre (``structure.fibre_extent``) through the best fit and each
+    profile's two ends (the sets between lie on the same valley), and over the structural shifts of those
+    within the bounds; open where that reaches the row's limit over the bounds box or where its own profile
+    ended on the bounds."""
     names = list(rows)
     matrix = np.array([rows[n] for n in names], dtype=float).reshape(len(names), -1)
-    ext = profile_ranges(problem, free_values, pid, matrix)
     u0 = np.log10(np.asarray(free_values, dtype=float))
     space = _Space(problem, u0)
+    lower, upper = problem.log_bounds
+    ext, fibre = [], []
+    for u in [u0] + [u for pr in pid.profiles.values() for u in _ends(pr, pid.floor)]:
+        shifts, corners = space.extremes(u, matrix)
+        ext.append(shifts)
+        fibre.append(
+            fibre_extent(
+                pid.structure, tuple(problem.free), u, matrix, lower, upper, problem.plateau_pair, corners
+            )
+        )
+    ext, fibre = np.array(ext), np.array(fibre)  # points x rows x 2
+    ext = np.stack([np.fmin(ext[..., 0], fibre[..., 0]), np.fmax(ext[..., 1], fibre[..., 1])], axis=-1)
+    base = matrix @ u0
+    ext = np.column_stack([np.nanmin(ext[:, :, 0], axis=0) - base, np.nanmax(ext[:, :, 1], axis=0) - base])
     value = 10.0 ** (matrix @ u0)
-    flat_sets = [
-        np.log10(x)
-        for pr in pid.profiles.values()
-        if not pr.identifiable
-        for x in pr.within(pid.floor, pid.threshold)
-    ]
-    half = _linear_half_width(space, pid, matrix)
     out = {}
     for i, name in enumerate(names):
         lo, hi = space.row_limits(matrix[i])
         pr = pid.profiles.get(name)
         open_lo = bool(ext[i, 0] <= lo + 1e-6 or (pr is not None and pr.open_lower))
         open_hi = bool(ext[i, 1] >= hi - 1e-6 or (pr is not None and pr.open_upper))
-        along = [matrix[i] @ u for u in flat_sets]
-        # with the structure, whether it moves along a flat dimension is the equations' answer (not profiled)
-        moves = (
-            not pid.structure
-            and bool(along)
-            and np.ptp(along + [matrix[i] @ u0]) > PL_FLAT_FACTOR * 2 * half[i]
-        )
         out[name] = QuantityRange(
             lower=float(value[i] * 10.0 ** ext[i, 0]),
             upper=float(value[i] * 10.0 ** ext[i, 1]),
             open_lower=open_lo,
             open_upper=open_hi,
             profiled=pr is not None,
-            identifiable=bool(pr is not None and pr.identifiable and not (open_lo or open_hi or moves)),
+            identifiable=bool(pr is not None and pr.identifiable and not (open_lo or open_hi)),
         )
     return out
-
-
-def _linear_half_width(space: _Space, pid: ProfileIdentification, matrix: np.ndarray) -> np.ndarray:
-    """Linearised (Gauss-Newton) 95 % half-width [log10] of each row at the best fit: the error bar a point
-    estimate would claim."""
-    jw = space.jacobian_w if space.jacobian_w is not None else pid.jacobian_w
-    if jw is None or not np.all(np.isfinite(jw)):
-        return np.full(len(matrix), np.inf)
-    cov = np.linalg.pinv(jw.T @ jw)
-    g = matrix @ space.basis
-    return np.sqrt(pid.threshold * np.clip(np.einsum("ij,jk,ik->i", g, cov, g), 0.0, None))

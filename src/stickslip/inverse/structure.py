@@ -26,7 +26,11 @@ from __future__ import annotations
 
 import functools
 
+import numpy as np
 import sympy as sp
+from scipy.optimize import minimize
+
+from .forward import build_model
 
 #: The model's parameters as sympy symbols (BeltParams field names), all positive.
 SYMBOLS = {
@@ -90,18 +94,6 @@ def phase_combinations(phases) -> dict[str, sp.Expr]:
     return out
 
 
-@functools.cache
-def structural_rank(phases: tuple, free: tuple, fixed: tuple = ()) -> int:
-    """Generic rank of d(combinations)/d log(free parameters) for the visited ``phases``; ``fixed``: (name,
-    value) pairs substituted first (inputs such as V_b, parameters a run fixes), as exact rationals."""
-    combos = list(phase_combinations(phases).values())
-    if not combos or not free:
-        return 0
-    subs = {SYMBOLS[name]: sp.Rational(str(value)) for name, value in fixed}
-    rows = [[SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free] for e in combos]
-    return generic_rank(sp.Matrix(rows).subs(subs).tolist())
-
-
 #: Exact rational points (unrelated primes) at which a symbolic Jacobian's rank is taken. At a point the rank
 #: never exceeds the generic (symbolic) rank, and equals it off the zero set of the minors, a proper algebraic
 #: subset; the larger of two unrelated points is the generic rank unless both lie on it.
@@ -129,8 +121,6 @@ def generic_rank(rows) -> int:
 def visited_phases(traj, plateau_speed: float = float("inf")) -> tuple:
     """The phases an exact trajectory visits (its switching record), and the plateau where |v_r| exceeds
     ``plateau_speed``."""
-    import numpy as np
-
     found = set()
     segments = np.asarray(traj.segments if traj.segments is not None else [], dtype=float).reshape(-1, 3)
     for t0, t1, phase in segments:
@@ -146,17 +136,24 @@ def visited_phases(traj, plateau_speed: float = float("inf")) -> tuple:
     return tuple(p for p in PHASES if p in found)
 
 
-@functools.cache
-def _jacobian_rows(runs: tuple, free: tuple) -> list:
-    """d(combinations)/d log(free) of every run, stacked: ``runs`` holds (phases, fixed pairs, overridden
-    names) per run; a parameter a run overrides (a sweep's value) is an input there, its column zero."""
-    rows = []
+def _run_combinations(runs: tuple) -> list[tuple[sp.Expr, tuple]]:
+    """(combination, names the run overrides) of every run of ``runs`` ((phases, fixed pairs, overridden
+    names) per run), its inputs substituted as exact rationals."""
+    out = []
     for phases, fixed, overridden in runs:
         subs = {SYMBOLS[name]: sp.Rational(str(value)) for name, value in fixed}
-        for e in phase_combinations(phases).values():
-            row = [0 if q in overridden else SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free]
-            rows.append([sp.sympify(x).subs(subs) for x in row])
-    return rows
+        out += [(sp.sympify(e).subs(subs), overridden) for e in phase_combinations(phases).values()]
+    return out
+
+
+@functools.cache
+def _jacobian_rows(runs: tuple, free: tuple) -> list:
+    """d(combinations)/d log(free) of every run, stacked; a parameter a run overrides (a sweep's value) is an
+    input there, its column zero."""
+    return [
+        [0 if q in overridden else SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free]
+        for e, overridden in _run_combinations(runs)
+    ]
 
 
 @functools.cache
@@ -182,8 +179,6 @@ def problem_structure(problem, free_values) -> tuple[int, tuple, tuple]:
     """(structural dimension, the phases each run visits, the runs' structure for
     ``identifiable_in_structure``) of an inverse problem at a parameter set: each run solved once by the
     forward model's own solver, its visited phases read off its switching record."""
-    from .forward import build_model
-
     settings, per_run = problem.run_settings, []
     for run in problem.runs:
         params = problem.run_params(free_values, run)
@@ -200,24 +195,13 @@ def problem_structure(problem, free_values) -> tuple[int, tuple, tuple]:
 # -- the fibre: every parameter set with the same motion ---------------------------------------------------
 
 
-def _run_expressions(runs: tuple, free: tuple) -> list:
-    """The combinations of every run with its inputs substituted (exact), over the free symbols."""
-    out = []
-    for phases, fixed, _ in runs:
-        subs = {SYMBOLS[name]: sp.Rational(str(value)) for name, value in fixed}
-        for e in phase_combinations(phases).values():
-            e = sp.sympify(e).subs(subs)
-            if e.free_symbols and e not in out:
-                out.append(e)
-    return out
-
-
 @functools.cache
 def independent_combinations(runs: tuple, free: tuple) -> tuple:
     """A maximal set of the runs' combinations with independent log-Jacobian rows (exact generic rank): the
     equations that pin the fibre, as many as the structural dimension."""
     chosen, rows = [], []
-    for e in _run_expressions(runs, free):
+    expressions = dict.fromkeys(e for e, _ in _run_combinations(runs) if e.free_symbols)
+    for e in expressions:
         row = [SYMBOLS[q] * sp.diff(e, SYMBOLS[q]) for q in free]
         if generic_rank(rows + [row]) > len(rows):
             chosen.append(e)
@@ -228,8 +212,6 @@ def independent_combinations(runs: tuple, free: tuple) -> tuple:
 @functools.cache
 def _fibre_functions(runs: tuple, free: tuple):
     """(h, dh/du) of the independent combinations as numpy functions of u = log10 of the free values."""
-    import numpy as np
-
     exprs = independent_combinations(runs, free)
     syms = [SYMBOLS[q] for q in free]
     h = sp.lambdify([syms], list(exprs), "numpy")
@@ -260,9 +242,6 @@ def fibre_extent(runs: tuple, free: tuple, u0, rows, lower, upper, pair=None, st
     from ``starts`` (sets known to lie on the fibre, e.g. the corners of its straight part); only a result
     back on the fibre (``FIBRE_TOL``) within the bounds counts, so a range is never wider than the fibre,
     and at least the extent of the starts."""
-    import numpy as np
-    from scipy.optimize import minimize
-
     u0 = np.asarray(u0, dtype=float)
     rows = np.atleast_2d(np.asarray(rows, dtype=float))
     lower, upper = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)

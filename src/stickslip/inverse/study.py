@@ -14,7 +14,7 @@ import numpy as np
 
 from ..schema import Inverse, InverseJob, InverseSettings
 from .conflicts import CONFLICT_NFEV, minimal_conflicts
-from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset
+from .dataset import COMBINATION_KEYS, FamilyFit, figure_dataset, open_flag
 from .fit import best_fit, fit_at, laplace_sd, loo_linear, loo_refit, sample_region
 from .forward import Forward
 from .hypotheses import named_hypotheses, ranking, single_changes, stated_score
@@ -51,19 +51,17 @@ def fit_problem(
             fit = fit_at(forward, closest if problem.in_bounds(closest) else search.witness)
             source = "conflict search"
     # the profile likelihood for a figure; the joint problem (32 numbers, a run costs 6x a figure's) keeps
-    # the straight-line analysis only, as does a figure the settings leave out (``profile``: the CI-size
-    # configuration profiles one figure, to test the path, not all eight)
+    # the straight-line analysis only, as does a figure the settings leave out (the CI-size configuration
+    # profiles one figure, to test the path); the profiles run over what the structure (derived from the
+    # equations of the phases the fit visits) leaves identifiable only
     chosen = settings.profile
-    wanted = problem.name != "joint" and (chosen is None or problem.name in chosen)
-    profiled = np.isfinite(fit.chi2) and wanted
-    # the structure the data can at most bound: derived from the equations of the phases the fit visits; the
-    # profiles run over what it leaves identifiable only
+    profiled = (
+        np.isfinite(fit.chi2) and problem.name != "joint" and (chosen is None or problem.name in chosen)
+    )
     structure = problem_structure(problem, fit.free_values) if np.isfinite(fit.chi2) else (np.nan, (), ())
     profile = profile_identify(forward, fit.free_values, structure[2]) if profiled else None
-    # every fit ends at its minimum: least squares to convergence (MINIMUM_NFEV_FACTOR) from the deepest point
-    # any profile reached (else from the fit itself); a fit lowered by more than REPROFILE_DROP is profiled
-    # again, for at most MINIMUM_ROUNDS rounds; a smaller drop keeps the profiles (their threshold is taken
-    # from the deepest point they saw, and they judge a point to that resolution themselves)
+    # every fit ends at its minimum: restarted from the deepest point any profile reached (else from itself),
+    # and profiled again where that lowers it by more than REPROFILE_DROP
     restarts, nfev = 0, MINIMUM_NFEV_FACTOR * settings.max_nfev
     for round_ in range(MINIMUM_ROUNDS + 1 if profile is not None else 0):
         deeper = profile.floor < fit.chi2 - MINIMUM_TOL
@@ -81,15 +79,13 @@ def fit_problem(
     if restarts:
         source += ", restarted at a deeper profile point" + (f" ({restarts} rounds)" if restarts > 1 else "")
     # the straight-line analysis, once, at the fit the profiles end at
-    ident = identify(forward, fit.free_values, jacobian=fit.jacobian) if np.isfinite(fit.chi2) else None
+    ident = identify(forward, fit.free_values) if np.isfinite(fit.chi2) else None
     # leave-one-out: the joint problem as configured, a single figure always linearised (cheap)
-    refit = loo and settings.loo == "refit"
-    if refit:
+    if loo and settings.loo == "refit":
         loo_r = loo_refit(forward, fit, settings.refit_nfev, seed)
     else:
         loo_r = loo_linear(problem, fit) if np.all(np.isfinite(fit.jacobian)) else None
     stated_r = forward.residuals(problem.stated_free)
-    noise = residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan
     return FamilyFit(
         problem=problem,
         fit=fit,
@@ -97,7 +93,7 @@ def fit_problem(
         loo=loo_r,
         loo_method=settings.loo if loo else "linear",
         stated_residuals=stated_r,
-        residual_noise=noise,
+        residual_noise=residual_noise(problem, fit.free_values) if np.isfinite(fit.chi2) else np.nan,
         conflicts=search,
         identification=ident,
         profile=profile,
@@ -134,11 +130,8 @@ def lower_of(fit, other):
 
 def deepest_point(pid) -> np.ndarray:
     """The free parameter set of the lowest chi-square any profile reached."""
-    best = min(
-        ((float(np.min(pr.chi2)), pr.points[int(np.argmin(pr.chi2))]) for pr in pid.profiles.values()),
-        key=lambda item: item[0],
-    )
-    return np.asarray(best[1], dtype=float)
+    deepest = min(pid.profiles.values(), key=lambda pr: float(np.min(pr.chi2)))
+    return np.asarray(deepest.points[int(np.argmin(deepest.chi2))], dtype=float)
 
 
 def residual_noise(problem: Problem, free_values) -> float:
@@ -156,9 +149,8 @@ def number_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     rows = []
     for fam, r in results.items():
         p, fit = r.problem, r.fit
-        members = set()
-        if r.conflicts is not None:
-            members = {i for c in r.conflicts.conflicts for i in c.members}
+        found = r.conflicts.conflicts if r.conflicts is not None else ()
+        members = {i for c in found for i in c.members}
         for i, o in enumerate(p.observations):
             rows.append(
                 {
@@ -198,8 +190,8 @@ def conflict_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
                     **base,
                     "size": len(c.members),
                     "claims": " + ".join(p.observations[i].claim for i in c.members),
-                    "worst_residual": round(c.worst, 3) if math.isfinite(c.worst) else "inf",
-                    "residual_noise": round(noise, 3) if math.isfinite(noise) else "",
+                    "worst_residual": _rounded(c.worst, "inf"),
+                    "residual_noise": _rounded(noise),
                     "above_noise": int(c.worst - 1.0 > noise) if math.isfinite(noise) else "",
                 }
             )
@@ -220,18 +212,16 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             "family": fam,
             "numbers": len(p.observations),
             "identifiable_dimensions": int(a.dims) if np.isfinite(a.dims) else "",
-            "structural_dimensions": int(r.structural_dimensions)
-            if np.isfinite(r.structural_dimensions)
-            else "",
+            "structural_dimensions": int(s) if np.isfinite(s := r.structural_dimensions) else "",
             "phases_visited": " ".join(sorted({ph for run in r.phases for ph in run})),
             "dimensions_note": a.note,
-            "profiles_bounded": profiles_bounded(r, a),
+            "profiles_bounded": profiles_bounded(r),
             "free_parameters": len(p.free),
         }
         for i, param in enumerate(p.free):
             row.update(
                 _range_columns(
-                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], a.opens.get(param)
+                    param, fit.free_values[i], a.lower[i], a.upper[i], a.ridge[i], open_flag(a, param)
                 )
             )
             row[f"stated_{param}"] = float(p.stated_free[i])
@@ -240,15 +230,15 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
             if len(COMBINATIONS[combo]) == 1 or combo not in a.combo_lower:  # one parameter: its own columns
                 continue
             point, lo, hi = a.combo_point[combo], a.combo_lower[combo], a.combo_upper[combo]
-            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], a.opens.get(combo)))
+            row.update(_range_columns(key, point, lo, hi, a.combo_ridge[combo], open_flag(a, combo)))
             row[f"stated_{key}"] = float(f"{stated[combo]:.4g}")
         search = r.conflicts
         row.update(
-            worst_residual=round(fit.worst, 3) if math.isfinite(fit.worst) else "inf",
+            worst_residual=_rounded(fit.worst, "inf"),
             worst_claim=p.observations[k].claim,
-            chi_square=round(fit.chi2, 3) if math.isfinite(fit.chi2) else "inf",
+            chi_square=_rounded(fit.chi2, "inf"),
             verdict="consistent" if fit.consistent else "inconsistent",
-            residual_noise=round(r.residual_noise, 3) if math.isfinite(r.residual_noise) else "",
+            residual_noise=_rounded(r.residual_noise),
             verdict_above_noise=int(abs(fit.worst - 1.0) > r.residual_noise)
             if math.isfinite(r.residual_noise) and math.isfinite(fit.worst)
             else "",
@@ -259,11 +249,16 @@ def summary_rows(name: str, results: dict[str, FamilyFit]) -> list[dict]:
     return rows
 
 
-def profiles_bounded(r: FamilyFit, a) -> str:
+def _rounded(x: float, missing=""):
+    """x to 3 decimals as a table shows it; ``missing`` where it is not finite."""
+    return round(x, 3) if math.isfinite(x) else missing
+
+
+def profiles_bounded(r: FamilyFit) -> str:
     """'k of n': of the n quantities profiled (those the structure fixes), how many the data bound, i.e. are
     reported as identifiable (profile above the threshold on both sides, at most a decade wide); '' where
     nothing was profiled. The structural count says what the equations allow, this what the numbers give."""
-    pid, free = r.profile, tuple(r.problem.free)
+    pid, free, a = r.profile, tuple(r.problem.free), r.analysis
     if pid is None or not pid.profiles:
         return ""
     bounded = sum(
@@ -272,19 +267,16 @@ def profiles_bounded(r: FamilyFit, a) -> str:
     return f"{bounded} of {len(pid.profiles)}"
 
 
-def _range_columns(key: str, value, lower, upper, ridge: bool, opens) -> dict:
+def _range_columns(key: str, value, lower, upper, ridge: bool, open_code: int) -> dict:
     """Summary columns of one parameter or combination: best_ (empty where it is a range, never a point),
     lower_/upper_ (a range, or the confidence interval of an identifiable one), identifiable_ (1/0) and
     open_ (the side(s) where the range reaches the bounds within the threshold: unbounded by the data)."""
-    lo, hi = opens or (False, False)
     return {
         f"best_{key}": "" if ridge else float(f"{value:.4g}"),
         f"lower_{key}": float(f"{lower:.4g}") if np.isfinite(lower) else "",  # "": no interval measured
         f"upper_{key}": float(f"{upper:.4g}") if np.isfinite(upper) else "",
         f"identifiable_{key}": int(not ridge),
-        f"open_{key}": {(False, False): "", (True, False): "below", (False, True): "above"}.get(
-            (lo, hi), "both"
-        ),
+        f"open_{key}": ("", "below", "above", "both")[open_code],  # open_flag's code,
     }
 
 
@@ -316,18 +308,14 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
     out = {"datasets": {}, "summary": [], "numbers": [], "conflicts": [], "inverse": inv, "cpu": {}}
     fitted = {fam: [] for fam in families}  # per-figure fits: the joint fit's candidate starts
     for name in figures + ["joint"]:
-        steps = settings.joint_steps if name == "joint" else settings.steps
+        joint = name == "joint"
+        steps = settings.joint_steps if joint else settings.steps
         results = {}
         for fam in families:
             problem = build_problem(job, claims, name, fam)
-            candidates = [_as_free(problem, c) for c in fitted[fam]] if name == "joint" else ()
+            candidates = [_as_free(problem, c) for c in fitted[fam]] if joint else ()
             results[fam] = fit_problem(
-                problem,
-                settings,
-                steps,
-                loo=name == "joint",
-                candidates=candidates,
-                conflicts=name != "joint",
+                problem, settings, steps, loo=joint, candidates=candidates, conflicts=not joint
             )
             fitted[fam].append(dict(zip(problem.free, results[fam].fit.free_values)))
         out["datasets"][name] = figure_dataset(name, results, inv)
@@ -335,7 +323,7 @@ def run_study(job: InverseJob, claims: dict, figures=None, families=None) -> dic
         out["numbers"] += number_rows(name, results)
         out["conflicts"] += conflict_rows(name, results)
         out["cpu"][name] = sum(r.cpu for r in results.values())
-        if name == "joint":
+        if joint:
             t0 = time.process_time()
             out["hypotheses"], out["ranking"] = misprint_tables(inv, results)
             out["cpu"]["misprint scans"] = time.process_time() - t0

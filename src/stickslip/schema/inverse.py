@@ -9,7 +9,7 @@ from pydantic import Field, model_validator
 from .base import Finite, Names, NonNegative, Positive, Section, Units, Variant, check_refs
 from .onedof import Baseline, OnedofDefaults, Scene, Sweep
 
-#: Parameters the inverse study may free (``stickslip.inverse.problem.PARAMS``; a test keeps them equal).
+#: Parameters the inverse study may free, in its order (``stickslip.inverse.problem.PARAMS`` is this).
 InverseParameter = Literal["sigma", "damping", "mu_s", "normal_force", "stiffness", "mass", "plateau_speed"]
 
 
