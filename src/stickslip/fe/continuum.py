@@ -36,7 +36,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from . import engine
-from .driver import SEPARATED, STICK, ExplicitResult, drive, pack_result
+from .driver import SEPARATED, STICK, ExplicitResult, critical_step, drive, pack_result, schedule
 from .params import (
     DEFAULT_INITIAL_STATE,
     DEFAULT_SAFETY_FACTOR,
@@ -377,13 +377,6 @@ def omega_max_global(scene: ContinuumScene, tol: float = 1e-10) -> float:
     return float(math.sqrt(max(w2, 0.0)))
 
 
-def critical_step(omega: float, beta: float) -> float:
-    """Central-difference limit with stiffness-proportional damping beta [s]:
-    (2/w)(sqrt(1 + xi^2) - xi), xi = beta w / 2."""
-    xi = 0.5 * beta * omega
-    return 2.0 / omega * (math.sqrt(1.0 + xi * xi) - xi)
-
-
 def stable_time_step(scene: ContinuumScene, method: str = "global") -> float:
     """dt_crit [s]. ``global``: from the assembled system's omega_max (the true limit, as ABAQUS/Explicit's
     global estimator approaches it); ``element``: from the element-by-element bound (conservative)."""
@@ -404,7 +397,7 @@ def increments(
 ) -> int:
     """Number of explicit increments to reach ``duration`` at safety_factor * dt_crit."""
     run_settings(duration, safety_factor)
-    return int(math.ceil(duration / (safety_factor * stable_time_step(scene, method)) - 1e-9))
+    return schedule(duration, stable_time_step(scene, method), None, safety_factor, None)[1]
 
 
 # ------------------------------------------------------------------------------------------ static state
@@ -537,11 +530,7 @@ def integrate_continuum(
         duration, safety_factor, initial_state, output_interval=output_interval, dt=dt
     ).initial_state
     dt_crit = stable_time_step(scene)
-    if dt is None:
-        dt = safety_factor * dt_crit
-    n_steps = int(math.ceil(duration / dt - 1e-9))
-    every = max(1, int(round((output_interval or dt) / dt)))
-    n_out = n_steps // every + 1
+    dt, n_steps, every, n_out = schedule(duration, dt_crit, dt, safety_factor, output_interval)
 
     q_stat, N_stat = static_state(scene)
     u = q_stat.copy() if initial_state == "static" else np.zeros(scene.mesh.n_dof)

@@ -409,7 +409,9 @@ def _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, V, speeds, mu):
 
 
 @njit(cache=True)
-def kinematic_node_impulses(u, v, c):
+def _node_impulses(u, v, c, kp):
+    """Every slave node's impulses: kinematic (``kp`` 0: the free predictor's gap closed exactly) or
+    penalty (kp * penetration at u_n, explicit)."""
     dt = c.dt
     fn_tot = 0.0
     ft_tot = 0.0
@@ -419,12 +421,14 @@ def kinematic_node_impulses(u, v, c):
         dy = dx + 1
         nx, ny = c.cn[k, 0], c.cn[k, 1]
         tx, ty = c.ct[k, 0], c.ct[k, 1]
-        wt = tx * v[dx] + ty * v[dy]
+        wt = tx * v[dx] + ty * v[dy]  # n . t = 0: a normal impulse would leave wt unchanged
         st = SEPARATED
-        gtrial = c.cg0[k] + nx * u[dx] + ny * u[dy] + dt * (nx * v[dx] + ny * v[dy])
-        if gtrial < 0.0:
+        g = c.cg0[k] + nx * u[dx] + ny * u[dy]
+        if kp == 0.0:
+            g = g + dt * (nx * v[dx] + ny * v[dy])
+        if g < 0.0:
             m = c.cm[k]
-            pn = -m * gtrial / dt
+            pn = -kp * g * dt if kp != 0.0 else -m * g / dt
             pt, st = _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, c.V, c.speeds, c.mu)
             fn_tot += pn / dt
             ft_tot += pt / dt
@@ -434,28 +438,13 @@ def kinematic_node_impulses(u, v, c):
 
 
 @njit(cache=True)
+def kinematic_node_impulses(u, v, c):
+    return _node_impulses(u, v, c, 0.0)
+
+
+@njit(cache=True)
 def penalty_node_impulses(u, v, c):
-    dt = c.dt
-    fn_tot = 0.0
-    ft_tot = 0.0
-    state = SEPARATED
-    for k in range(c.cdof.size):
-        dx = c.cdof[k]
-        dy = dx + 1
-        nx, ny = c.cn[k, 0], c.cn[k, 1]
-        tx, ty = c.ct[k, 0], c.ct[k, 1]
-        st = SEPARATED
-        g = c.cg0[k] + nx * u[dx] + ny * u[dy]
-        if g < 0.0:
-            m = c.cm[k]
-            pn = -c.kp * g * dt
-            wt = tx * v[dx] + ty * v[dy]  # n . t = 0: the normal impulse leaves wt unchanged
-            pt, st = _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, c.V, c.speeds, c.mu)
-            fn_tot += pn / dt
-            ft_tot += pt / dt
-        if k == c.primary:
-            state = st
-    return fn_tot, ft_tot, state
+    return _node_impulses(u, v, c, c.kp)
 
 
 # ------------------------------------------------------------------------------------------ recorders
