@@ -57,8 +57,6 @@ ENERGY_VARIABLES = ("ALLKE", "ALLSE", "ALLIE", "ALLAE", "ALLVD", "ALLFD", "ALLWK
 CONTACT_TOTALS = ("CFN", "CFS")
 #: contact history at node 1: pressure and shear (CSTRESS), opening and slip (CDISP)
 CONTACT_NODE_VARIABLES = ("CSTRESS", "CDISP")
-#: the names of the node sets the linear decks print
-PRINT_SETS = ("TIPLOW", "TIPUP", "PROP")
 
 
 def _num(x: float) -> str:

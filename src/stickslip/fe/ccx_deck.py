@@ -54,8 +54,6 @@ BLOCK_OVERHANG = 0.5
 #: peer's deck it stalls at 0.574 ms, "too many cutbacks", so longer windows are not offered)
 CCX_T_END = 5.0e-4
 CCX_MAX_INCREMENT = 1.0e-6
-#: the file-name suffix of a scene's ccx variant (results/fe/inp/<scene>_ccx.inp)
-CCX_SUFFIX = "_ccx"  # = stickslip.catalogue.FE_CCX_SUFFIX
 #: HHT alpha of ccx's *DYNAMIC (0: trapezoidal rule, no numerical damping; ccx's default is -0.05)
 DEFAULT_ALPHA = -0.05
 

@@ -314,34 +314,6 @@ def build_continuum(
     )  # fmt: skip
 
 
-def describe(scene: ContinuumScene) -> dict:
-    """Plain-text model description of a scene, for dataset attributes (interpretation and method)."""
-    m = scene.mesh
-    cx = float(m.nodes[scene.contact_nodes[scene.primary], 0]) if scene.contact_nodes.size else float("nan")
-    return {
-        "model": "continuum",
-        "model_interpretation": (
-            f"2-D plane-stress strip {scene.beam.length:g} x {scene.beam.thickness:g} mm, width "
-            f"{scene.beam.width:g} mm, {m.nx} x {m.ny} four-node quads with incompatible modes (QM6, "
-            "condensed; ABAQUS CPS4I kind), row-sum lumped mass, left end clamped, gravity; rigid disc "
-            f"{scene.disc.diameter:g} mm touching the lower face at x = {cx:g} mm, contact angle "
-            f"{scene.contact.angle_deg:g} deg, node-to-surface {scene.method} contact on "
-            f"{scene.contact_nodes.size} lower-face slave nodes with fixed normals, tabulated mu(|v_r|) with "
-            f"exact stick; node 1 = {scene.output_name} (mean of nodes {scene.output_nodes.tolist()}); "
-            "displacements from the "
-            "undeformed configuration"
-        ),
-        "method": (
-            "explicit central differences (half-step start), compiled element-by-element loop, stiffness-"
-            f"proportional damping beta = {scene.damping_beta:g} s, dt = safety factor x 2/omega_max (global)"
-        ),
-        "mesh": f"{m.nx}x{m.ny}",
-        "output_node": scene.output_name,
-        "contact_method": scene.method,
-        "damping_beta": scene.damping_beta,
-    }
-
-
 # ----------------------------------------------------------------------------------- stable time step
 def omega_max_elementwise(scene: ContinuumScene) -> float:
     """Upper bound of omega_max [rad s-1]: the largest element eigenvalue of (K_e, M_e) with the element's

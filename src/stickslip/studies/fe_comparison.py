@@ -10,10 +10,8 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.params import FrictionTable
 from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
 from ..fe.step_halving import REL_TOL, converged, sign_converged
-from .fe_scene import run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -131,11 +129,6 @@ def window_rows(
                 }
             )
     return rows
-
-
-def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
-    _, m, _ = run_scene(mapping, friction)
-    return m
 
 
 def noise_floors(metrics: Mapping, metrics_half_step: Mapping) -> dict:
