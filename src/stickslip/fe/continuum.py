@@ -130,6 +130,11 @@ class StripMesh:
     def n_dof(self) -> int:
         return 2 * self.n_nodes
 
+    @property
+    def dofs(self) -> np.ndarray:
+        """(n_el, 8) DOFs of each element: (u_x, u_y) of its four nodes in order."""
+        return np.repeat(2 * self.quads, 2, axis=1) + np.tile([0, 1], 4)
+
 
 def strip_mesh(beam: BeamParams, nx: int, ny: int) -> StripMesh:
     for k, val in (("nx", nx), ("ny", ny)):
@@ -159,7 +164,7 @@ def assemble_strip(mesh: StripMesh, beam: BeamParams, incompatible: bool = True)
     ke_u = np.array([quad_stiffness(xy[e], D, beam.width, incompatible) for e in first])
     me_u = np.array([quad_lumped_mass(xy[e], beam.rho, beam.width) for e in first])
     ke, me = ke_u[inv], me_u[inv]
-    dofs = np.repeat(2 * mesh.quads, 2, axis=1) + np.tile([0, 1], 4)  # (n_el, 8)
+    dofs = mesh.dofs
     rows = np.repeat(dofs, 8, axis=1).ravel()
     cols = np.tile(dofs, (1, 8)).ravel()
     K = sp.coo_matrix((ke.ravel(), (rows, cols)), shape=(mesh.n_dof, mesh.n_dof)).tocsr()
@@ -432,7 +437,7 @@ def quad_structure(scene: ContinuumScene, dt: float) -> engine.QuadStructure:
     """The engine's structure piece: the distinct element stiffnesses and each element's kind and DOFs,
     the lumped mass inverted (0 on constrained DOFs), gravity, stiffness-proportional damping."""
     quads = scene.mesh.quads
-    dofs = (np.repeat(2 * quads, 2, axis=1) + np.tile([0, 1], 4)).astype(np.int64)
+    dofs = scene.mesh.dofs.astype(np.int64)
     ke_flat = scene.element_stiffness.reshape(len(quads), -1)
     ke_types, kind = np.unique(ke_flat, axis=0, return_inverse=True)
     ke_types = np.ascontiguousarray(ke_types.reshape(-1, 8, 8))

@@ -260,14 +260,20 @@ def _all_below(u, bound):
 
 # ---------------------------------------------------------------------------------- structure kernels
 @njit(cache=True)
-def csr_velocity_update(n, u, v, w, f, s):
-    beta = s.beta
+def _lagged(u, v, beta, out, offset):
+    """out[offset + i] = u_i + beta v_i (u_i alone without damping): what the stiffness acts on, with
+    stiffness-proportional damping on the lagged half-step velocity."""
     if beta != 0.0:
         for i in range(u.size):
-            w[i] = u[i] + beta * v[i]
+            out[offset + i] = u[i] + beta * v[i]
     else:
         for i in range(u.size):
-            w[i] = u[i]
+            out[offset + i] = u[i]
+
+
+@njit(cache=True)
+def csr_velocity_update(n, u, v, w, f, s):
+    _lagged(u, v, s.beta, w, 0)
     indptr, indices, data, af, c1, c2 = s.indptr, s.indices, s.data, s.af, s.c1, s.c2
     for i in range(u.size):
         acc = 0.0
@@ -279,13 +285,7 @@ def csr_velocity_update(n, u, v, w, f, s):
 @njit(cache=True)
 def band_velocity_update(n, u, v, w, f, s):
     h, wp, bands = s.half, s.padded, s.bands
-    beta = s.beta
-    if beta != 0.0:
-        for i in range(u.size):
-            wp[h + i] = u[i] + beta * v[i]
-    else:
-        for i in range(u.size):
-            wp[h + i] = u[i]
+    _lagged(u, v, s.beta, wp, h)
     acc = f
     acc[:] = 0.0
     for d in range(bands.shape[0]):  # columns in ascending order within every row
@@ -300,12 +300,8 @@ def band_velocity_update(n, u, v, w, f, s):
 @njit(cache=True)
 def quad_velocity_update(n, u, v, w, f, s):
     h = 0.5 * s.dt if n == 1 else s.dt
-    dofs, kind, ke, minv, beta = s.dofs, s.kind, s.ke, s.minv, s.beta
-    if beta > 0.0:
-        for i in range(u.size):
-            w[i] = u[i] + beta * v[i]
-    else:
-        w[:] = u
+    dofs, kind, ke, minv = s.dofs, s.kind, s.ke, s.minv
+    _lagged(u, v, s.beta, w, 0)
     f[:] = s.fext
     fe = np.empty(8)  # local, so that the compiler keeps the 8 sums in registers
     for e in range(dofs.shape[0]):
