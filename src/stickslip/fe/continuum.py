@@ -456,9 +456,7 @@ def node_contact(scene: ContinuumScene, dt: float):
         scene.mass[cdof].copy(), float(scene.disc_speed), np.asarray(scene.friction.speeds, float),
         np.asarray(scene.friction.mu, float), int(scene.primary), float(dt),
     )  # fmt: skip
-    if scene.method == "penalty":
-        return engine.PenaltyNodes(*nodes, scene.penalty_stiffness)
-    return engine.KinematicNodes(*nodes)
+    return engine.SlaveNodes(*nodes, scene.penalty_stiffness)  # kinematic: 0
 
 
 def node_recorder(scene: ContinuumScene, out: np.ndarray, ost: np.ndarray) -> engine.NodeRecorder:

@@ -15,8 +15,8 @@ its shape functions in one assembly loop):
   diagonals, same bits, vectorised: the banded lumped-mass beam) or :class:`QuadStructure` (the continuum
   strip, internal force element by element with a lumped mass, half-step start);
 * contact: :class:`KinematicPoint`, :class:`PenaltyPoint`, :class:`FixedNormalPoint` (one contact point
-  given by vectors over the structure's coordinates, 2x2 Delassus solve) or :class:`KinematicNodes`,
-  :class:`PenaltyNodes` (slave nodes of a lumped-mass mesh, each node's impulses independent and exact);
+  given by vectors over the structure's coordinates, 2x2 Delassus solve) or :class:`SlaveNodes` (slave
+  nodes of a lumped-mass mesh, kinematic or penalty, each node's impulses independent and exact);
 * recorder: :class:`PointRecorder` (contact-point displacement/velocity as dot products, optional DOF
   samples) or :class:`NodeRecorder` (weighted output nodes, the primary contact node's slip velocity).
 
@@ -145,10 +145,11 @@ class FixedNormalPoint(NamedTuple):
     dt: float
 
 
-class KinematicNodes(NamedTuple):
+class SlaveNodes(NamedTuple):
     """Slave nodes (x DOF ``cdof[c]``, y DOF next) with fixed normals ``cn`` and surface directions ``ct``
-    (n_c, 2), initial gaps ``cg0``, lumped masses ``cm``; kinematic (predictor-corrector) impulses. The state
-    reported is node ``primary``'s (0 if it is not a slave node)."""
+    (n_c, 2), initial gaps ``cg0``, lumped masses ``cm``; kinematic (predictor-corrector) impulses, or with
+    ``kp`` > 0 a penalty normal force kp * penetration(u_n) (explicit). The state reported is node
+    ``primary``'s (0 if it is not a slave node)."""
 
     cdof: np.ndarray
     cn: np.ndarray
@@ -160,22 +161,7 @@ class KinematicNodes(NamedTuple):
     mu: np.ndarray
     primary: int
     dt: float
-
-
-class PenaltyNodes(NamedTuple):
-    """As :class:`KinematicNodes` with a penalty normal force kp * penetration(u_n) (explicit)."""
-
-    cdof: np.ndarray
-    cn: np.ndarray
-    ct: np.ndarray
-    cg0: np.ndarray
-    cm: np.ndarray
-    V: float
-    speeds: np.ndarray
-    mu: np.ndarray
-    primary: int
-    dt: float
-    kp: float
+    kp: float  #: 0: kinematic
 
 
 class PointRecorder(NamedTuple):
@@ -405,10 +391,10 @@ def _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, V, speeds, mu):
 
 
 @njit(cache=True)
-def _node_impulses(u, v, c, kp):
+def node_impulses(u, v, c):
     """Every slave node's impulses: kinematic (``kp`` 0: the free predictor's gap closed exactly) or
     penalty (kp * penetration at u_n, explicit)."""
-    dt = c.dt
+    dt, kp = c.dt, c.kp
     fn_tot = 0.0
     ft_tot = 0.0
     state = SEPARATED
@@ -431,16 +417,6 @@ def _node_impulses(u, v, c, kp):
         if k == c.primary:
             state = st
     return fn_tot, ft_tot, state
-
-
-@njit(cache=True)
-def kinematic_node_impulses(u, v, c):
-    return _node_impulses(u, v, c, 0.0)
-
-
-@njit(cache=True)
-def penalty_node_impulses(u, v, c):
-    return _node_impulses(u, v, c, c.kp)
 
 
 # ------------------------------------------------------------------------------------------ recorders
@@ -504,8 +480,7 @@ CONTACTS = {
     KinematicPoint: kinematic_point_impulse,
     PenaltyPoint: penalty_point_impulse,
     FixedNormalPoint: fixed_normal_point_impulse,
-    KinematicNodes: kinematic_node_impulses,
-    PenaltyNodes: penalty_node_impulses,
+    SlaveNodes: node_impulses,
 }
 RECORDERS = {PointRecorder: record_point, NodeRecorder: record_node}
 

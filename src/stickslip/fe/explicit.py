@@ -323,8 +323,7 @@ def integrate(
         return _python_loop(system, law, pr, stiffness_damping, record_state, blowup, progress)
     out = np.zeros((8, pr.n_out))  # the point recorder writes the series by row
     st = np.zeros(pr.n_out, dtype=np.int8)
-    rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
-    rec = rec.astype(np.int64)
+    rec = np.asarray(np.arange(system.n) if record_dofs is None else record_dofs, dtype=np.int64)
     qs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     vs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None, rec)

@@ -111,10 +111,14 @@ def map_coords(angles, slopes) -> dict:
     }
 
 
+def _nearest(angles, slopes, table_slope: float) -> tuple[int, int]:
+    """(index of the mapped angle nearest 0, of the mapped slope nearest ``table_slope``)."""
+    return int(np.argmin(np.abs(np.array(angles)))), int(np.argmin(np.abs(np.array(slopes) - table_slope)))
+
+
 def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
     """Growth rate and frequency at angle 0 and the mapped slope nearest the table's."""
-    k0 = int(np.argmin(np.abs(np.array(slopes) - table_slope)))
-    a0 = int(np.argmin(np.abs(np.array(angles))))
+    a0, k0 = _nearest(angles, slopes, table_slope)
     return {
         "growth_rate_at_table_slope_angle0": cf_var(
             (), g[a0, k0], "s-1", "growth rate at angle 0 and the slope nearest the table's"
@@ -128,8 +132,7 @@ def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
 def at_speed(g, angles, slopes, table_slope: float, label: str, speed: float) -> dict:
     """Growth rate at angle 0 and the mapped slope nearest the table's slope at one disc speed, named by that
     speed's label, so a claim reading it names the speed it is decided at."""
-    k0 = int(np.argmin(np.abs(np.array(slopes) - table_slope)))
-    a0 = int(np.argmin(np.abs(np.array(angles))))
+    a0, k0 = _nearest(angles, slopes, table_slope)
     where = f"at {speed:.3g} mm/s (table slope {table_slope:.3g} s/mm, mapped {slopes[k0]:.3g})"
     return {
         f"growth_rate_angle0_{label}": cf_var((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
