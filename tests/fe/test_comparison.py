@@ -10,13 +10,13 @@ from stickslip.studies.fe_comparison import (
     AGREEMENT_REL,
     QUANTITIES,
     agrees,
-    beam_metrics,
     comparison_rows,
     noise_floors,
     relative_difference,
 )
 from stickslip.studies.fe_config import halved_step
 from stickslip.studies.fe_continuum import continuum_dataset
+from stickslip.studies.fe_scene import run_scene
 
 FIG17 = FrictionTable.paper_fig17()
 
@@ -41,8 +41,8 @@ def test_beam_matches_continuum_on_a_drop(disc, contact):
         },
     }
     cont = continuum_dataset(mapping, FIG17, nx=100, ny=1, name="s")
-    beam = beam_metrics(mapping, FIG17)
-    floors = {"s": noise_floors(beam, beam_metrics(halved_step(mapping), FIG17))}
+    beam = run_scene(mapping, FIG17)[1]
+    floors = {"s": noise_floors(beam, run_scene(halved_step(mapping), FIG17)[1])}
     rows = comparison_rows({"s": cont}, {"s": beam}, floors=floors)
     for r in rows:
         if r["quantity"] in ("horizontal_amplitude", "mean_horizontal_displacement", "dominant_frequency"):

@@ -16,7 +16,6 @@ from stickslip.fe.beam import cantilever_axial_frequencies, cantilever_bending_f
 from stickslip.fe.continuum import (
     assemble_strip,
     build_continuum,
-    describe,
     increments,
     integrate_continuum,
     natural_frequencies,
@@ -363,15 +362,6 @@ def test_light_stiffness_damping_removes_the_contact_chatter_of_the_undamped_mes
         )
         sep[beta] = r.step_counts["separation"]
     assert sep[0.0] > 0 and sep[5e-9] == 0
-
-
-def test_description_names_mesh_contact_and_node_1():
-    d = describe(
-        scene(200, 2, contact={"method": "penalty"}, output_node="free_end_upper", damping_beta=5e-9)
-    )
-    assert d["mesh"] == "200x2" and d["contact_method"] == "penalty" and d["damping_beta"] == 5e-9
-    assert "200 x 2" in d["model_interpretation"] and "free_end_upper" in d["model_interpretation"]
-    assert "penalty" in d["model_interpretation"] and "beta = 5e-09" in d["method"]
 
 
 @settings(max_examples=60, deadline=None)

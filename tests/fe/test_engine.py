@@ -122,8 +122,9 @@ def test_the_beam_wrapper_runs_the_engine_with_the_laws_pieces(law, monkeypatch)
 def test_the_continuum_wrapper_runs_the_engine_with_the_laws_pieces(method, monkeypatch):
     calls = spy_on_the_engine(monkeypatch)
     integrate_continuum(strip(method), 1e-4, chunk=200)
-    piece = {"kinematic": "KinematicNodes", "penalty": "PenaltyNodes"}[method]
-    assert len(calls) > 1 and set(calls) == {("QuadStructure", piece, "NodeRecorder")}
+    assert len(calls) > 1 and set(calls) == {("QuadStructure", "SlaveNodes", "NodeRecorder")}
+    kp = continuum.node_contact(strip(method), 1e-7).kp  # the method is the piece's penalty stiffness
+    assert (kp > 0) == (method == "penalty")
 
 
 @pytest.mark.parametrize("law", list(LAWS))

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 import yaml
 
+from stickslip.catalogue import FE_CCX_SUFFIX
 from stickslip.fe.abaqus_deck import (
     CONTACT_NODE_VARIABLES,
     CONTACT_TOTALS,
@@ -19,7 +20,7 @@ from stickslip.fe.abaqus_deck import (
     read_deck,
     scene_deck,
 )
-from stickslip.fe.ccx_deck import CCX_MAX_INCREMENT, CCX_SUFFIX, ccx_scene_deck, contact_frame
+from stickslip.fe.ccx_deck import CCX_MAX_INCREMENT, ccx_scene_deck, contact_frame
 from stickslip.fe.params import BeamParams, ContactParams, FrictionTable
 from stickslip.schema.fe import Fe
 from stickslip.studies.fe_config import scene_mapping
@@ -74,7 +75,7 @@ def test_ccx_runs_the_ccx_variant_of_every_scene_to_completion(scene, tmp_path):
     require_ccx()
     mapping = scene_mapping(FE, scene)
     deck = ccx_scene_deck(scene, mapping, NX, NY, t_end=TEST_T_END, dt=CCX_MAX_INCREMENT)
-    dat = run_ccx(deck, scene + CCX_SUFFIX, workdir=tmp_path, timeout=120.0)  # raises on any *ERROR
+    dat = run_ccx(deck, scene + FE_CCX_SUFFIX, workdir=tmp_path, timeout=120.0)  # raises on any *ERROR
     series = dat_time_series(dat)
     t, tip = series[("displacements", "TIPLOW")]
     _, rf = series[("total force", "BLOCKN")]

@@ -8,7 +8,6 @@ from stickslip.io.netcdf import read_dataset, write_dataset
 from stickslip.io.progress import log_to_file
 from stickslip.schema.fe import FeJob
 from stickslip.studies.fe_comparison import (
-    beam_metrics,
     comparison_dataset,
     comparison_rows,
     noise_floors,
@@ -16,6 +15,7 @@ from stickslip.studies.fe_comparison import (
 )
 from stickslip.studies.fe_config import comparison_mapping, halved_step
 from stickslip.studies.fe_continuum import continuum_dataset
+from stickslip.studies.fe_scene import run_scene
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
 job = FeJob.model_validate(snakemake.params.config)  # noqa: F821  (every scene resolved, the comparison)
@@ -27,8 +27,8 @@ for name, path in zip(snakemake.params.scenes, snakemake.output.continuum, stric
     mapping = comparison_mapping(job, name)
     cont[name] = continuum_dataset(mapping, friction, nx=nx, ny=ny, name=name)
     write_dataset(cont[name], path, scene=mapping, interpretation=INTERPRETATION, method={"mesh": [nx, ny]})
-    beam[name] = beam_metrics(mapping, friction)
-    half[name] = beam_metrics(halved_step(mapping), friction)
+    beam[name] = run_scene(mapping, friction)[1]
+    half[name] = run_scene(halved_step(mapping), friction)[1]
     floors[name] = noise_floors(beam[name], half[name])
     print(f"{name}: continuum cpu {float(cont[name]['cpu_time']):.1f} s, beam {beam[name]['cpu_time']:.2f} s")
 rows = comparison_rows(cont, beam, cmp.notes, floors, half)

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .continuum import strip_mesh
-from .params import BeamParams, ContactParams, DiscParams, FrictionTable, SolverParams
+from .params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
 
 #: the brick of the linear decks and why (printed into each deck and the peer table)
 LINEAR_ELEMENT = "C3D8I"
@@ -57,8 +57,6 @@ ENERGY_VARIABLES = ("ALLKE", "ALLSE", "ALLIE", "ALLAE", "ALLVD", "ALLFD", "ALLWK
 CONTACT_TOTALS = ("CFN", "CFS")
 #: contact history at node 1: pressure and shear (CSTRESS), opening and slip (CDISP)
 CONTACT_NODE_VARIABLES = ("CSTRESS", "CDISP")
-#: the names of the node sets the linear decks print
-PRINT_SETS = ("TIPLOW", "TIPUP", "PROP")
 
 
 def _num(x: float) -> str:
@@ -71,6 +69,17 @@ def _id_lines(ids, per_line: int = 16) -> list[str]:
     """1-based ids, at most 16 to a data line (ABAQUS's limit)."""
     ids = [int(i) for i in ids]
     return [", ".join(str(i) for i in ids[k : k + per_line]) for k in range(0, len(ids), per_line)]
+
+
+def _nodes(coords, ids=None) -> list[str]:
+    """``*NODE`` data lines: the id (default 1, 2, ...), then the coordinates."""
+    ids = range(1, len(coords) + 1) if ids is None else ids
+    return [", ".join([str(i), *map(_num, xyz)]) for i, xyz in zip(ids, coords)]
+
+
+def _elements(rows, first: int = 1) -> list[str]:
+    """``*ELEMENT`` data lines: the ids from ``first`` on, then each row's node ids."""
+    return [", ".join(str(int(n)) for n in (e, *row)) for e, row in enumerate(rows, start=first)]
 
 
 def _nset(name: str, ids) -> list[str]:
@@ -141,9 +150,7 @@ def linear_deck(beam: BeamParams, nx: int, ny: int, support: str, n_modes: int =
         "** units: mm, s, N, t (tonne), MPa",
         "*NODE, NSET=NALL",
     ]
-    out += [f"{i + 1}, {_num(x)}, {_num(y)}, {_num(z)}" for i, (x, y, z) in enumerate(s.nodes)]
-    out += [f"*ELEMENT, TYPE={LINEAR_ELEMENT}, ELSET=STRIP"]
-    out += [f"{e + 1}, " + ", ".join(str(int(n)) for n in row) for e, row in enumerate(s.elements)]
+    out += [*_nodes(s.nodes), f"*ELEMENT, TYPE={LINEAR_ELEMENT}, ELSET=STRIP", *_elements(s.elements)]
     out += _nset("CLAMP", s.clamp) + _nset("ZFACE", s.face_z0)
     out += _nset("TIPLOW", s.tip_lower) + _nset("TIPUP", s.tip_upper) + _nset("PROP", s.tip_lower)
     out += _material(beam)
@@ -264,10 +271,8 @@ def scene_deck(
     """ABAQUS/Explicit deck of one Section 9-12 scene (merged scene mapping,
     ``studies.fe_config.scene_mapping``) on the continuum's nx x ny mesh. ``constant_mu``: write one
     friction coefficient instead of the table (for codes without mu(slip rate))."""
-    beam = BeamParams.from_mapping(mapping["beam"])
-    disc = DiscParams.from_mapping(mapping["disc"])
-    contact = ContactParams.from_mapping(mapping.get("contact", {}))
-    solver = SolverParams.from_mapping(mapping.get("solver", {}))
+    p = SceneParams.from_mapping(mapping)
+    beam, disc, contact, solver = p.beam, p.disc, p.contact, p.solver
     m = strip_mesh(beam, nx, ny)
     centre, r, omega = disc_geometry(beam, disc, contact)
     ref = m.n_nodes + 1
@@ -286,10 +291,8 @@ def scene_deck(
         *scene_header(name, beam, disc, contact, solver, friction, nx, ny, constant_mu),
         "*NODE, NSET=BEAM",
     ]
-    out += [f"{i + 1}, {_num(x)}, {_num(y)}" for i, (x, y) in enumerate(m.nodes)]
-    out += ["*NODE, NSET=DISCREF", f"{ref}, {_num(centre[0])}, {_num(centre[1])}"]
-    out += [f"*ELEMENT, TYPE={SCENE_ELEMENT}, ELSET=STRIP"]
-    out += [f"{e + 1}, " + ", ".join(str(int(n) + 1) for n in row) for e, row in enumerate(m.quads)]
+    out += [*_nodes(m.nodes), "*NODE, NSET=DISCREF", *_nodes([centre], [ref])]
+    out += [f"*ELEMENT, TYPE={SCENE_ELEMENT}, ELSET=STRIP", *_elements(m.quads + 1)]
     out += _nset("CLAMP", m.clamp + 1) + _nset("NODE1", np.asarray(node1) + 1)
     if held:
         out += _nset("UPPER", m.upper + 1)

@@ -20,6 +20,12 @@ from .params import BeamParams
 CANTILEVER_BETA_L = (1.8751040687, 4.6940911330, 7.8547574382, 10.9955407349, 14.1371683910)
 
 
+#: the bending DOFs of a frame element (v1, t1, v2, t2) and the power of l in each bending-block entry:
+#: entries coupling theta carry l (one theta) or l^2 (two thetas)
+BENDING_DOFS = [1, 2, 4, 5]
+LENGTH_POWERS = np.array([[0, 1, 0, 1], [1, 2, 1, 2], [0, 1, 0, 1], [1, 2, 1, 2]])
+
+
 def node_coordinates(length: float, n_elements: int) -> np.ndarray:
     return np.linspace(0.0, length, n_elements + 1)
 
@@ -32,13 +38,10 @@ def element_stiffness(EA: float, EI: float, le: np.ndarray) -> np.ndarray:
     k[:, 0, 0] = k[:, 3, 3] = a
     k[:, 0, 3] = k[:, 3, 0] = -a
     b = EI / le**3
-    idx = [1, 2, 4, 5]
     kb = np.array([[12, 6, -12, 6], [6, 4, -6, 2], [-12, -6, 12, -6], [6, 2, -6, 4]], float)
-    # length powers: entries coupling theta carry l (one theta) or l^2 (two thetas)
-    p = np.array([[0, 1, 0, 1], [1, 2, 1, 2], [0, 1, 0, 1], [1, 2, 1, 2]])
-    for i, gi in enumerate(idx):
-        for j, gj in enumerate(idx):
-            k[:, gi, gj] = b * kb[i, j] * le ** p[i, j]
+    for i, gi in enumerate(BENDING_DOFS):
+        for j, gj in enumerate(BENDING_DOFS):
+            k[:, gi, gj] = b * kb[i, j] * le ** LENGTH_POWERS[i, j]
     return k
 
 
@@ -62,13 +65,11 @@ def element_mass(rhoA: float, le: np.ndarray, kind: str = "lumped", rhoI: float 
         raise ValueError(f"mass: must be 'lumped' or 'consistent', got {kind!r}")
     out[:, 0, 0] = out[:, 3, 3] = m / 3.0
     out[:, 0, 3] = out[:, 3, 0] = m / 6.0
-    idx = [1, 2, 4, 5]
     mb = np.array([[156, 22, 54, -13], [22, 4, 13, -3], [54, 13, 156, -22], [-13, -3, -22, 4]], float)
-    p = np.array([[0, 1, 0, 1], [1, 2, 1, 2], [0, 1, 0, 1], [1, 2, 1, 2]])
     mr = np.array([[36, 3, -36, 3], [3, 4, -3, -1], [-36, -3, 36, -3], [3, -1, -3, 4]], float)
-    for i, gi in enumerate(idx):
-        for j, gj in enumerate(idx):
-            lp = le ** p[i, j]
+    for i, gi in enumerate(BENDING_DOFS):
+        for j, gj in enumerate(BENDING_DOFS):
+            lp = le ** LENGTH_POWERS[i, j]
             out[:, gi, gj] = m / 420.0 * mb[i, j] * lp + rhoI / (30.0 * le) * mr[i, j] * lp
     return out
 

@@ -34,8 +34,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .abaqus_deck import LINEAR_ELEMENT, _material, _nset, _num, brick_strip
-from .params import BeamParams, ContactParams, DiscParams
+from .abaqus_deck import LINEAR_ELEMENT, _elements, _material, _nodes, _nset, _num, brick_strip
+from .params import BeamParams, ContactParams, SceneParams
 
 #: penalty stiffness [N mm-1 at the contact node] standing in for ABAQUS's kinematic contact (ccx has none):
 #: 50 x the strip's axial stiffness EA/L = 2100 N/mm, so the contact spring adds < 1 % compliance
@@ -54,8 +54,6 @@ BLOCK_OVERHANG = 0.5
 #: peer's deck it stalls at 0.574 ms, "too many cutbacks", so longer windows are not offered)
 CCX_T_END = 5.0e-4
 CCX_MAX_INCREMENT = 1.0e-6
-#: the file-name suffix of a scene's ccx variant (results/fe/inp/<scene>_ccx.inp)
-CCX_SUFFIX = "_ccx"  # = stickslip.catalogue.FE_CCX_SUFFIX
 #: HHT alpha of ccx's *DYNAMIC (0: trapezoidal rule, no numerical damping; ccx's default is -0.05)
 DEFAULT_ALPHA = -0.05
 
@@ -112,9 +110,8 @@ def ccx_scene_deck(
         raise ValueError(f"alpha: must lie in [-1/3, 0] (ccx's HHT range), got {alpha!r}")
     if not (isinstance(output_every, int) and output_every >= 1):
         raise ValueError(f"output_every: must be an integer >= 1, got {output_every!r}")
-    beam = BeamParams.from_mapping(mapping["beam"])
-    disc = DiscParams.from_mapping(mapping["disc"])
-    contact = ContactParams.from_mapping(mapping.get("contact", {}))
+    p = SceneParams.from_mapping(mapping)
+    beam, disc, contact = p.beam, p.disc, p.contact
     held = contact.method == "fixed_normal"
     if penalty_stiffness is None:
         penalty_stiffness = contact.penalty_stiffness if contact.method == "penalty" else KINEMATIC_STAND_IN
@@ -162,12 +159,9 @@ def ccx_scene_deck(
         "**   (= minus the contact force on the strip); strip kinetic and strain energy totals.",
         "*NODE, NSET=NALL",
     ]
-    out += [f"{i + 1}, {_num(x)}, {_num(y)}, {_num(z)}" for i, (x, y, z) in enumerate(s.nodes)]
-    out += ["*NODE, NSET=BLOCKN"]
-    out += [f"{i}, {_num(x)}, {_num(y)}, {_num(z)}" for i, (x, y, z) in zip(blk_ids, blk)]
-    out += [f"*ELEMENT, TYPE={LINEAR_ELEMENT}, ELSET=STRIP"]
-    out += [f"{e + 1}, " + ", ".join(str(int(v)) for v in row) for e, row in enumerate(s.elements)]
-    out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK", f"{blk_el}, " + ", ".join(str(int(i)) for i in blk_ids)]
+    out += [*_nodes(s.nodes), "*NODE, NSET=BLOCKN", *_nodes(blk, blk_ids)]
+    out += [f"*ELEMENT, TYPE={LINEAR_ELEMENT}, ELSET=STRIP", *_elements(s.elements)]
+    out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK", *_elements([blk_ids], blk_el)]
     out += _nset("CLAMP", s.clamp) + _nset("ZFACE", s.face_z0)
     out += _nset("TIPLOW", s.tip_lower) + _nset("TIPUP", s.tip_upper)
     if held:

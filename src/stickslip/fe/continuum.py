@@ -36,7 +36,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from . import engine
-from .driver import SEPARATED, STICK, ExplicitResult, drive, pack_result
+from .driver import SEPARATED, STICK, ExplicitResult, critical_step, drive, pack_result, schedule
 from .params import (
     DEFAULT_INITIAL_STATE,
     DEFAULT_SAFETY_FACTOR,
@@ -130,6 +130,11 @@ class StripMesh:
     def n_dof(self) -> int:
         return 2 * self.n_nodes
 
+    @property
+    def dofs(self) -> np.ndarray:
+        """(n_el, 8) DOFs of each element: (u_x, u_y) of its four nodes in order."""
+        return np.repeat(2 * self.quads, 2, axis=1) + np.tile([0, 1], 4)
+
 
 def strip_mesh(beam: BeamParams, nx: int, ny: int) -> StripMesh:
     for k, val in (("nx", nx), ("ny", ny)):
@@ -159,7 +164,7 @@ def assemble_strip(mesh: StripMesh, beam: BeamParams, incompatible: bool = True)
     ke_u = np.array([quad_stiffness(xy[e], D, beam.width, incompatible) for e in first])
     me_u = np.array([quad_lumped_mass(xy[e], beam.rho, beam.width) for e in first])
     ke, me = ke_u[inv], me_u[inv]
-    dofs = np.repeat(2 * mesh.quads, 2, axis=1) + np.tile([0, 1], 4)  # (n_el, 8)
+    dofs = mesh.dofs
     rows = np.repeat(dofs, 8, axis=1).ravel()
     cols = np.tile(dofs, (1, 8)).ravel()
     K = sp.coo_matrix((ke.ravel(), (rows, cols)), shape=(mesh.n_dof, mesh.n_dof)).tocsr()
@@ -314,34 +319,6 @@ def build_continuum(
     )  # fmt: skip
 
 
-def describe(scene: ContinuumScene) -> dict:
-    """Plain-text model description of a scene, for dataset attributes (interpretation and method)."""
-    m = scene.mesh
-    cx = float(m.nodes[scene.contact_nodes[scene.primary], 0]) if scene.contact_nodes.size else float("nan")
-    return {
-        "model": "continuum",
-        "model_interpretation": (
-            f"2-D plane-stress strip {scene.beam.length:g} x {scene.beam.thickness:g} mm, width "
-            f"{scene.beam.width:g} mm, {m.nx} x {m.ny} four-node quads with incompatible modes (QM6, "
-            "condensed; ABAQUS CPS4I kind), row-sum lumped mass, left end clamped, gravity; rigid disc "
-            f"{scene.disc.diameter:g} mm touching the lower face at x = {cx:g} mm, contact angle "
-            f"{scene.contact.angle_deg:g} deg, node-to-surface {scene.method} contact on "
-            f"{scene.contact_nodes.size} lower-face slave nodes with fixed normals, tabulated mu(|v_r|) with "
-            f"exact stick; node 1 = {scene.output_name} (mean of nodes {scene.output_nodes.tolist()}); "
-            "displacements from the "
-            "undeformed configuration"
-        ),
-        "method": (
-            "explicit central differences (half-step start), compiled element-by-element loop, stiffness-"
-            f"proportional damping beta = {scene.damping_beta:g} s, dt = safety factor x 2/omega_max (global)"
-        ),
-        "mesh": f"{m.nx}x{m.ny}",
-        "output_node": scene.output_name,
-        "contact_method": scene.method,
-        "damping_beta": scene.damping_beta,
-    }
-
-
 # ----------------------------------------------------------------------------------- stable time step
 def omega_max_elementwise(scene: ContinuumScene) -> float:
     """Upper bound of omega_max [rad s-1]: the largest element eigenvalue of (K_e, M_e) with the element's
@@ -377,13 +354,6 @@ def omega_max_global(scene: ContinuumScene, tol: float = 1e-10) -> float:
     return float(math.sqrt(max(w2, 0.0)))
 
 
-def critical_step(omega: float, beta: float) -> float:
-    """Central-difference limit with stiffness-proportional damping beta [s]:
-    (2/w)(sqrt(1 + xi^2) - xi), xi = beta w / 2."""
-    xi = 0.5 * beta * omega
-    return 2.0 / omega * (math.sqrt(1.0 + xi * xi) - xi)
-
-
 def stable_time_step(scene: ContinuumScene, method: str = "global") -> float:
     """dt_crit [s]. ``global``: from the assembled system's omega_max (the true limit, as ABAQUS/Explicit's
     global estimator approaches it); ``element``: from the element-by-element bound (conservative)."""
@@ -404,7 +374,7 @@ def increments(
 ) -> int:
     """Number of explicit increments to reach ``duration`` at safety_factor * dt_crit."""
     run_settings(duration, safety_factor)
-    return int(math.ceil(duration / (safety_factor * stable_time_step(scene, method)) - 1e-9))
+    return schedule(duration, stable_time_step(scene, method), None, safety_factor, None)[1]
 
 
 # ------------------------------------------------------------------------------------------ static state
@@ -467,7 +437,7 @@ def quad_structure(scene: ContinuumScene, dt: float) -> engine.QuadStructure:
     """The engine's structure piece: the distinct element stiffnesses and each element's kind and DOFs,
     the lumped mass inverted (0 on constrained DOFs), gravity, stiffness-proportional damping."""
     quads = scene.mesh.quads
-    dofs = (np.repeat(2 * quads, 2, axis=1) + np.tile([0, 1], 4)).astype(np.int64)
+    dofs = scene.mesh.dofs.astype(np.int64)
     ke_flat = scene.element_stiffness.reshape(len(quads), -1)
     ke_types, kind = np.unique(ke_flat, axis=0, return_inverse=True)
     ke_types = np.ascontiguousarray(ke_types.reshape(-1, 8, 8))
@@ -486,9 +456,7 @@ def node_contact(scene: ContinuumScene, dt: float):
         scene.mass[cdof].copy(), float(scene.disc_speed), np.asarray(scene.friction.speeds, float),
         np.asarray(scene.friction.mu, float), int(scene.primary), float(dt),
     )  # fmt: skip
-    if scene.method == "penalty":
-        return engine.PenaltyNodes(*nodes, scene.penalty_stiffness)
-    return engine.KinematicNodes(*nodes)
+    return engine.SlaveNodes(*nodes, scene.penalty_stiffness)  # kinematic: 0
 
 
 def node_recorder(scene: ContinuumScene, out: np.ndarray, ost: np.ndarray) -> engine.NodeRecorder:
@@ -537,11 +505,7 @@ def integrate_continuum(
         duration, safety_factor, initial_state, output_interval=output_interval, dt=dt
     ).initial_state
     dt_crit = stable_time_step(scene)
-    if dt is None:
-        dt = safety_factor * dt_crit
-    n_steps = int(math.ceil(duration / dt - 1e-9))
-    every = max(1, int(round((output_interval or dt) / dt)))
-    n_out = n_steps // every + 1
+    dt, n_steps, every, n_out = schedule(duration, dt_crit, dt, safety_factor, output_interval)
 
     q_stat, N_stat = static_state(scene)
     u = q_stat.copy() if initial_state == "static" else np.zeros(scene.mesh.n_dof)

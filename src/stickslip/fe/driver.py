@@ -11,6 +11,7 @@ module only decides where the chunks end, so a result does not depend on which m
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, field
 
@@ -55,6 +56,23 @@ class ExplicitResult:
 def named_counts(c) -> dict:
     """Steps per contact state, by name."""
     return {name: int(c[k]) for k, name in enumerate(STATE_NAMES)}
+
+
+def critical_step(omega: float, beta: float) -> float:
+    """Central-difference limit [s] at angular frequency ``omega`` with stiffness-proportional damping beta
+    [s] on the lagged velocity: (2/w)(sqrt(1 + xi^2) - xi), xi = beta w / 2."""
+    xi = 0.5 * beta * omega
+    return 2.0 / omega * (math.sqrt(1.0 + xi * xi) - xi)
+
+
+def schedule(duration: float, dt_crit: float, dt, safety_factor: float, output_interval):
+    """(dt, steps, sampling stride, samples) of a run of ``duration``: ``dt`` None is safety_factor x
+    dt_crit; a sample every ``output_interval`` (None: every step), sample 0 (the start) included."""
+    if dt is None:
+        dt = safety_factor * dt_crit
+    n_steps = int(math.ceil(duration / dt - 1e-9))
+    every = max(1, int(round((output_interval or dt) / dt)))
+    return dt, n_steps, every, n_steps // every + 1
 
 
 @dataclass

@@ -15,8 +15,8 @@ its shape functions in one assembly loop):
   diagonals, same bits, vectorised: the banded lumped-mass beam) or :class:`QuadStructure` (the continuum
   strip, internal force element by element with a lumped mass, half-step start);
 * contact: :class:`KinematicPoint`, :class:`PenaltyPoint`, :class:`FixedNormalPoint` (one contact point
-  given by vectors over the structure's coordinates, 2x2 Delassus solve) or :class:`KinematicNodes`,
-  :class:`PenaltyNodes` (slave nodes of a lumped-mass mesh, each node's impulses independent and exact);
+  given by vectors over the structure's coordinates, 2x2 Delassus solve) or :class:`SlaveNodes` (slave
+  nodes of a lumped-mass mesh, kinematic or penalty, each node's impulses independent and exact);
 * recorder: :class:`PointRecorder` (contact-point displacement/velocity as dot products, optional DOF
   samples) or :class:`NodeRecorder` (weighted output nodes, the primary contact node's slip velocity).
 
@@ -145,10 +145,11 @@ class FixedNormalPoint(NamedTuple):
     dt: float
 
 
-class KinematicNodes(NamedTuple):
+class SlaveNodes(NamedTuple):
     """Slave nodes (x DOF ``cdof[c]``, y DOF next) with fixed normals ``cn`` and surface directions ``ct``
-    (n_c, 2), initial gaps ``cg0``, lumped masses ``cm``; kinematic (predictor-corrector) impulses. The state
-    reported is node ``primary``'s (0 if it is not a slave node)."""
+    (n_c, 2), initial gaps ``cg0``, lumped masses ``cm``; kinematic (predictor-corrector) impulses, or with
+    ``kp`` > 0 a penalty normal force kp * penetration(u_n) (explicit). The state reported is node
+    ``primary``'s (0 if it is not a slave node)."""
 
     cdof: np.ndarray
     cn: np.ndarray
@@ -160,22 +161,7 @@ class KinematicNodes(NamedTuple):
     mu: np.ndarray
     primary: int
     dt: float
-
-
-class PenaltyNodes(NamedTuple):
-    """As :class:`KinematicNodes` with a penalty normal force kp * penetration(u_n) (explicit)."""
-
-    cdof: np.ndarray
-    cn: np.ndarray
-    ct: np.ndarray
-    cg0: np.ndarray
-    cm: np.ndarray
-    V: float
-    speeds: np.ndarray
-    mu: np.ndarray
-    primary: int
-    dt: float
-    kp: float
+    kp: float  #: 0: kinematic
 
 
 class PointRecorder(NamedTuple):
@@ -260,14 +246,20 @@ def _all_below(u, bound):
 
 # ---------------------------------------------------------------------------------- structure kernels
 @njit(cache=True)
-def csr_velocity_update(n, u, v, w, f, s):
-    beta = s.beta
+def _lagged(u, v, beta, out, offset):
+    """out[offset + i] = u_i + beta v_i (u_i alone without damping): what the stiffness acts on, with
+    stiffness-proportional damping on the lagged half-step velocity."""
     if beta != 0.0:
         for i in range(u.size):
-            w[i] = u[i] + beta * v[i]
+            out[offset + i] = u[i] + beta * v[i]
     else:
         for i in range(u.size):
-            w[i] = u[i]
+            out[offset + i] = u[i]
+
+
+@njit(cache=True)
+def csr_velocity_update(n, u, v, w, f, s):
+    _lagged(u, v, s.beta, w, 0)
     indptr, indices, data, af, c1, c2 = s.indptr, s.indices, s.data, s.af, s.c1, s.c2
     for i in range(u.size):
         acc = 0.0
@@ -279,13 +271,7 @@ def csr_velocity_update(n, u, v, w, f, s):
 @njit(cache=True)
 def band_velocity_update(n, u, v, w, f, s):
     h, wp, bands = s.half, s.padded, s.bands
-    beta = s.beta
-    if beta != 0.0:
-        for i in range(u.size):
-            wp[h + i] = u[i] + beta * v[i]
-    else:
-        for i in range(u.size):
-            wp[h + i] = u[i]
+    _lagged(u, v, s.beta, wp, h)
     acc = f
     acc[:] = 0.0
     for d in range(bands.shape[0]):  # columns in ascending order within every row
@@ -300,12 +286,8 @@ def band_velocity_update(n, u, v, w, f, s):
 @njit(cache=True)
 def quad_velocity_update(n, u, v, w, f, s):
     h = 0.5 * s.dt if n == 1 else s.dt
-    dofs, kind, ke, minv, beta = s.dofs, s.kind, s.ke, s.minv, s.beta
-    if beta > 0.0:
-        for i in range(u.size):
-            w[i] = u[i] + beta * v[i]
-    else:
-        w[:] = u
+    dofs, kind, ke, minv = s.dofs, s.kind, s.ke, s.minv
+    _lagged(u, v, s.beta, w, 0)
     f[:] = s.fext
     fe = np.empty(8)  # local, so that the compiler keeps the 8 sums in registers
     for e in range(dofs.shape[0]):
@@ -409,8 +391,10 @@ def _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, V, speeds, mu):
 
 
 @njit(cache=True)
-def kinematic_node_impulses(u, v, c):
-    dt = c.dt
+def node_impulses(u, v, c):
+    """Every slave node's impulses: kinematic (``kp`` 0: the free predictor's gap closed exactly) or
+    penalty (kp * penetration at u_n, explicit)."""
+    dt, kp = c.dt, c.kp
     fn_tot = 0.0
     ft_tot = 0.0
     state = SEPARATED
@@ -419,37 +403,14 @@ def kinematic_node_impulses(u, v, c):
         dy = dx + 1
         nx, ny = c.cn[k, 0], c.cn[k, 1]
         tx, ty = c.ct[k, 0], c.ct[k, 1]
-        wt = tx * v[dx] + ty * v[dy]
-        st = SEPARATED
-        gtrial = c.cg0[k] + nx * u[dx] + ny * u[dy] + dt * (nx * v[dx] + ny * v[dy])
-        if gtrial < 0.0:
-            m = c.cm[k]
-            pn = -m * gtrial / dt
-            pt, st = _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, c.V, c.speeds, c.mu)
-            fn_tot += pn / dt
-            ft_tot += pt / dt
-        if k == c.primary:
-            state = st
-    return fn_tot, ft_tot, state
-
-
-@njit(cache=True)
-def penalty_node_impulses(u, v, c):
-    dt = c.dt
-    fn_tot = 0.0
-    ft_tot = 0.0
-    state = SEPARATED
-    for k in range(c.cdof.size):
-        dx = c.cdof[k]
-        dy = dx + 1
-        nx, ny = c.cn[k, 0], c.cn[k, 1]
-        tx, ty = c.ct[k, 0], c.ct[k, 1]
+        wt = tx * v[dx] + ty * v[dy]  # n . t = 0: a normal impulse would leave wt unchanged
         st = SEPARATED
         g = c.cg0[k] + nx * u[dx] + ny * u[dy]
+        if kp == 0.0:
+            g = g + dt * (nx * v[dx] + ny * v[dy])
         if g < 0.0:
             m = c.cm[k]
-            pn = -c.kp * g * dt
-            wt = tx * v[dx] + ty * v[dy]  # n . t = 0: the normal impulse leaves wt unchanged
+            pn = -kp * g * dt if kp != 0.0 else -m * g / dt
             pt, st = _node_friction(v, dx, dy, nx, ny, tx, ty, m, pn, wt, c.V, c.speeds, c.mu)
             fn_tot += pn / dt
             ft_tot += pt / dt
@@ -519,8 +480,7 @@ CONTACTS = {
     KinematicPoint: kinematic_point_impulse,
     PenaltyPoint: penalty_point_impulse,
     FixedNormalPoint: fixed_normal_point_impulse,
-    KinematicNodes: kinematic_node_impulses,
-    PenaltyNodes: penalty_node_impulses,
+    SlaveNodes: node_impulses,
 }
 RECORDERS = {PointRecorder: record_point, NodeRecorder: record_node}
 

@@ -28,7 +28,7 @@ import scipy.linalg as sla
 import scipy.sparse as sps
 
 from . import engine
-from .driver import SEPARATED, SLIP, STICK, ExplicitResult, drive, named_counts, pack_result
+from .driver import SEPARATED, SLIP, STICK, ExplicitResult, Run, critical_step, drive, pack_result, schedule
 from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, run_settings
 
 __all__ = ["SEPARATED", "SLIP", "STICK", "ExplicitResult", "integrate", "integrate_python"]
@@ -148,14 +148,9 @@ def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_
         mass_damping=alpha, stiffness_damping=beta,
     ).initial_state  # fmt: skip
     dt_crit = stable_time_step(system, law)
-    if beta > 0:  # lagged stiffness damping: dt_crit = 2/w (sqrt(1+xi^2) - xi), xi = beta w / 2
-        w = 2.0 / dt_crit
-        xi = 0.5 * beta * w
-        dt_crit = 2.0 / w * (math.sqrt(1.0 + xi * xi) - xi)
-    if dt is None:
-        dt = safety_factor * dt_crit
-    n_steps = int(math.ceil(duration / dt - 1e-9))
-    every = max(1, int(round((output_interval or dt) / dt)))
+    if beta > 0:  # lagged stiffness damping
+        dt_crit = critical_step(2.0 / dt_crit, beta)
+    dt, n_steps, every, n_out = schedule(duration, dt_crit, dt, safety_factor, output_interval)
     M, K, f = system.M, system.K, system.f
     if np.allclose(M, np.diag(np.diag(M))):
         Minv = np.diag(1.0 / np.diag(M))
@@ -176,7 +171,7 @@ def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_
         dt_crit=dt_crit,
         n_steps=n_steps,
         every=every,
-        n_out=n_steps // every + 1,
+        n_out=n_out,
         G=dt * Minv @ K,
         af=dt * Minv @ f,
         Mcn=Mcn,
@@ -191,31 +186,6 @@ def _prepare(system, law, duration, dt, safety_factor, output_interval, initial_
         q_stat=q_stat,
         N_stat=N_stat,
     )
-
-
-def _result(pr, out, st, m, n_done, counts, cpu, qs, vs, diverged) -> ExplicitResult:
-    res = ExplicitResult(
-        t=out[0, :m].copy(),
-        x=out[1, :m].copy(),
-        y=out[2, :m].copy(),
-        vx=out[3, :m].copy(),
-        vy=out[4, :m].copy(),
-        normal_force=out[5, :m].copy(),
-        friction_force=out[6, :m].copy(),
-        slip_velocity=out[7, :m].copy(),
-        state=st[:m].copy(),
-        dt=pr.dt,
-        dt_crit=pr.dt_crit,
-        n_steps=n_done,
-        step_counts=named_counts(counts),
-        cpu_time=cpu,
-        static_normal_force=pr.N_stat,
-        q_static=pr.q_stat,
-        q_samples=None if qs is None else qs[:m],
-        v_samples=None if vs is None else vs[:m],
-    )
-    res.extra["diverged"] = bool(diverged)
-    return res
 
 
 def _record0(pr, system, law, out, st, qs, vs, rec=None):
@@ -353,8 +323,7 @@ def integrate(
         return _python_loop(system, law, pr, stiffness_damping, record_state, blowup, progress)
     out = np.zeros((8, pr.n_out))  # the point recorder writes the series by row
     st = np.zeros(pr.n_out, dtype=np.int8)
-    rec = np.arange(system.n) if record_dofs is None else np.asarray(record_dofs, dtype=np.int64)
-    rec = rec.astype(np.int64)
+    rec = np.asarray(np.arange(system.n) if record_dofs is None else record_dofs, dtype=np.int64)
     qs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     vs = np.zeros((pr.n_out, rec.size)) if record_state else np.zeros((1, 1))
     _record0(pr, system, law, out, st, qs if record_state else None, vs if record_state else None, rec)
@@ -366,10 +335,15 @@ def integrate(
         structure, contact, recorder, pr.u.copy(), pr.v.copy(), n_steps=pr.n_steps, every=pr.every,
         dt=pr.dt, blowup=blowup, chunk=chunk, progress=progress, halves=True,
     )  # fmt: skip
+    return _packed(pr, out, st, run, qs if record_state else None, vs if record_state else None)
+
+
+def _packed(pr: _Prepared, out, st, run: Run, qs, vs) -> ExplicitResult:
+    """Either loop's result: its steps done are the last step it ran (a blow-up's sampled step)."""
     return pack_result(
         out, st, run, n_steps=run.n_done, dt=pr.dt, dt_crit=pr.dt_crit, static_normal_force=pr.N_stat,
-        q_static=pr.q_stat, q_samples=qs[: run.j] if record_state else None,
-        v_samples=vs[: run.j] if record_state else None,
+        q_static=pr.q_stat, q_samples=None if qs is None else qs[: run.j],
+        v_samples=None if vs is None else vs[: run.j],
     )  # fmt: skip
 
 
@@ -460,10 +434,8 @@ def _python_loop(system, law, pr: _Prepared, stiffness_damping, record_state, bl
             if not abs(u).max() < blowup:
                 diverged = True
                 break
-    cpu = time.process_time() - t0
-    res = _result(pr, out, st, j, n, counts, cpu, qs, vs, diverged)
-    res.extra["second_half_counts"] = named_counts(np.subtract(counts, first_half))
-    return res
+    run = Run(j, n, n, diverged, np.array(counts), np.array(first_half), time.process_time() - t0)
+    return _packed(pr, out, st, run, qs, vs)
 
 
 #: The reference per-step Python loop, with :func:`integrate`'s own signature and setup (the oracle of the

@@ -26,17 +26,15 @@ def craig_bampton(
     into families and the ``n_modes`` lowest bending plus ``n_axial_modes`` lowest axial modes are kept:
     the stick-slip dynamics live in the first axial mode (12.9 kHz), far above tens of bending modes.
     """
+    if n_modes < 0 or n_axial_modes < 0:
+        raise ValueError(f"n_modes: mode counts must be >= 0, got {n_modes} and {n_axial_modes} axial")
     n = system.n
     b = np.asarray(sorted(set(int(i) for i in boundary)))
-    if n_modes < 0:
-        raise ValueError(f"n_modes: must be >= 0, got {n_modes}")
     i = np.setdiff1d(np.arange(n), b)
     K, M = system.K, system.M
     Kii, Kib = K[np.ix_(i, i)], K[np.ix_(i, b)]
     Mii = M[np.ix_(i, i)]
     psi = -np.linalg.solve(Kii, Kib)
-    if n_modes < 0 or n_axial_modes < 0:
-        raise ValueError("n_modes: mode counts must be >= 0")
     _, phi_all = sla.eigh(Kii, Mii)
     if axial_mask is None:
         pick = np.arange(min(n_modes, i.size))

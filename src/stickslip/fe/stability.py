@@ -131,10 +131,3 @@ def transient_growth(
     rate = float(np.polyfit(tc[fit], np.log(env[fit]), 1)[0])
     w = (r.t >= t_end / 3) & (r.t <= t_end)
     return rate, dominant_frequency(r.t[w], vt[w])
-
-
-def transient_growth_rate(
-    system: System, law: ContactLaw, duration: float, perturbation: float = 1e-3
-) -> float:
-    """Growth rate [s-1] of :func:`transient_growth` (undamped)."""
-    return transient_growth(system, law, duration, perturbation)[0]

@@ -10,10 +10,8 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.params import FrictionTable
-from ..fe.quantities import INTERPRETATION
+from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
 from ..fe.step_halving import REL_TOL, converged, sign_converged
-from .fe_scene import run_scene
 
 #: quantities of the comparison table
 QUANTITIES = (
@@ -133,11 +131,6 @@ def window_rows(
     return rows
 
 
-def beam_metrics(mapping: Mapping, friction: FrictionTable) -> dict:
-    _, m, _ = run_scene(mapping, friction)
-    return m
-
-
 def noise_floors(metrics: Mapping, metrics_half_step: Mapping) -> dict:
     """Per quantity: |m(dt/2) - m(dt)|, the change of the beam's own number when its step is halved."""
     return {q: abs(float(metrics_half_step[q]) - float(metrics[q])) for q in QUANTITIES}
@@ -238,55 +231,45 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
         for k in arr:
             arr[k][i, j] = float(r[k])
     dims = ("scene", "quantity")
+    rel = arr["relative_difference"]
     ds = xr.Dataset(
         {
-            "continuum_value": (dims, arr["continuum"], {"units": "1", "long_name": "continuum strip value"}),
-            "beam_value": (dims, arr["beam"], {"units": "1", "long_name": "beam model value"}),
-            "relative_difference": (
-                dims,
-                arr["relative_difference"],
-                {"units": "1", "long_name": "(beam - continuum) / |continuum|"},
-            ),
-            "noise_floor": (
+            "continuum_value": cf_var(dims, arr["continuum"], "1", "continuum strip value"),
+            "beam_value": cf_var(dims, arr["beam"], "1", "beam model value"),
+            "relative_difference": cf_var(dims, rel, "1", "(beam - continuum) / |continuum|"),
+            "noise_floor": cf_var(
                 dims,
                 arr["noise_floor"],
-                {
-                    "units": "1",
-                    "long_name": "beam's change of the quantity at half the time step (quantity's units)",
-                },
+                "1",
+                "beam's change of the quantity at half the time step (quantity's units)",
             ),
-            "agreement": (
-                dims,
-                arr["agreement"].astype("i1"),
-                {"units": "1", "long_name": "beam and continuum agree", "rule": AGREEMENT_RULE},
+            "agreement": cf_var(
+                dims, arr["agreement"].astype("i1"), "1", "beam and continuum agree", rule=AGREEMENT_RULE
             ),
-            "continuum_cpu_time": (
-                "scene",
-                np.array([float(continuum[s]["cpu_time"]) for s in scenes]),
-                {"units": "s", "long_name": "CPU time of the continuum run"},
-            ),
-            "beam_cpu_time": (
-                "scene",
-                np.array([float(beam[s]["cpu_time"]) for s in scenes]),
-                {"units": "s", "long_name": "CPU time of the beam run"},
-            ),
+            **{
+                f"{model}_cpu_time": cf_var(
+                    "scene",
+                    np.array([float(runs[s]["cpu_time"]) for s in scenes]),
+                    "s",
+                    f"CPU time of the {model} run",
+                )
+                for model, runs in (("continuum", continuum), ("beam", beam))
+            },
         },
         coords={"scene": ("scene", scenes), "quantity": ("quantity", qs)},
     )
-    ds["max_abs_relative_difference"] = (
+    ds["max_abs_relative_difference"] = cf_var(
         "quantity",
-        np.nanmax(
-            np.abs(np.where(np.isfinite(arr["relative_difference"]), arr["relative_difference"], np.nan)), 0
-        ),
-        {"units": "1", "long_name": "largest |relative difference| over the scenes"},
+        np.nanmax(np.abs(np.where(np.isfinite(rel), rel, np.nan)), 0),
+        "1",
+        "largest |relative difference| over the scenes",
     )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Beam vs continuum strip on the paper scenes",
-            "model_interpretation": INTERPRETATION,
-            "method": "both models from the same scene mapping and window",
-        }
+        cf_attrs(
+            "Beam vs continuum strip on the paper scenes",
+            model_interpretation=INTERPRETATION,
+            method="both models from the same scene mapping and window",
+        )
     )
     window = [r for r in rows if r.get("window") == "claim"]
     return ds.merge(window_dataset(window)) if window else ds
@@ -308,22 +291,10 @@ def window_dataset(rows: list[dict]) -> xr.Dataset:
     dims = ("window_scene", "window_quantity", "time_step")
     return xr.Dataset(
         {
-            "window_beam_value": (
-                dims,
-                beam,
-                {"units": "1", "long_name": "beam model value (quantity's units)"},
-            ),
-            "window_continuum_value": (
-                dims,
-                cont,
-                {"units": "1", "long_name": "continuum strip value (quantity's units)"},
-            ),
-            "window_agreement": (
-                dims[:2],
-                ok,
-                {"units": "1", "long_name": "beam and continuum agree", "rule": WINDOW_RULE},
-            ),
-            "window_t_end": ("window_scene", t_end, {"units": "s", "long_name": "claim window of both runs"}),
+            "window_beam_value": cf_var(dims, beam, "1", "beam model value (quantity's units)"),
+            "window_continuum_value": cf_var(dims, cont, "1", "continuum strip value (quantity's units)"),
+            "window_agreement": cf_var(dims[:2], ok, "1", "beam and continuum agree", rule=WINDOW_RULE),
+            "window_t_end": cf_var("window_scene", t_end, "s", "claim window of both runs"),
         },
         coords={
             "window_scene": ("window_scene", scenes),

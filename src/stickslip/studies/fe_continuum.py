@@ -18,7 +18,7 @@ from ..ensemble import EnsembleSpec, ensemble_dataset, step_member_values
 from ..fe.metrics import trajectory_metrics
 from ..fe.modes import mode_growth
 from ..fe.params import FrictionTable, SceneParams
-from ..fe.quantities import INTERPRETATION
+from ..fe.quantities import INTERPRETATION, cf_attrs
 from ..fe.step_halving import HALF_STEP, apply_step_halving
 from ..schema.fe import FeOutput
 from .fe_packing import result_dataset
@@ -71,20 +71,19 @@ def continuum_dataset(
     out = FeOutput.model_validate(mapping.get("output", {}))
     ds = result_dataset(r, m, windows=out.windows, bin_width=out.bin_width)
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": f"Continuum strip {nx}x{ny} on rotating rigid disc, scene {name}".strip(),
-            "scene": name,
-            "parameters": json.dumps({"mapping": mapping, "nx": nx, "ny": ny}, default=str),
-            "model_interpretation": (
+        cf_attrs(
+            f"Continuum strip {nx}x{ny} on rotating rigid disc, scene {name}".strip(),
+            scene=name,
+            parameters=json.dumps({"mapping": mapping, "nx": nx, "ny": ny}, default=str),
+            model_interpretation=(
                 "plane-stress strip, Q4 with incompatible modes (CPS4I kind), lumped mass, node-to-surface "
                 "contact of the lower face on the rigid disc; Section 10 as upper face held vertically. "
                 "Other choices as the beam model: " + INTERPRETATION
             ),
-            "method": f"explicit central difference, dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
-            "diverged": int(r.extra.get("diverged", False)),
-            "t_end": float(p.solver.t_end),
-        }
+            method=f"explicit central difference, dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
+            diverged=int(r.extra.get("diverged", False)),
+            t_end=float(p.solver.t_end),
+        )
     )
     return ds
 

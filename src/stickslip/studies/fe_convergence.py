@@ -10,7 +10,7 @@ import xarray as xr
 
 from ..fe.beam import cantilever_errors
 from ..fe.params import FrictionTable, SolverParams
-from ..fe.quantities import INTERPRETATION, metric_attrs
+from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var, metric_attrs
 from ..schema.fe import Convergence, FeJob
 from .fe_config import as_mapping, deep_merge
 from .fe_scene import run_scene
@@ -58,17 +58,11 @@ def _grid_runs(cv: Convergence, base: Mapping, n_el: list, sfs: list, friction: 
 
 def _grid_coords(n_el: list, sfs: list) -> dict:
     return {
-        "n_elements": ("n_elements", np.array(n_el), {"units": "1", "long_name": "number of beam elements"}),
-        "safety_factor": (
-            "safety_factor",
-            np.array(sfs, float),
-            {"units": "1", "long_name": "time step over the stable limit"},
+        "n_elements": cf_var("n_elements", np.array(n_el), "1", "number of beam elements"),
+        "safety_factor": cf_var(
+            "safety_factor", np.array(sfs, float), "1", "time step over the stable limit"
         ),
-        "bending_mode": (
-            "bending_mode",
-            np.arange(1, 4),
-            {"units": "1", "long_name": "cantilever bending mode"},
-        ),
+        "bending_mode": cf_var("bending_mode", np.arange(1, 4), "1", "cantilever bending mode"),
     }
 
 
@@ -87,30 +81,25 @@ def convergence_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     for q in CONVERGENCE_QUANTITIES:
         ds[q] = (dims, vals[q], metric_attrs(q))
         dev, what = max_deviation(q, vals[q])
-        ds[f"{q}_max_deviation"] = (
-            (),
-            dev,
-            {"units": "1", "long_name": f"{what} of {q} on the two finest meshes from the finest run"},
+        ds[f"{q}_max_deviation"] = cf_var(
+            (), dev, "1", f"{what} of {q} on the two finest meshes from the finest run"
         )
-    ds["time_step"] = (dims, dt, {"units": "s", "long_name": "time step used"})
-    ds["bending_frequency_error"] = (
+    ds["time_step"] = cf_var(dims, dt, "s", "time step used")
+    ds["bending_frequency_error"] = cf_var(
         ("n_elements", "bending_mode"),
         np.array(bend_err),
-        {"units": "1", "long_name": "relative error of the cantilever bending frequencies"},
+        "1",
+        "relative error of the cantilever bending frequencies",
     )
-    ds["axial_frequency_error"] = (
-        "n_elements",
-        np.array(ax_err),
-        {"units": "1", "long_name": "relative error of the first axial frequency"},
+    ds["axial_frequency_error"] = cf_var(
+        "n_elements", np.array(ax_err), "1", "relative error of the first axial frequency"
     )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Beam-on-disc convergence in element count and time step",
-            "model_interpretation": INTERPRETATION,
-            "base_scene": cv.base,
-            "method": "explicit central difference per (n_elements, safety_factor)"
-            "; modal errors vs closed form",
-        }
+        cf_attrs(
+            "Beam-on-disc convergence in element count and time step",
+            model_interpretation=INTERPRETATION,
+            base_scene=cv.base,
+            method="explicit central difference per (n_elements, safety_factor); modal errors vs closed form",
+        )
     )
     return ds

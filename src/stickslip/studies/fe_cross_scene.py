@@ -9,7 +9,7 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.quantities import INTERPRETATION
+from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
 
 
 def _step_value(ds: xr.Dataset, var: str, step: str) -> float:
@@ -24,29 +24,28 @@ def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, 
     ds = xr.Dataset()
     for name, (a, b, var) in pairs.items():
         va, vb = float(datasets[a][var]), float(datasets[b][var])
-        ds[name] = ((), va / vb if vb != 0 else np.nan, {"units": "1", "long_name": f"{var} of {a} over {b}"})
+        ds[name] = cf_var((), va / vb if vb != 0 else np.nan, "1", f"{var} of {a} over {b}")
         ea, eb = datasets[a].get(f"{var}_ensemble"), datasets[b].get(f"{var}_ensemble")
         if ea is not None and eb is not None and ea.shape == eb.shape:  # member by member
             with np.errstate(divide="ignore", invalid="ignore"):
                 ratio = np.where(eb.values != 0, ea.values / eb.values, np.nan)
-            ds[f"{name}_ensemble"] = (
-                ea.dims,
-                ratio,
-                {"units": "1", "long_name": f"{var} of {a} over {b}, per perturbation-ensemble member"},
+            ds[f"{name}_ensemble"] = cf_var(
+                ea.dims, ratio, "1", f"{var} of {a} over {b}, per perturbation-ensemble member"
             )
         if not np.isfinite(ds[name].values):  # an operand withheld by step halving: keep both steps' ratios
             for step in ("full_step", "half_step"):
                 sa = _step_value(datasets[a], var, step)
                 sb = _step_value(datasets[b], var, step)
-                ds[f"{name}_{step}"] = ((), sa / sb if sb != 0 else np.nan, {"units": "1", "long_name": (
-                    f"{var} of {a} over {b} at {'dt' if step == 'full_step' else 'dt/2'}")})  # fmt: skip
+                at = "dt" if step == "full_step" else "dt/2"
+                ds[f"{name}_{step}"] = cf_var(
+                    (), sa / sb if sb != 0 else np.nan, "1", f"{var} of {a} over {b} at {at}"
+                )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Beam-on-disc cross-scene ratios",
-            "model_interpretation": INTERPRETATION,
-            "method": "ratios of scalar metrics",
-            "pairs": json.dumps(dict(pairs)),
-        }
+        cf_attrs(
+            "Beam-on-disc cross-scene ratios",
+            model_interpretation=INTERPRETATION,
+            method="ratios of scalar metrics",
+            pairs=json.dumps(dict(pairs)),
+        )
     )
     return ds

@@ -7,6 +7,7 @@ import numpy as np
 import xarray as xr
 
 from ..fe.params import FrictionTable, SceneParams
+from ..fe.quantities import cf_attrs, cf_var
 from ..schema.fe import FeJob
 from .fe_config import as_mapping
 
@@ -30,26 +31,17 @@ def increments_dataset(job: FeJob, duration: float = 0.65) -> xr.Dataset:
                 n[i, j, k] = increments(sc, duration, sf)
     ds = xr.Dataset(
         {
-            "increments": (
+            "increments": cf_var(
                 ("mesh", "safety_factor", "stiffness_damping"),
                 n,
-                {"units": "1", "long_name": f"explicit increments to reach {duration} s"},
+                "1",
+                f"explicit increments to reach {duration} s",
             ),
-            "stable_time_step": (
-                ("mesh", "stiffness_damping"),
-                dtc,
-                {"units": "s", "long_name": "global stable time step 2/omega_max (damped)"},
+            "stable_time_step": cf_var(
+                ("mesh", "stiffness_damping"), dtc, "s", "global stable time step 2/omega_max (damped)"
             ),
-            "mesh_nx": (
-                "mesh",
-                np.array([m[0] for m in meshes]),
-                {"units": "1", "long_name": "elements along"},
-            ),
-            "mesh_ny": (
-                "mesh",
-                np.array([m[1] for m in meshes]),
-                {"units": "1", "long_name": "elements across"},
-            ),
+            "mesh_nx": cf_var("mesh", np.array([m[0] for m in meshes]), "1", "elements along"),
+            "mesh_ny": cf_var("mesh", np.array([m[1] for m in meshes]), "1", "elements across"),
         },
         coords={
             "mesh": ("mesh", [f"{a}x{b}" for a, b in meshes], {"long_name": "mesh (along x across)"}),
@@ -59,20 +51,14 @@ def increments_dataset(job: FeJob, duration: float = 0.65) -> xr.Dataset:
     )
     i0 = [f"{a}x{b}" for a, b in meshes].index("100x1") if (100, 1) in [tuple(m) for m in meshes] else 0
     j0 = int(np.argmin(np.abs(np.array(safety_factors, float) - 1.0)))
-    ds["increments_0p65s_100x1"] = (
-        (),
-        float(n[i0, j0, 0]),
-        {
-            "units": "1",
-            "long_name": "increments for 0.65 s, continuum 100x1, full stable step, no damping",
-        },
+    ds["increments_0p65s_100x1"] = cf_var(
+        (), float(n[i0, j0, 0]), "1", "increments for 0.65 s, continuum 100x1, full stable step, no damping"
     )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Explicit increment counts of the continuum strip",
-            "model_interpretation": "plane-stress CPS4I-kind strip, lumped mass; global stable step",
-            "method": "dt = safety_factor * 2/omega_max (sqrt(1+xi^2)-xi); increments = ceil(duration/dt)",
-        }
+        cf_attrs(
+            "Explicit increment counts of the continuum strip",
+            model_interpretation="plane-stress CPS4I-kind strip, lumped mass; global stable step",
+            method="dt = safety_factor * 2/omega_max (sqrt(1+xi^2)-xi); increments = ceil(duration/dt)",
+        )
     )
     return ds

@@ -12,7 +12,7 @@ import xarray as xr
 from ..fe.beam import node_coordinates
 from ..fe.metrics import window_envelope
 from ..fe.modes import contact_held_modes, nodal_field
-from ..fe.quantities import metric_attrs
+from ..fe.quantities import cf_var, metric_attrs
 
 
 def _binned(t: np.ndarray, y: np.ndarray, edges: np.ndarray):
@@ -44,7 +44,7 @@ def default_windows(duration: float, span: float = 0.005) -> list:
 
 
 SERIES = {
-    # name: (ExplicitResult attribute or callable, units, long_name)
+    # name: (units, long_name)
     "horizontal_displacement": ("mm", "horizontal displacement of node 1 from its initial position"),
     "vertical_displacement": ("mm", "vertical displacement of node 1 from its initial position"),
     "horizontal_velocity": ("mm s-1", "horizontal velocity of node 1"),
@@ -107,32 +107,28 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     ser = _series(r)
     data: dict = {}
     for k, (u, ln) in SERIES.items():
-        data[k] = ("time", ser[k][keep], {"units": u, "long_name": ln})
-    data["contact_state"] = (
+        data[k] = cf_var("time", ser[k][keep], u, ln)
+    data["contact_state"] = cf_var(
         "time",
         r.state[keep].astype("i1"),
-        {
-            "units": "1",
-            "long_name": "contact state",
-            "flag_values": np.array([0, 1, 2], "i1"),
-            "flag_meanings": "separated stick slip",
-        },
+        "1",
+        "contact state",
+        flag_values=np.array([0, 1, 2], "i1"),
+        flag_meanings="separated stick slip",
     )
     edges = np.arange(0.0, t[-1] + bin_width, bin_width)
     if edges.size < 2:
         edges = np.array([0.0, t[-1]])
     for k in BINNED:
         u, ln = SERIES[k]
-        lo, hi, mean = _binned(t, ser[k], edges)
-        data[f"{k}_min"] = ("bin_time", lo, {"units": u, "long_name": f"minimum per bin of the {ln}"})
-        data[f"{k}_max"] = ("bin_time", hi, {"units": u, "long_name": f"maximum per bin of the {ln}"})
-        data[f"{k}_mean"] = ("bin_time", mean, {"units": u, "long_name": f"mean per bin of the {ln}"})
+        for stat, what, values in zip(
+            ("min", "max", "mean"), ("minimum", "maximum", "mean"), _binned(t, ser[k], edges)
+        ):
+            data[f"{k}_{stat}"] = cf_var("bin_time", values, u, f"{what} per bin of the {ln}")
     for code, name in enumerate(("separation", "stick", "slip")):
         _, _, frac = _binned(t, (r.state == code).astype(float), edges)
-        data[f"{name}_fraction_per_bin"] = (
-            "bin_time",
-            frac,
-            {"units": "1", "long_name": f"fraction of output samples in {name} per bin"},
+        data[f"{name}_fraction_per_bin"] = cf_var(
+            "bin_time", frac, "1", f"fraction of output samples in {name} per bin"
         )
     tw, evx = window_envelope(t, r.vx)
     for k, y, u in (
@@ -141,25 +137,21 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
         ("horizontal_displacement", ser["horizontal_displacement"], "mm"),
         ("vertical_displacement", ser["vertical_displacement"], "mm"),
     ):
-        data[f"{k}_envelope"] = (
-            "window",
-            window_envelope(t, y)[1],
-            {"units": u, "long_name": f"half peak-to-peak {k.replace('_', ' ')} per window"},
+        data[f"{k}_envelope"] = cf_var(
+            "window", window_envelope(t, y)[1], u, f"half peak-to-peak {k.replace('_', ' ')} per window"
         )
     if "first_mode_amplitude" in r.extra:
-        tc, amp = r.extra["first_mode_amplitude"]
-        data["first_mode_amplitude"] = (
-            "mode_window",
-            amp,
-            {"units": "mm", "long_name": "horizontal amplitude of the first contact-held mode at node 1"},
+        mode_window_time, amp = r.extra["first_mode_amplitude"]
+        data["first_mode_amplitude"] = cf_var(
+            "mode_window", amp, "mm", "horizontal amplitude of the first contact-held mode at node 1"
         )
-        mode_window_time = tc
     else:
         mode_window_time = np.zeros(0)
-    data["detail_windows"] = (
+    data["detail_windows"] = cf_var(
         ("detail_window", "bound"),
         np.array(windows, float),
-        {"units": "s", "long_name": "start and end of the full-resolution windows"},
+        "s",
+        "start and end of the full-resolution windows",
     )
     for k, v in m.items():
         data[k] = ((), float(v), metric_attrs(k, k.replace("_", " ")))
@@ -168,17 +160,11 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     return xr.Dataset(
         data,
         coords={
-            "time": ("time", t[keep], {"units": "s", "long_name": "time (full-resolution windows only)"}),
-            "bin_time": (
-                "bin_time",
-                0.5 * (edges[:-1] + edges[1:]),
-                {"units": "s", "long_name": "bin centre"},
-            ),
-            "window_time": ("window", tw, {"units": "s", "long_name": "window centre time"}),
-            "mode_window_time": (
-                "mode_window",
-                mode_window_time,
-                {"units": "s", "long_name": "centre of the first-mode demodulation window"},
+            "time": cf_var("time", t[keep], "s", "time (full-resolution windows only)"),
+            "bin_time": cf_var("bin_time", 0.5 * (edges[:-1] + edges[1:]), "s", "bin centre"),
+            "window_time": cf_var("window", tw, "s", "window centre time"),
+            "mode_window_time": cf_var(
+                "mode_window", mode_window_time, "s", "centre of the first-mode demodulation window"
             ),
         },
     )
@@ -201,27 +187,23 @@ def shape_variables(scene, q_static: np.ndarray) -> dict:
     scale = np.maximum(np.abs(shapes["horizontal"]).max(axis=1), np.abs(shapes["vertical"]).max(axis=1))
     both = np.concatenate([shapes["horizontal"], shapes["vertical"]], axis=1)
     sign = np.sign(both[np.arange(freq.size), np.abs(both).argmax(axis=1)])
-    pos = {"units": "mm", "long_name": "position of the node along the beam from the clamp"}
     out = {
-        "node_position": ("node_position", x, pos),
-        "natural_frequency": (
-            "mode",
-            freq,
-            {"units": "Hz", "long_name": "natural frequencies with contact held"},
+        "node_position": cf_var(
+            "node_position", x, "mm", "position of the node along the beam from the clamp"
         ),
+        "natural_frequency": cf_var("mode", freq, "Hz", "natural frequencies with contact held"),
     }
     for c in ("horizontal", "vertical"):
-        out[f"static_deflection_{c}"] = (
+        out[f"static_deflection_{c}"] = cf_var(
             "node_position",
             nodal_field(scene, q_static, 0 if c == "horizontal" else 1),
-            {
-                "units": "mm",
-                "long_name": f"{c} displacement of the beam axis in the static equilibrium in contact",
-            },
+            "mm",
+            f"{c} displacement of the beam axis in the static equilibrium in contact",
         )
-        out[f"mode_shape_{c}"] = (
+        out[f"mode_shape_{c}"] = cf_var(
             ("mode", "node_position"),
             shapes[c] * (sign / np.where(scale > 0, scale, 1.0))[:, None],
-            {"units": "1", "long_name": f"{c} component of the mode shape with contact held (largest = 1)"},
+            "1",
+            f"{c} component of the mode shape with contact held (largest = 1)",
         )
     return out

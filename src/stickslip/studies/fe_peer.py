@@ -25,6 +25,7 @@ from ..fe import mechanics
 from ..fe.abaqus_deck import LINEAR_ELEMENT, LINEAR_ELEMENT_REASON, linear_deck
 from ..fe.continuum import build_continuum, natural_frequencies, static_state
 from ..fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
+from ..fe.quantities import cf_attrs, cf_var
 from ..schema.fe import FePeer
 from ..validation.calculix import CalculixError, mode_blocks, parse_dat, run_ccx, static_block
 
@@ -182,38 +183,37 @@ def peer_dataset(rows: list[dict], beam: BeamParams, nx: int, ny: int, tolerance
     data = {}
     for r in rows:
         for m in MODELS:
-            data[f"{r['quantity']}_{m}"] = xr.DataArray(
-                r[m], attrs={"units": r["unit"], "long_name": f"{r['long_name']}: {m.replace('_', ' ')}"}
+            data[f"{r['quantity']}_{m}"] = cf_var(
+                (), r[m], r["unit"], f"{r['long_name']}: {m.replace('_', ' ')}"
             )
     quantities = [r["quantity"] for r in rows]
     for a, b in PAIRS:
-        data[f"rel_diff_{a}_{b}"] = xr.DataArray(
+        data[f"rel_diff_{a}_{b}"] = cf_var(
+            "quantity",
             [r[f"rel_diff_{a}_{b}"] for r in rows],
-            dims="quantity",
-            attrs={"units": "1", "long_name": f"relative difference ({a} - {b}) / |{b}|"},
+            "1",
+            f"relative difference ({a} - {b}) / |{b}|",
         )
     worst = max(abs(r[f"rel_diff_{a}_{b}"]) for r in rows for a, b in PAIRS)
-    data["max_abs_rel_diff"] = xr.DataArray(
-        worst, attrs={"units": "1", "long_name": "largest |relative difference| over quantities and pairs"}
+    data["max_abs_rel_diff"] = cf_var(
+        (), worst, "1", "largest |relative difference| over quantities and pairs"
     )
-    data["peers_agree"] = xr.DataArray(
+    data["peers_agree"] = cf_var(
+        (),
         np.int8(worst <= tolerance),
-        attrs={
-            "units": "1",
-            "long_name": f"1 if closed form, continuum and CalculiX agree within {tolerance:g} on all",
-            "tolerance": tolerance,
-        },
+        "1",
+        f"1 if closed form, continuum and CalculiX agree within {tolerance:g} on all",
+        tolerance=tolerance,
     )
     ds = xr.Dataset(data, coords={"quantity": ("quantity", np.array(quantities, dtype=object))})
     ds["quantity_unit"] = xr.DataArray(
         [r["unit"] for r in rows], dims="quantity", attrs={"long_name": "unit of each quantity"}
     )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "CalculiX peer of the continuum strip: modes and self-weight states",
-            "parameters": json.dumps({"beam": beam.__dict__, "mesh": [nx, ny], "tolerance": tolerance}),
-            "model_interpretation": (
+        cf_attrs(
+            "CalculiX peer of the continuum strip: modes and self-weight states",
+            parameters=json.dumps({"beam": beam.__dict__, "mesh": [nx, ny], "tolerance": tolerance}),
+            model_interpretation=(
                 f"strip {beam.length:g} x {beam.thickness:g} mm, width {beam.width:g} mm, clamped at x = 0, "
                 "own weight; tip free, or propped at its free-end lower corner (u_y = 0, the contact on a "
                 "disc at angle 0). "
@@ -221,9 +221,9 @@ def peer_dataset(rows: list[dict], beam: BeamParams, nx: int, ny: int, tolerance
                 f"CalculiX: {nx} x {ny} x 1 {LINEAR_ELEMENT} bricks, u_z = 0 on one face, consistent mass: "
                 + LINEAR_ELEMENT_REASON
             ),
-            "method": "linear static and eigenvalue analyses; ccx on the decks of stickslip.fe.abaqus_deck",
-        }
-    )  # fmt: skip
+            method="linear static and eigenvalue analyses; ccx on the decks of stickslip.fe.abaqus_deck",
+        )
+    )
     return ds
 
 

@@ -9,7 +9,7 @@ from collections.abc import Mapping
 import xarray as xr
 
 from ..fe.params import FrictionTable, SceneParams
-from ..fe.quantities import INTERPRETATION
+from ..fe.quantities import INTERPRETATION, cf_attrs
 from ..fe.run import integrate_scene, run_metrics
 from ..fe.scene import BuiltScene, build_scene
 from ..schema.fe import FeOutput
@@ -52,17 +52,14 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "", pro
     ds = result_dataset(r, m, windows=out.windows, bin_width=out.bin_width)
     ds = ds.assign(shape_variables(scene, r.q_static))
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": f"Beam on rotating rigid disc, scene {name}".strip(),
-            "scene": name,
-            "parameters": json.dumps(dataclasses.asdict(scene.params)),
-            "model_interpretation": INTERPRETATION,
-            "method": (
-                f"explicit central difference (compiled kernel), {scene.law.method} contact, dt={r.dt:.6g} s "
-                f"(stable limit {r.dt_crit:.6g} s)"
-            ),
-            "diverged": int(r.extra.get("diverged", False)),
-        }
+        cf_attrs(
+            f"Beam on rotating rigid disc, scene {name}".strip(),
+            scene=name,
+            parameters=json.dumps(dataclasses.asdict(scene.params)),
+            model_interpretation=INTERPRETATION,
+            method=f"explicit central difference (compiled kernel), {scene.law.method} contact, "
+            f"dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
+            diverged=int(r.extra.get("diverged", False)),
+        )
     )
     return ds

@@ -10,7 +10,7 @@ import xarray as xr
 
 from ..fe.explicit import static_state
 from ..fe.params import FrictionTable, SolverParams
-from ..fe.quantities import INTERPRETATION
+from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 from ..schema.fe import FeJob, Stability
 from .fe_config import as_mapping, deep_merge
@@ -60,12 +60,8 @@ def crosscheck_point(base, friction, speed, angle, slope, st: Stability, damp: M
     }
 
 
-def _var(dims, values, units: str, long_name: str) -> tuple:
-    return (dims, values, {"units": units, "long_name": long_name})
-
-
 def _cc_var(v, units, long_name):
-    return _var("crosscheck", np.array(v, float), units, long_name)
+    return cf_var("crosscheck", np.array(v, float), units, long_name)
 
 
 def crosscheck_variables(cc: list, rows: list[dict]) -> dict:
@@ -92,40 +88,42 @@ def crosscheck_variables(cc: list, rows: list[dict]) -> dict:
         ),
         "crosscheck_angle": _cc_var([c[0] for c in cc], "degree", "cross-check contact angle"),
         "crosscheck_slope": _cc_var([c[1] for c in cc], "s mm-1", "cross-check friction slope"),
-        "crosscheck_max_relative_difference": (
+        "crosscheck_max_relative_difference": cf_var(
             (),
             float(np.nanmax(rel)) if rel.size else np.nan,
-            {
-                "units": "1",
-                "long_name": "largest |transient / eigenvalue growth rate - 1| of the cross-checks",
-            },
+            "1",
+            "largest |transient / eigenvalue growth rate - 1| of the cross-checks",
         ),
     }
 
 
 def map_variables(g: np.ndarray, fr: np.ndarray) -> dict:
     return {
-        "max_growth_rate": _var(MAP_DIMS, g, "s-1", "largest real part of the linearised eigenvalues"),
-        "unstable_frequency": _var(MAP_DIMS, fr, "Hz", "frequency of the least stable eigenvalue"),
+        "max_growth_rate": cf_var(MAP_DIMS, g, "s-1", "largest real part of the linearised eigenvalues"),
+        "unstable_frequency": cf_var(MAP_DIMS, fr, "Hz", "frequency of the least stable eigenvalue"),
     }
 
 
 def map_coords(angles, slopes) -> dict:
     return {
-        "contact_angle": _var("contact_angle", np.array(angles, float), "degree", "contact angle"),
-        "friction_slope": _var("friction_slope", np.array(slopes, float), "s mm-1", "d mu / d v_r"),
+        "contact_angle": cf_var("contact_angle", np.array(angles, float), "degree", "contact angle"),
+        "friction_slope": cf_var("friction_slope", np.array(slopes, float), "s mm-1", "d mu / d v_r"),
     }
+
+
+def _nearest(angles, slopes, table_slope: float) -> tuple[int, int]:
+    """(index of the mapped angle nearest 0, of the mapped slope nearest ``table_slope``)."""
+    return int(np.argmin(np.abs(np.array(angles)))), int(np.argmin(np.abs(np.array(slopes) - table_slope)))
 
 
 def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
     """Growth rate and frequency at angle 0 and the mapped slope nearest the table's."""
-    k0 = int(np.argmin(np.abs(np.array(slopes) - table_slope)))
-    a0 = int(np.argmin(np.abs(np.array(angles))))
+    a0, k0 = _nearest(angles, slopes, table_slope)
     return {
-        "growth_rate_at_table_slope_angle0": _var(
+        "growth_rate_at_table_slope_angle0": cf_var(
             (), g[a0, k0], "s-1", "growth rate at angle 0 and the slope nearest the table's"
         ),
-        "unstable_frequency_at_table_slope_angle0": _var(
+        "unstable_frequency_at_table_slope_angle0": cf_var(
             (), fr[a0, k0], "Hz", "frequency of the least stable mode at angle 0 and the table's slope"
         ),
     }
@@ -134,12 +132,11 @@ def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
 def at_speed(g, angles, slopes, table_slope: float, label: str, speed: float) -> dict:
     """Growth rate at angle 0 and the mapped slope nearest the table's slope at one disc speed, named by that
     speed's label, so a claim reading it names the speed it is decided at."""
-    k0 = int(np.argmin(np.abs(np.array(slopes) - table_slope)))
-    a0 = int(np.argmin(np.abs(np.array(angles))))
+    a0, k0 = _nearest(angles, slopes, table_slope)
     where = f"at {speed:.3g} mm/s (table slope {table_slope:.3g} s/mm, mapped {slopes[k0]:.3g})"
     return {
-        f"growth_rate_angle0_{label}": _var((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
-        f"table_slope_{label}": _var((), table_slope, "s mm-1", f"d mu / d v_r of the table {where}"),
+        f"growth_rate_angle0_{label}": cf_var((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
+        f"table_slope_{label}": cf_var((), table_slope, "s mm-1", f"d mu / d v_r of the table {where}"),
     }
 
 
@@ -159,7 +156,7 @@ def stability_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     cc = st.crosscheck
     rows = [crosscheck_point(base, friction, V, a, s, st, damp) for a, s in cc]
     table_slope = {
-        "table_slope_at_disc_speed": _var(
+        "table_slope_at_disc_speed": cf_var(
             (), friction.slope(V), "s mm-1", "d mu / d v_r of the friction table at the disc speed"
         )
     }
@@ -172,16 +169,12 @@ def stability_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
         speed = scene_of(as_mapping(job.scenes[scene]), friction).params.disc.surface_speed
         ds = ds.assign(at_speed(g, angles, slopes, friction.slope(speed), label, speed))
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": "Stability of steady sliding (complex eigenvalues)",
-            "model_interpretation": INTERPRETATION,
-            "base_scene": st.base,
-            "method": (
-                "linearisation about steady sliding (sliding normal force, friction slope, Rayleigh "
-                "damping); "
-                "cross-check by explicit transients from the sliding state"
-            ),
-        }
+        cf_attrs(
+            "Stability of steady sliding (complex eigenvalues)",
+            model_interpretation=INTERPRETATION,
+            base_scene=st.base,
+            method="linearisation about steady sliding (sliding normal force, friction slope, Rayleigh "
+            "damping); cross-check by explicit transients from the sliding state",
+        )
     )
     return ds

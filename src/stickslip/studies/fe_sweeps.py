@@ -11,7 +11,7 @@ import numpy as np
 import xarray as xr
 
 from ..fe.params import FrictionTable
-from ..fe.quantities import INTERPRETATION, metric_attrs
+from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var, metric_attrs
 from ..schema.fe import FeJob, FeSweep
 from .fe_config import as_mapping, halved_step
 from .fe_scene import run_scene
@@ -55,22 +55,15 @@ def sweep_dataset(job: FeJob, sweep_name: str, friction: FrictionTable) -> xr.Da
     coord = sw.coord
     ds = xr.Dataset(
         {k: (coord, v, metric_attrs(k)) for k, v in _scalar_columns(rows).items()},
-        coords={
-            coord: (
-                coord,
-                np.array(sw.values, float),
-                {"units": sw.units, "long_name": sw.long_name or coord},
-            )
-        },
+        coords={coord: cf_var(coord, np.array(sw.values, float), sw.units, sw.long_name or coord)},
     )
     ds.attrs.update(
-        {
-            "Conventions": "CF-1.10",
-            "title": f"Beam-on-disc sweep {sweep_name}",
-            "model_interpretation": INTERPRETATION,
-            "base_scene": sw.base,
-            "parameters": json.dumps(base),
-            "method": "explicit central difference, one run per sweep value",
-        }
+        cf_attrs(
+            f"Beam-on-disc sweep {sweep_name}",
+            model_interpretation=INTERPRETATION,
+            base_scene=sw.base,
+            parameters=json.dumps(base),
+            method="explicit central difference, one run per sweep value",
+        )
     )
     return ds
