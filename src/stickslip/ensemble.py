@@ -271,11 +271,3 @@ def ensemble_dataset(
         f"BLAS limited to {spec.blas_threads} thread(s)"
     )
     return ds
-
-
-def member_values(ds: xr.Dataset, name: str) -> np.ndarray | None:
-    """Values of metric ``name`` per member (leading axis), or None when the dataset has no ensemble."""
-    key = name + SUFFIX
-    if key not in ds:
-        return None
-    return np.asarray(ds[key].values, dtype=float)

@@ -55,6 +55,11 @@ def _attr_value(value):
     return json.dumps(value, sort_keys=True, default=str)
 
 
+def cf_variable(dims, values, units: str, long_name: str, **attrs) -> tuple:
+    """A variable as xarray takes it, ``(dims, values, attrs)``, its units and long name first."""
+    return dims, values, {"units": units, "long_name": long_name, **attrs}
+
+
 def flat_attrs(prefix: str, mapping: dict) -> dict:
     return {f"{prefix}{key}": _attr_value(val) for key, val in sorted(mapping.items())}
 
@@ -66,17 +71,11 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     )
     ds = xr.Dataset(
         {
-            "displacement": ("time", traj.x, {"units": "mm", "long_name": "mass displacement x"}),
-            "velocity": ("time", traj.v, {"units": "mm s-1", "long_name": "mass velocity dx/dt"}),
-            "belt_velocity": (
-                "time",
-                traj.belt_velocity,
-                {"units": "mm s-1", "long_name": "belt velocity V_b"},
-            ),
-            "relative_velocity": (
-                "time",
-                traj.relative_velocity,
-                {"units": "mm s-1", "long_name": "relative velocity v_r = dx/dt - V_b"},
+            "displacement": cf_variable("time", traj.x, "mm", "mass displacement x"),
+            "velocity": cf_variable("time", traj.v, "mm s-1", "mass velocity dx/dt"),
+            "belt_velocity": cf_variable("time", traj.belt_velocity, "mm s-1", "belt velocity V_b"),
+            "relative_velocity": cf_variable(
+                "time", traj.relative_velocity, "mm s-1", "relative velocity v_r = dx/dt - V_b"
             ),
             "phase": (
                 "time",
@@ -93,17 +92,15 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     )
     if traj.segments is not None:
         seg = np.asarray(traj.segments, dtype=float).reshape(-1, 3)
-        ds["segment_start"] = ("segment", seg[:, 0], {"units": "s", "long_name": "segment start time"})
-        ds["segment_end"] = ("segment", seg[:, 1], {"units": "s", "long_name": "segment end time"})
-        ds["segment_phase"] = (
+        ds["segment_start"] = cf_variable("segment", seg[:, 0], "s", "segment start time")
+        ds["segment_end"] = cf_variable("segment", seg[:, 1], "s", "segment end time")
+        ds["segment_phase"] = cf_variable(
             "segment",
             seg[:, 2].astype(np.int8),
-            {
-                "units": "1",
-                "long_name": "segment contact phase",
-                "flag_values": np.array([-1, 0, 1], dtype=np.int8),
-                "flag_meanings": "slip_backward stick slip_forward",
-            },
+            "1",
+            "segment contact phase",
+            flag_values=np.array([-1, 0, 1], dtype=np.int8),
+            flag_meanings="slip_backward stick slip_forward",
         )
     stats = traj.stats
     code, message = SOLVER_STATUS.index(stats.status), stats.message or "none"
@@ -127,10 +124,9 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
         ("events", "1", "switching events handled"),
         ("cpu_time", "s", "process CPU time of the solve"),
     ):
-        attrs = {"units": units, "long_name": long_name}
-        scalars[f"solver_{name}"] = ((), float(getattr(stats, name)), attrs)
+        scalars[f"solver_{name}"] = cf_variable((), float(getattr(stats, name)), units, long_name)
     for name, metric in (metrics or {}).items():
-        scalars[name] = ((), float(metric.value), {"units": metric.units, "long_name": metric.long_name})
+        scalars[name] = cf_variable((), float(metric.value), metric.units, metric.long_name)
     return ds.assign(scalars)
 
 

@@ -36,12 +36,12 @@ def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
     return path
 
 
-def write_csv_atomic(path: str | os.PathLike, rows: list[dict]) -> Path:
+def write_csv_atomic(path: str | os.PathLike, rows: list[dict], lineterminator: str = "\n") -> Path:
     """Rows (dicts with the same keys) as CSV with a header line."""
     if not rows:
         raise ValueError(f"{path}: no rows to write")
     buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=list(rows[0]), lineterminator="\n")
+    w = csv.DictWriter(buf, fieldnames=list(rows[0]), lineterminator=lineterminator)
     w.writeheader()
     w.writerows(rows)
     return write_text_atomic(path, buf.getvalue())

@@ -31,15 +31,11 @@ class SolverStats:
 
     rhs_evaluations: int = 0
     steps: int = 0
-    rejected_steps: int = 0
     events: int = 0
     failures: int = 0
     cpu_time: float = 0.0
     status: str = "ok"
     message: str = ""
-    jacobian_evaluations: int = 0
-    min_step: float = float("nan")
-    """Smallest accepted step [s] (methods that report one)."""
 
 
 @dataclass
