@@ -109,7 +109,6 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     except ValidationError as exc:
         raise ConfigError(typed_errors(exc)) from None
     try:
-        _check_ensemble(config)
         _check_onedof(typed)
         check_methods_config(typed.methods_study)
         _check_dense_maps(typed)
@@ -121,16 +120,6 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
     return typed
-
-
-def _check_ensemble(config: dict) -> None:
-    """The ensemble section builds the spec every claimed dataset's job builds (one schema, checked once)."""
-    from ..ensemble import EnsembleSpec
-
-    try:
-        EnsembleSpec.from_mapping(config.get("ensemble"))
-    except (ValueError, TypeError) as exc:
-        raise ConfigError(str(exc) if str(exc).startswith("ensemble") else f"ensemble: {exc}") from None
 
 
 def _check_validation(validation: Validation, producible: list[str]) -> None:
