@@ -62,13 +62,9 @@ def chunk_points(axes: list[SweepAxis], chunk_size: int, chunk: int) -> list[dic
     if not 0 <= start < n:
         raise ParameterError(f"chunk: {chunk} out of range (0..{chunk_count(axes, chunk_size) - 1})")
     combos = itertools.islice(itertools.product(*(a.values for a in axes)), start, stop)
-    points = []
-    for combo in combos:
-        point = {}
-        for axis, value in zip(axes, combo):
-            point.update(axis.point(value))
-        points.append(point)
-    return points
+    return [
+        {k: v for axis, value in zip(axes, combo) for k, v in axis.point(value).items()} for combo in combos
+    ]
 
 
 def run_points(
@@ -95,16 +91,14 @@ def run_points(
         traj = solver.solve(model, t_end, t_eval)
         if on_trajectory is not None:
             on_trajectory(i, traj)
-        metrics = limit_cycle_metrics(traj, transient, count_window)
-        rows.append(({k: m.value for k, m in metrics.items()}, metrics))
+        rows.append(limit_cycle_metrics(traj, transient, count_window))
         if progress is not None:
             progress(i + 1, len(points))
-    names, meta = {}, {}
-    for _values, metrics in rows:
+    meta = {}  # each metric's first record (units, long name), in the order the runs name them
+    for metrics in rows:
         for k, m in metrics.items():
-            names.setdefault(k, None)
             meta.setdefault(k, m)
-    out = {k: np.array([values.get(k, np.nan) for values, _ in rows], dtype=float) for k in names}
+    out = {k: np.array([row[k].value if k in row else np.nan for row in rows], dtype=float) for k in meta}
     out["_meta"] = meta
     return out
 
