@@ -18,7 +18,7 @@ import numpy as np
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import BeltParams, ParameterError
-from .metrics import PAPER_COUNT_WINDOW, limit_cycle_metrics
+from .metrics import PAPER_COUNT_WINDOW, cf_variable, limit_cycle_metrics
 
 if TYPE_CHECKING:  # the workflow builds sweep specs at parse time: xarray only where a dataset is made
     import xarray as xr
@@ -114,7 +114,7 @@ def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: d
     ds = xr.Dataset(coords={"point": ("point", index, {"long_name": "flattened grid index", "units": "1"})})
     ds = ds.assign(
         {
-            name: ("point", results[name], {"units": metric.units, "long_name": metric.long_name})
+            name: cf_variable("point", results[name], metric.units, metric.long_name)
             for name, metric in results["_meta"].items()
         }
     )
@@ -134,10 +134,8 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
     dims = [a.name for a in axes]
     out = xr.Dataset(
         coords={
-            a.name: (
-                a.name,
-                np.asarray(a.values, dtype=float),
-                {"units": a.units or "1", "long_name": a.long_name or a.name},
+            a.name: cf_variable(
+                a.name, np.asarray(a.values, dtype=float), a.units or "1", a.long_name or a.name
             )
             for a in axes
         }
@@ -146,10 +144,9 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
         out[name] = (dims, var.values.reshape(shape), dict(var.attrs))
     for axis in axes:
         for other, factor in axis.linked.items():
-            out[other] = (
-                axis.name,
-                float(factor) * np.asarray(axis.values, dtype=float),
-                {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"},
+            values = float(factor) * np.asarray(axis.values, dtype=float)
+            out[other] = cf_variable(
+                axis.name, values, "1", f"{other} linked to {axis.name} (factor {factor:g})"
             )
     return out
 

@@ -6,6 +6,8 @@ import csv
 import math
 from pathlib import Path
 
+from .text_files import write_csv_atomic, write_text_atomic
+
 
 def _read_benchmark(path: Path) -> list[dict]:
     with path.open(newline="") as fh:
@@ -46,19 +48,14 @@ def summarize_benchmarks(root: Path) -> list[dict]:
 
 def write_summary(rows: list[dict], csv_path, md_path) -> None:
     fields = ["rule", "jobs", "wall_s_total", "wall_s_max", "cpu_s_total", "peak_rss_mb"]
-    csv_path, md_path = Path(csv_path), Path(md_path)
-    csv_path.parent.mkdir(parents=True, exist_ok=True)
-    with csv_path.open("w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=fields)
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv_atomic(csv_path, rows, fields=fields, lineterminator="\r\n")
     total = sum(r["wall_s_total"] for r in rows)
     lines = ["| " + " | ".join(fields) + " |", "|" + "---|" * len(fields)]
     lines += ["| " + " | ".join(str(r[f]) for f in fields) + " |" for r in rows]
     lines.append(
         f"\nSum of job wall times: {total:.1f} s (jobs run in parallel, so the elapsed time is less)."
     )
-    md_path.write_text("\n".join(lines) + "\n")
+    write_text_atomic(md_path, "\n".join(lines) + "\n")
 
 
 # -- per-rule CPU budgets (docs/TIMING.md) ----------------------------------------------------------------

@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 
 from .._version import __version__
-from ..analysis.metrics import Metric
+from ..analysis.metrics import Metric, cf_variable
 from ..solvers.base import Trajectory
 from .text_files import publish  # noqa: F401 (re-exported: the writers of other modules take it from here)
 
@@ -53,11 +53,6 @@ def _attr_value(value):
     if value is None:
         return "none"
     return json.dumps(value, sort_keys=True, default=str)
-
-
-def cf_variable(dims, values, units: str, long_name: str, **attrs) -> tuple:
-    """A variable as xarray takes it, ``(dims, values, attrs)``, its units and long name first."""
-    return dims, values, {"units": units, "long_name": long_name, **attrs}
 
 
 def flat_attrs(prefix: str, mapping: dict) -> dict:

@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import Inverse, MethodsStudy, PipelineConfig, Validation
+    from ..schema import Inverse, MethodsStudy, PipelineConfig
     from ..schema.fe import Fe
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
@@ -115,17 +115,13 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
         from ..studies.fe_config import effective_fe
 
         check_fe_config(effective_fe(typed), list(producible), allow_expensive=typed.allow_expensive)
-        _check_validation(typed.validation, list(producible))
+        from ..validation.setup import check as check_validation
+
+        check_validation(typed.validation, list(producible))
         _check_inverse_claims(typed.inverse, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
     return typed
-
-
-def _check_validation(validation: Validation, producible: list[str]) -> None:
-    from ..validation.setup import check
-
-    check(validation, producible)
 
 
 def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None) -> None:

@@ -10,10 +10,10 @@ from ..analysis.critical import continuation, critical_speed
 from ..analysis.divergence import BoundedSolver
 from ..analysis.extra_metrics import extra_metrics
 from ..analysis.friction_curve import friction_along_solution, friction_table
-from ..analysis.metrics import METRICS, limit_cycle_metrics, metric_attrs
+from ..analysis.metrics import METRICS, cf_variable, limit_cycle_metrics, metric_attrs
 from ..analysis.outcome import FLAG_ATTRS, mechanism, outcome_name, run_outcome
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
-from ..io.netcdf import cf_variable, trajectory_dataset
+from ..io.netcdf import trajectory_dataset
 from ..model.amplitude import amplitude_correct, amplitude_printed, correct_peak, printed_peak
 from ..model.equations import BeltModel
 from ..model.laws import LawModel

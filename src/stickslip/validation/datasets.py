@@ -8,9 +8,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from ..io.netcdf import cf_variable
+from ..analysis.metrics import cf_variable
 from ..io.text_files import write_csv_atomic
-from .compare import RoundTrip
+from .compare import TOLERANCE_CLASS, RoundTrip
 from .cycle import QUANTITIES
 
 
@@ -51,7 +51,7 @@ def peer_dataset(rows: list[dict], runs: dict[str, dict], tolerances: dict) -> x
             flag_values=np.array([-1, 0, 1], dtype=np.int8),
             flag_meanings="not_compared exceeds within",
         )
-        tol = tolerances[_tol_class(q)]
+        tol = tolerances[TOLERANCE_CLASS[q]]
         data[f"{q}_tolerance"] = cf_variable((), tol.abs, units, f"tolerance on {q}", reason=tol.reason)
     rhs = [float(runs[n]["cvode_counters"]["rhs_evaluations"]) for n in laws]
     data["cvode_rhs_evaluations"] = cf_variable("law", rhs, "1", "CVODE right-hand-side evaluations")
@@ -60,10 +60,6 @@ def peer_dataset(rows: list[dict], runs: dict[str, dict], tolerances: dict) -> x
     # names as an auxiliary coordinate: a CF coordinate variable must be numeric and monotonic
     names = ("law", laws, {"long_name": "friction law (config validation.laws)"})
     return xr.Dataset(data, coords={"law_name": names})
-
-
-def _tol_class(quantity: str) -> str:
-    return "time" if QUANTITIES[quantity][0] == "s" else "position"
 
 
 #: The differences of a round trip's two runs: name -> (units, long name).
