@@ -178,12 +178,9 @@ def _merged_attrs(existing: dict, provenance: dict) -> dict:
 
     ``history`` is the exception CF describes: an audit trail, so the writer's line is appended.
     """
-    out = dict(provenance)
-    for key, value in existing.items():
-        if key == "history" and value:
-            out[key] = f"{value}\n{provenance['history']}"
-        else:
-            out[key] = value
+    out = {**provenance, **existing}
+    if existing.get("history"):
+        out["history"] = f"{existing['history']}\n{provenance['history']}"
     return out
 
 
