@@ -101,8 +101,8 @@ def claimed_paths(claims: list[Claim], readings):
                 yield c, key, ref, ref.dataset.format(reading=r)
 
 
-#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.
-DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
+#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them, and in words.
+DISC_SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
 
 
 def disc_speed(claim: Claim) -> str:

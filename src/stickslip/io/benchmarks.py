@@ -14,7 +14,8 @@ def _read_benchmark(path: Path) -> list[dict]:
         return list(csv.DictReader(fh, delimiter="\t"))
 
 
-def _num(value) -> float:
+def as_number(value) -> float:
+    """A table cell as a float; NaN when it is not a number."""
     try:
         return float(value)
     except (TypeError, ValueError):
@@ -30,9 +31,9 @@ def summarize_benchmarks(root: Path) -> list[dict]:
         per_rule.setdefault(rule, []).extend(_read_benchmark(path))
     rows = []
     for rule, records in sorted(per_rule.items()):
-        wall = [_num(r.get("s")) for r in records]
-        rss = [_num(r.get("max_rss")) for r in records]
-        cpu = [_num(r.get("cpu_time")) for r in records]
+        wall = [as_number(r.get("s")) for r in records]
+        rss = [as_number(r.get("max_rss")) for r in records]
+        cpu = [as_number(r.get("cpu_time")) for r in records]
         rows.append(
             {
                 "rule": rule,
@@ -77,7 +78,7 @@ def read_budgets(text: str) -> dict[str, dict]:
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if len(cells) != 4:
             raise ValueError(f"budget table row {line!r}: expected 4 cells")
-        out[cells[0]] = {"budget": _num(cells[1]), "last": _num(cells[2]), "commit": cells[3]}
+        out[cells[0]] = {"budget": as_number(cells[1]), "last": as_number(cells[2]), "commit": cells[3]}
     return out
 
 
