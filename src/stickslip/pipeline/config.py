@@ -111,7 +111,6 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     try:
         _check_onedof(typed)
         check_methods_config(typed.methods_study)
-        _check_dense_maps(typed)
         from ..studies.fe_config import effective_fe
 
         check_fe_config(effective_fe(typed), list(producible), allow_expensive=typed.allow_expensive)
@@ -144,8 +143,9 @@ def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None)
 
 
 def _check_onedof(typed: PipelineConfig) -> None:
-    """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
-    from ..studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
+    """Every figure's runs, every sweep and critical-speed run for every claims reading and every dense
+    map resolve."""
+    from ..studies.specs import baseline_spec, dense_map, figure_runs, run_spec, sweep_spec
 
     onedof = typed.onedof
     for figure in onedof.figures.values():
@@ -156,13 +156,8 @@ def _check_onedof(typed: PipelineConfig) -> None:
             sweep_spec(onedof, sweep, reading)
     for reading in onedof.critical_speed.readings if onedof.critical_speed else []:
         baseline_spec(onedof, reading)
-
-
-def _check_dense_maps(typed: PipelineConfig) -> None:
-    from ..studies.specs import dense_map
-
     for name in typed.dense_map.maps:
-        dense_map(typed.onedof, typed.dense_map, name)
+        dense_map(onedof, typed.dense_map, name)
 
 
 #: Beam element-increments (elements x explicit steps) a build may run without ``allow_expensive: true``.
