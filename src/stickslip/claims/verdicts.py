@@ -93,6 +93,12 @@ def tally(rows: list[dict]) -> Tally:
     return Tally(statuses.count("reproduced"), decided, undecided, apart, statuses.count("not-comparable"))
 
 
+def figure_verdict(statuses) -> str:
+    """The label of a list of claim statuses (all taken as evidence)."""
+    statuses = list(statuses)
+    return verdict_label(statuses.count("reproduced"), sum(s in DECIDED for s in statuses))
+
+
 def rows_in_reading(rows: list[dict], reading: str) -> list[dict]:
     """The claims-table rows of ``reading`` and the rows that hold in every reading (reading ``""``)."""
     return [r for r in rows if r["reading"] in ("", reading)]
