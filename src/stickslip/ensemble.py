@@ -30,11 +30,13 @@ from __future__ import annotations
 import copy
 import hashlib
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from fnmatch import fnmatchcase
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
+from pydantic import Field
+from pydantic.dataclasses import dataclass
 
 if TYPE_CHECKING:  # the config check reads EnsembleSpec at parse time: no xarray there (0.5 s a no-op)
     import xarray as xr
@@ -50,26 +52,16 @@ DEFAULT_WINDOW_KEYS = ("transient",)
 
 @dataclass(frozen=True)
 class EnsembleSpec:
-    """What the ensemble perturbs. ``members`` = 0 switches the ensemble off (base run only)."""
+    """What the ensemble perturbs (the ``ensemble`` config section's bounds, checked at construction: a
+    pydantic ``ValidationError``, a ``ValueError``, names the field)."""
 
-    relative: float = 1e-12
+    relative: Annotated[float, Field(gt=0, lt=1e-3, allow_inf_nan=False)] = 1e-12
     seeds: tuple[int, ...] = (1, 2)
-    step_factor: float = 0.5
+    step_factor: Annotated[float, Field(gt=0, lt=1, allow_inf_nan=False)] = 0.5
     step_keys: tuple[str, ...] = DEFAULT_STEP_KEYS
-    blas_threads: int | None = 1
-    window_factor: float | None = None
+    blas_threads: Annotated[int, Field(ge=1)] | None = 1
+    window_factor: Annotated[float, Field(gt=1, le=2, allow_inf_nan=False)] | None = None
     window_keys: tuple[str, ...] = DEFAULT_WINDOW_KEYS
-
-    def __post_init__(self):
-        if not (np.isfinite(self.relative) and 0 < self.relative < 1e-3):
-            raise ValueError(f"ensemble.relative: must be in (0, 1e-3), got {self.relative!r}")
-        if not (np.isfinite(self.step_factor) and 0 < self.step_factor < 1):
-            raise ValueError(f"ensemble.step_factor: must be in (0, 1), got {self.step_factor!r}")
-        factor = self.window_factor
-        if factor is not None and not (np.isfinite(factor) and 1 < factor <= 2):
-            raise ValueError(f"ensemble.window_factor: must be in (1, 2], got {self.window_factor!r}")
-        if self.blas_threads is not None and int(self.blas_threads) < 1:
-            raise ValueError(f"ensemble.blas_threads: must be >= 1, got {self.blas_threads!r}")
 
     def without_blas(self) -> EnsembleSpec:
         """For computations that make no BLAS calls (the 1-DOF solvers: a test shows their output
@@ -79,11 +71,7 @@ class EnsembleSpec:
     @classmethod
     def from_mapping(cls, data: Mapping | None) -> EnsembleSpec:
         """From the ``ensemble`` config section (its keys and types checked by the typed config layer)."""
-        data = {k: v for k, v in (data or {}).items() if v is not None}
-        for key in ("seeds", "step_keys", "window_keys"):
-            if key in data:
-                data[key] = tuple(data[key])
-        return cls(**data)
+        return cls(**{k: v for k, v in (data or {}).items() if v is not None})
 
 
 def _is_number(value) -> bool:
@@ -271,11 +259,3 @@ def ensemble_dataset(
         f"BLAS limited to {spec.blas_threads} thread(s)"
     )
     return ds
-
-
-def member_values(ds: xr.Dataset, name: str) -> np.ndarray | None:
-    """Values of metric ``name`` per member (leading axis), or None when the dataset has no ensemble."""
-    key = name + SUFFIX
-    if key not in ds:
-        return None
-    return np.asarray(ds[key].values, dtype=float)

@@ -186,5 +186,5 @@ def test_affine_law_as_one_sign_equation_is_the_pipelines_equation(t, x, v):
     from stickslip.validation.methods import SignLawModel
 
     model = BeltModel.build(PAPER_BASELINE.with_(sigma=0.5, belt_deceleration=0.02), "consistent")
-    single = SignLawModel(LawModel.from_belt_model(model))
+    single = SignLawModel.from_belt_model(model)
     assert np.allclose(single.rhs(t, [x, v]), model.rhs(t, [x, v]), rtol=1e-13, atol=1e-13)

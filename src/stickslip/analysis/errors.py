@@ -72,18 +72,21 @@ def sampled_extrema(t, x, v):
             te, xe = _hermite_extremum(t[i], t[i + 1], x[i], x[i + 1], v[i], v[i + 1])
             out[kind][0].append(te)
             out[kind][1].append(xe)
-    return (
-        np.array(out["max"][0]),
-        np.array(out["max"][1]),
-        np.array(out["min"][0]),
-        np.array(out["min"][1]),
-    )
+    return tuple(np.array(a) for a in (*out["max"], *out["min"]))
 
 
 def cycle_metrics(t, x, v, cycles: int = 3) -> dict:
     """Period (spacing of successive maxima of x) and peak-to-peak amplitude over the last ``cycles``."""
-    tmax, xmax, tmin, xmin = sampled_extrema(t, x, v)
-    if len(tmax) < 2 or len(tmin) < 1 or not np.all(np.isfinite(x)):
+    tmax, xmax, _, xmin = sampled_extrema(t, x, v)
+    if not np.all(np.isfinite(x)):
+        return {"period": math.nan, "amplitude": math.nan}
+    return _last_cycles(tmax, xmax, xmin, cycles)
+
+
+def _last_cycles(tmax, xmax, xmin, cycles: int) -> dict:
+    """Period (mean spacing of the maxima) and peak-to-peak amplitude over the last ``cycles``; NaN with
+    fewer than two maxima or no minimum."""
+    if len(tmax) < 2 or len(xmin) < 1:
         return {"period": math.nan, "amplitude": math.nan}
     n = min(cycles, len(tmax) - 1)
     period = float(np.mean(np.diff(tmax[-(n + 1) :])))
@@ -121,12 +124,7 @@ def segment_cycle_metrics(segments, cycles: int = 3) -> dict:
                 going_down = (vg[i] > 0) if vg[i] != 0 else (vg[i + 1] < 0)
                 (tmax if going_down else tmin).append(tz)
                 (xmax if going_down else xmin).append(xz)
-    if len(tmax) < 2 or not xmin:
-        return {"period": math.nan, "amplitude": math.nan}
-    n = min(cycles, len(tmax) - 1)
-    period = float(np.mean(np.diff(tmax[-(n + 1) :])))
-    amplitude = float(np.mean(xmax[-n:]) - np.mean(xmin[-n:]))
-    return {"period": period, "amplitude": amplitude}
+    return _last_cycles(tmax, xmax, xmin, cycles)
 
 
 def relative_error(value: float, reference: float) -> float:
@@ -140,8 +138,7 @@ def compare(traj, ref, ref_cycle: dict | None = None) -> dict:
     out = state_error(traj, ref)
     ref_cycle = ref_cycle if ref_cycle is not None else cycle_metrics(ref.t, ref.x, ref.v)
     cyc = cycle_metrics(traj.t, traj.x, traj.v)
-    out["period"] = cyc["period"]
-    out["amplitude"] = cyc["amplitude"]
+    out.update(cyc)
     out["period_error"] = relative_error(cyc["period"], ref_cycle["period"])
     out["amplitude_error"] = relative_error(cyc["amplitude"], ref_cycle["amplitude"])
     return out

@@ -95,8 +95,7 @@ def classify(
         rel = x - xb
         changes = []
         for a, b in intervals:
-            pad = 0.1 * (b - a)
-            m = (t >= a + pad) & (t <= b - pad)
+            m = _inner(t, a, b)
             if m.sum() < 3:
                 continue
             s = np.sign(vr[m][np.abs(vr[m]) > 1e-12 * max(params.belt_velocity, 1e-12)])
@@ -106,9 +105,7 @@ def classify(
             out["chatter"] = bool(out["sign_changes_in_stick"] > chatter_count)
         # creep on the first reference stick: every method starts from the same state, so no phase
         # error has built up yet and any drift of x - X_b is the method's own stick error
-        a, b = intervals[0]
-        pad = 0.1 * (b - a)
-        m = (t >= a + pad) & (t <= b - pad)
+        m = _inner(t, *intervals[0])
         if m.sum() >= 2:
             drift = rel[m][-1] - rel[m][0]
             out["creep_mm"] = float(abs(drift))
@@ -118,7 +115,10 @@ def classify(
 
 
 def _kind(flags: dict) -> str:
-    for kind in FAILURE_KINDS[1:]:
-        if flags.get(kind):
-            return kind
-    return "none"
+    return next((kind for kind in FAILURE_KINDS[1:] if flags.get(kind)), "none")
+
+
+def _inner(t, a: float, b: float):
+    """The samples in the inner 80 % of [a, b]."""
+    pad = 0.1 * (b - a)
+    return (t >= a + pad) & (t <= b - pad)

@@ -80,6 +80,11 @@ def metric_attrs(name: str, **context) -> dict:
     return {"units": info.units, "long_name": info.long_name.format(**context)}
 
 
+def cf_variable(dims, values, units: str, long_name: str, **attrs) -> tuple:
+    """A dataset variable as xarray takes it, ``(dims, values, attrs)``, its units and long name first."""
+    return dims, values, {"units": units, "long_name": long_name, **attrs}
+
+
 #: The limit-cycle table's names (``limit_cycle_metrics``), in order; the rest of METRICS is extra_metrics'.
 CYCLE_METRICS = tuple(METRICS)[: tuple(METRICS).index("periodic") + 1]
 

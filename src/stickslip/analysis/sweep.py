@@ -18,7 +18,7 @@ import numpy as np
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import BeltParams, ParameterError
-from .metrics import PAPER_COUNT_WINDOW, limit_cycle_metrics
+from .metrics import PAPER_COUNT_WINDOW, cf_variable, limit_cycle_metrics
 
 if TYPE_CHECKING:  # the workflow builds sweep specs at parse time: xarray only where a dataset is made
     import xarray as xr
@@ -62,13 +62,9 @@ def chunk_points(axes: list[SweepAxis], chunk_size: int, chunk: int) -> list[dic
     if not 0 <= start < n:
         raise ParameterError(f"chunk: {chunk} out of range (0..{chunk_count(axes, chunk_size) - 1})")
     combos = itertools.islice(itertools.product(*(a.values for a in axes)), start, stop)
-    points = []
-    for combo in combos:
-        point = {}
-        for axis, value in zip(axes, combo):
-            point.update(axis.point(value))
-        points.append(point)
-    return points
+    return [
+        {k: v for axis, value in zip(axes, combo) for k, v in axis.point(value).items()} for combo in combos
+    ]
 
 
 def run_points(
@@ -95,16 +91,14 @@ def run_points(
         traj = solver.solve(model, t_end, t_eval)
         if on_trajectory is not None:
             on_trajectory(i, traj)
-        metrics = limit_cycle_metrics(traj, transient, count_window)
-        rows.append(({k: m.value for k, m in metrics.items()}, metrics))
+        rows.append(limit_cycle_metrics(traj, transient, count_window))
         if progress is not None:
             progress(i + 1, len(points))
-    names, meta = {}, {}
-    for _values, metrics in rows:
+    meta = {}  # each metric's first record (units, long name), in the order the runs name them
+    for metrics in rows:
         for k, m in metrics.items():
-            names.setdefault(k, None)
             meta.setdefault(k, m)
-    out = {k: np.array([values.get(k, np.nan) for values, _ in rows], dtype=float) for k in names}
+    out = {k: np.array([row[k].value if k in row else np.nan for row in rows], dtype=float) for k in meta}
     out["_meta"] = meta
     return out
 
@@ -120,7 +114,7 @@ def chunk_dataset(axes: list[SweepAxis], chunk_size: int, chunk: int, results: d
     ds = xr.Dataset(coords={"point": ("point", index, {"long_name": "flattened grid index", "units": "1"})})
     ds = ds.assign(
         {
-            name: ("point", results[name], {"units": metric.units, "long_name": metric.long_name})
+            name: cf_variable("point", results[name], metric.units, metric.long_name)
             for name, metric in results["_meta"].items()
         }
     )
@@ -140,10 +134,8 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
     dims = [a.name for a in axes]
     out = xr.Dataset(
         coords={
-            a.name: (
-                a.name,
-                np.asarray(a.values, dtype=float),
-                {"units": a.units or "1", "long_name": a.long_name or a.name},
+            a.name: cf_variable(
+                a.name, np.asarray(a.values, dtype=float), a.units or "1", a.long_name or a.name
             )
             for a in axes
         }
@@ -152,10 +144,9 @@ def merge_chunks(axes: list[SweepAxis], chunks: list[xr.Dataset]) -> xr.Dataset:
         out[name] = (dims, var.values.reshape(shape), dict(var.attrs))
     for axis in axes:
         for other, factor in axis.linked.items():
-            out[other] = (
-                axis.name,
-                float(factor) * np.asarray(axis.values, dtype=float),
-                {"units": "1", "long_name": f"{other} linked to {axis.name} (factor {factor:g})"},
+            values = float(factor) * np.asarray(axis.values, dtype=float)
+            out[other] = cf_variable(
+                axis.name, values, "1", f"{other} linked to {axis.name} (factor {factor:g})"
             )
     return out
 

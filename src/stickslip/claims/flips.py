@@ -5,6 +5,7 @@ check (rule ``claims_check``), on the full configuration's own results."""
 
 from __future__ import annotations
 
+import functools
 import warnings
 from collections.abc import Callable
 
@@ -12,8 +13,7 @@ import numpy as np
 
 from .evaluate import evaluate_all
 from .rows import Claim
-
-DECIDED = ("reproduced", "deviates")
+from .verdicts import DECIDED
 
 
 def moved_opener(read: Callable, reduce: Callable) -> Callable:
@@ -39,13 +39,7 @@ def moved_opener(read: Callable, reduce: Callable) -> Callable:
 def flipped_decisions(claims: list[Claim], readings: list[str], read: Callable) -> list[str]:
     """Claims (with reading) whose decision flips at the ensemble minimum or maximum; ``read(path)`` opens a
     dataset (cached by the caller or not: each path is read once per pass)."""
-    cache: dict = {}
-
-    def cached(path):
-        if path not in cache:
-            cache[path] = read(path)
-        return cache[path]
-
+    cached = functools.cache(read)
     base = {
         (r.claim, r.reading): r.status for r in evaluate_all(claims, readings, moved_opener(cached, _first))
     }

@@ -12,20 +12,13 @@ class ClaimsError(ValueError):
     """A claims file is malformed; the message names the file, the claim and the key."""
 
 
-def _row_errors(exc) -> str:
-    from stickslip.io.typed_errors import (
-        typed_errors,
-    )  # the config's format of a pydantic error: ``key: message``
-
-    return typed_errors(exc).replace("\n", "; ")
-
-
 def load_claims(paths) -> list[Claim]:
     """Every row of the claims files, each checked against ``ClaimRow`` (stickslip.claims.rows); an error
     names the file, the row's id and the key. Rows come back typed (``Claim``: the checked row and the file
     it came from)."""
     from pydantic import ValidationError
 
+    from stickslip.io.typed_errors import typed_errors
     from stickslip.io.yaml_files import YamlFileError, load_yaml
 
     claims, seen = [], {}
@@ -43,7 +36,8 @@ def load_claims(paths) -> list[Claim]:
             try:
                 checked = ClaimRow.model_validate(row)
             except ValidationError as exc:
-                raise ClaimsError(f"{where}: {_row_errors(exc)}") from None
+                errors = typed_errors(exc).replace("\n", "; ")  # the config's format: ``key: message``
+                raise ClaimsError(f"{where}: {errors}") from None
             if checked.id in seen:
                 raise ClaimsError(f"{where}: id {checked.id!r} already used in {seen[checked.id]}")
             seen[checked.id] = path
@@ -107,8 +101,8 @@ def claimed_paths(claims: list[Claim], readings):
                 yield c, key, ref, ref.dataset.format(reading=r)
 
 
-#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them.
-DISC_SPEEDS = ("15p2rpm", "0p5mm_s")
+#: The two disc speeds of the beam-on-disc scenes, as their dataset names spell them, and in words.
+DISC_SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
 
 
 def disc_speed(claim: Claim) -> str:

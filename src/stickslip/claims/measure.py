@@ -40,13 +40,11 @@ def relative_change(slope: float, x: np.ndarray, y: np.ndarray) -> float:
 def withheld_values(ds, variable: str) -> tuple[float, float] | None:
     """(value at dt, value at dt/2) of a metric the step-halving check withheld (NaN in the dataset, both
     steps' values kept beside it: stickslip.fe.step_halving); None when nothing was withheld."""
-    if variable not in ds or f"{variable}_full_step" not in ds or f"{variable}_half_step" not in ds:
+    names = (variable, f"{variable}_full_step", f"{variable}_half_step")
+    if any(name not in ds for name in names):
         return None
-    if np.isfinite(np.asarray(ds[variable].values, dtype=float).reshape(-1)[0]):
-        return None
-    full = float(np.asarray(ds[f"{variable}_full_step"].values, dtype=float).reshape(-1)[0])
-    half = float(np.asarray(ds[f"{variable}_half_step"].values, dtype=float).reshape(-1)[0])
-    return full, half
+    value, full, half = (float(np.asarray(ds[name].values, dtype=float).reshape(-1)[0]) for name in names)
+    return None if np.isfinite(value) else (full, half)
 
 
 def _member_values(

@@ -18,11 +18,11 @@ and dt/2 from those rows (``Claim.model_values``).
 from __future__ import annotations
 
 import csv
-import math
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from ..catalogue import fe_model_of, last_name
+from ..io.benchmarks import as_number as _num
 from .rows import Claim, ClaimRow
 
 #: claim variables that measure one of the comparison's quantities (the same motion of node 1, read
@@ -58,13 +58,6 @@ def beam_operands(claim: ClaimRow) -> list[tuple[str, str]]:
 
 def _agrees(row: Mapping) -> bool:
     return str(row["agreement"]).strip().lower() in ("true", "1")
-
-
-def _num(text) -> float:
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
 
 
 def _window_row(comparison: Mapping[tuple[str, str], Mapping], scene: str, variable: str) -> Mapping | None:

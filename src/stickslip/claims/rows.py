@@ -21,6 +21,7 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from ..catalogue import fe_model_of
+from ..schema.base import Finite, NonNegative
 
 STATUSES = ("reproduced", "deviates", "indistinguishable", "not-comparable")
 
@@ -54,8 +55,6 @@ Model = Literal["beam", "continuum", "reduced", "closed_form", "peer"]
 #: The paper's numbered figures (Figure 1 to Figure 36); a claim's ``figures`` name some of them.
 PAPER_FIGURES = range(1, 37)
 
-NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
-Finite = Annotated[float, Field(allow_inf_nan=False)]
 Text = Annotated[str, Field(min_length=1)]
 #: A per-reading value: one for every reading, or ``{default: ..., <reading>: ...}``.
 PerReading = Text | dict[str, Text]

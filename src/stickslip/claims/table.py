@@ -8,6 +8,7 @@ import sys
 from dataclasses import asdict
 from pathlib import Path
 
+from ..io.text_files import write_csv_atomic, write_text_atomic
 from .evaluate import ClaimResult
 from .rows import STATUSES
 
@@ -21,17 +22,8 @@ def _cell(value) -> str:
 
 def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
     """CSV (machine) and Markdown (human) deviations tables, each written atomically."""
-    csv_path = Path(csv_path)
-    csv_path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = csv_path.with_suffix(".csv.tmp")
-    with tmp.open("w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=FIELDS)
-        writer.writeheader()
-        for r in results:
-            writer.writerow(asdict(r))
-    tmp.replace(csv_path)
+    write_csv_atomic(csv_path, [asdict(r) for r in results], fields=FIELDS, lineterminator="\r\n")
     if md_path:
-        md_path = Path(md_path)
         lines = [
             "| claim | reading | figure | quantity | reported | measured | unit | margin | spread | status "
             "| expected | reason |",
@@ -44,9 +36,7 @@ def write_table(results: list[ClaimResult], csv_path, md_path=None) -> None:
                 f"{r.measured:.4g} | {r.unit} | {r.margin:.3g} | {r.spread:.3g} | {r.status}{flag} | "
                 f"{r.expected} | {r.reason} |"
             )
-        tmp = md_path.with_suffix(".md.tmp")
-        tmp.write_text("\n".join(lines) + "\n")
-        tmp.replace(md_path)
+        write_text_atomic(md_path, "\n".join(lines) + "\n")
 
 
 def read_table(csv_path) -> list[dict]:

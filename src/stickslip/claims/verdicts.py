@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .load import disc_speed
+from .load import DISC_SPEEDS, disc_speed
 from .rows import STATUSES, Claim
 
 #: Figure verdicts, best first.
@@ -39,8 +39,8 @@ VERDICT_RULE = {
     "not comparable": "no claim decided (n = 0: none, or all undecided or not comparable)",
 }
 
-#: The disc speeds of the beam-on-disc scenes, as their dataset names spell them.
-SPEEDS = {"15p2rpm": "15.2 rev/min (stated)", "0p5mm_s": "0.5 mm/s (implied)"}
+#: The disc speeds of the beam-on-disc scenes, as their dataset names spell them, in words.
+SPEEDS = DISC_SPEEDS
 
 #: The column of :func:`figure_row` that holds a beam-on-disc figure's ``k of n`` at each disc speed.
 SPEED_COLUMNS = {"15p2rpm": "stated_speed", "0p5mm_s": "implied_speed"}

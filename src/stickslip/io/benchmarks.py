@@ -6,13 +6,16 @@ import csv
 import math
 from pathlib import Path
 
+from .text_files import write_csv_atomic, write_text_atomic
+
 
 def _read_benchmark(path: Path) -> list[dict]:
     with path.open(newline="") as fh:
         return list(csv.DictReader(fh, delimiter="\t"))
 
 
-def _num(value) -> float:
+def as_number(value) -> float:
+    """A table cell as a float; NaN when it is not a number."""
     try:
         return float(value)
     except (TypeError, ValueError):
@@ -28,9 +31,9 @@ def summarize_benchmarks(root: Path) -> list[dict]:
         per_rule.setdefault(rule, []).extend(_read_benchmark(path))
     rows = []
     for rule, records in sorted(per_rule.items()):
-        wall = [_num(r.get("s")) for r in records]
-        rss = [_num(r.get("max_rss")) for r in records]
-        cpu = [_num(r.get("cpu_time")) for r in records]
+        wall = [as_number(r.get("s")) for r in records]
+        rss = [as_number(r.get("max_rss")) for r in records]
+        cpu = [as_number(r.get("cpu_time")) for r in records]
         rows.append(
             {
                 "rule": rule,
@@ -46,19 +49,14 @@ def summarize_benchmarks(root: Path) -> list[dict]:
 
 def write_summary(rows: list[dict], csv_path, md_path) -> None:
     fields = ["rule", "jobs", "wall_s_total", "wall_s_max", "cpu_s_total", "peak_rss_mb"]
-    csv_path, md_path = Path(csv_path), Path(md_path)
-    csv_path.parent.mkdir(parents=True, exist_ok=True)
-    with csv_path.open("w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=fields)
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv_atomic(csv_path, rows, fields=fields, lineterminator="\r\n")
     total = sum(r["wall_s_total"] for r in rows)
     lines = ["| " + " | ".join(fields) + " |", "|" + "---|" * len(fields)]
     lines += ["| " + " | ".join(str(r[f]) for f in fields) + " |" for r in rows]
     lines.append(
         f"\nSum of job wall times: {total:.1f} s (jobs run in parallel, so the elapsed time is less)."
     )
-    md_path.write_text("\n".join(lines) + "\n")
+    write_text_atomic(md_path, "\n".join(lines) + "\n")
 
 
 # -- per-rule CPU budgets (docs/TIMING.md) ----------------------------------------------------------------
@@ -80,7 +78,7 @@ def read_budgets(text: str) -> dict[str, dict]:
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if len(cells) != 4:
             raise ValueError(f"budget table row {line!r}: expected 4 cells")
-        out[cells[0]] = {"budget": _num(cells[1]), "last": _num(cells[2]), "commit": cells[3]}
+        out[cells[0]] = {"budget": as_number(cells[1]), "last": as_number(cells[2]), "commit": cells[3]}
     return out
 
 

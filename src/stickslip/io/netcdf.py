@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 
 from .._version import __version__
-from ..analysis.metrics import Metric
+from ..analysis.metrics import Metric, cf_variable
 from ..solvers.base import Trajectory
 from .text_files import publish  # noqa: F401 (re-exported: the writers of other modules take it from here)
 
@@ -66,17 +66,11 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     )
     ds = xr.Dataset(
         {
-            "displacement": ("time", traj.x, {"units": "mm", "long_name": "mass displacement x"}),
-            "velocity": ("time", traj.v, {"units": "mm s-1", "long_name": "mass velocity dx/dt"}),
-            "belt_velocity": (
-                "time",
-                traj.belt_velocity,
-                {"units": "mm s-1", "long_name": "belt velocity V_b"},
-            ),
-            "relative_velocity": (
-                "time",
-                traj.relative_velocity,
-                {"units": "mm s-1", "long_name": "relative velocity v_r = dx/dt - V_b"},
+            "displacement": cf_variable("time", traj.x, "mm", "mass displacement x"),
+            "velocity": cf_variable("time", traj.v, "mm s-1", "mass velocity dx/dt"),
+            "belt_velocity": cf_variable("time", traj.belt_velocity, "mm s-1", "belt velocity V_b"),
+            "relative_velocity": cf_variable(
+                "time", traj.relative_velocity, "mm s-1", "relative velocity v_r = dx/dt - V_b"
             ),
             "phase": (
                 "time",
@@ -93,17 +87,15 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     )
     if traj.segments is not None:
         seg = np.asarray(traj.segments, dtype=float).reshape(-1, 3)
-        ds["segment_start"] = ("segment", seg[:, 0], {"units": "s", "long_name": "segment start time"})
-        ds["segment_end"] = ("segment", seg[:, 1], {"units": "s", "long_name": "segment end time"})
-        ds["segment_phase"] = (
+        ds["segment_start"] = cf_variable("segment", seg[:, 0], "s", "segment start time")
+        ds["segment_end"] = cf_variable("segment", seg[:, 1], "s", "segment end time")
+        ds["segment_phase"] = cf_variable(
             "segment",
             seg[:, 2].astype(np.int8),
-            {
-                "units": "1",
-                "long_name": "segment contact phase",
-                "flag_values": np.array([-1, 0, 1], dtype=np.int8),
-                "flag_meanings": "slip_backward stick slip_forward",
-            },
+            "1",
+            "segment contact phase",
+            flag_values=np.array([-1, 0, 1], dtype=np.int8),
+            flag_meanings="slip_backward stick slip_forward",
         )
     stats = traj.stats
     code, message = SOLVER_STATUS.index(stats.status), stats.message or "none"
@@ -127,10 +119,9 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
         ("events", "1", "switching events handled"),
         ("cpu_time", "s", "process CPU time of the solve"),
     ):
-        attrs = {"units": units, "long_name": long_name}
-        scalars[f"solver_{name}"] = ((), float(getattr(stats, name)), attrs)
+        scalars[f"solver_{name}"] = cf_variable((), float(getattr(stats, name)), units, long_name)
     for name, metric in (metrics or {}).items():
-        scalars[name] = ((), float(metric.value), {"units": metric.units, "long_name": metric.long_name})
+        scalars[name] = cf_variable((), float(metric.value), metric.units, metric.long_name)
     return ds.assign(scalars)
 
 
@@ -187,12 +178,9 @@ def _merged_attrs(existing: dict, provenance: dict) -> dict:
 
     ``history`` is the exception CF describes: an audit trail, so the writer's line is appended.
     """
-    out = dict(provenance)
-    for key, value in existing.items():
-        if key == "history" and value:
-            out[key] = f"{value}\n{provenance['history']}"
-        else:
-            out[key] = value
+    out = {**provenance, **existing}
+    if existing.get("history"):
+        out["history"] = f"{existing['history']}\n{provenance['history']}"
     return out
 
 

@@ -36,12 +36,15 @@ def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
     return path
 
 
-def write_csv_atomic(path: str | os.PathLike, rows: list[dict]) -> Path:
-    """Rows (dicts with the same keys) as CSV with a header line."""
-    if not rows:
+def write_csv_atomic(
+    path: str | os.PathLike, rows: list[dict], *, fields: list[str] | None = None, lineterminator: str = "\n"
+) -> Path:
+    """Rows (dicts with the same keys) as CSV with a header line of ``fields`` (default: the first row's
+    keys; with ``fields`` a table may have no rows)."""
+    if not rows and fields is None:
         raise ValueError(f"{path}: no rows to write")
     buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=list(rows[0]), lineterminator="\n")
+    w = csv.DictWriter(buf, fieldnames=fields or list(rows[0]), lineterminator=lineterminator)
     w.writeheader()
     w.writerows(rows)
     return write_text_atomic(path, buf.getvalue())

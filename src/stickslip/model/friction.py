@@ -83,10 +83,6 @@ class AffineFriction:
             return self.a * s + self.b * vr + (self.b + self.kappa) * vb
         return self.a * s + self.b * v + self.kappa * vb
 
-    def coefficient(self, v, vb, normal_force: float):
-        """Signed friction coefficient F/N along a trajectory (Fig. 17)."""
-        return self.force(v, vb) / normal_force
-
 
 def _sign(d: float) -> float:
     """np.sign of one float: -1, 0 (also for -0.0) or 1; NaN stays NaN."""
@@ -105,8 +101,3 @@ def friction_law(params: BeltParams, variant: str) -> AffineFriction:
     if variant == "consistent":
         return AffineFriction(variant, a=-mu_n, b=mu_n * s, kappa=-mu_n * s, plateau_speed=vp)
     raise ParameterError(f"variant: {variant!r} is not one of {VARIANTS}")
-
-
-def friction_coefficient_consistent(relative_speed, mu_s: float, sigma: float, plateau_speed: float = np.inf):
-    """|mu|(|v_r|) of the consistent reading: mu_s (1 - sigma min(|v_r|, v_p)); v_p = inf: unbounded fall."""
-    return mu_s * (1.0 - sigma * np.minimum(np.abs(relative_speed), plateau_speed))

@@ -37,33 +37,30 @@ from typing import ClassVar
 
 import numpy as np
 
-from .params import BeltParams, ParameterError
+from .params import BeltParams, ParameterError, checked_number
 
 #: Config ``kind`` -> class (filled in below).
 LAW_KINDS: dict[str, type] = {}
-
-
-def _number(key: str, value, *, positive: bool = False, nonnegative: bool = False, allow_inf=False) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise ParameterError(f"{key}: expected a number, got {type(value).__name__} {value!r}")
-    value = float(value)
-    if math.isnan(value) or (math.isinf(value) and not (allow_inf and value > 0)):
-        raise ParameterError(f"{key}: must be finite, got {value!r}")
-    if positive and not value > 0:
-        raise ParameterError(f"{key}: must be > 0, got {value!r}")
-    if nonnegative and not value >= 0:
-        raise ParameterError(f"{key}: must be >= 0, got {value!r}")
-    return value
 
 
 class FrictionLaw:
     """Common interface: ``mu(v_r)`` in slip, ``static`` at rest, ``force(v_r, N)``, ``breakpoints``."""
 
     kind: ClassVar[str] = ""
+    #: Each number field's bound, "positive" or "nonnegative": checked (naming the field) and made a float.
+    BOUNDS: ClassVar[dict[str, str]] = {}
+
+    def __post_init__(self):
+        for name, bound in self.BOUNDS.items():
+            value = checked_number(name, getattr(self, name), bound, allow_inf=name == "plateau_speed")
+            object.__setattr__(self, name, value)
+        if getattr(self, "mu_k", 0.0) > self.mu_s:
+            raise ParameterError(f"mu_k: must be <= mu_s = {self.mu_s!r}, got {self.mu_k!r}")
 
     @property
-    def static(self) -> float:  # pragma: no cover - every law defines it
-        raise NotImplementedError
+    def static(self) -> float:
+        """The static limit mu_static (mu_s unless a law says otherwise)."""
+        return self.mu_s
 
     def mu_continued(self, speed):
         """Slip coefficient at a signed speed (the law's own formula, continued a little below 0)."""
@@ -118,17 +115,11 @@ class AffineLaw(FrictionLaw):
     sigma: float
     plateau_speed: float = math.inf
     kind: ClassVar[str] = "affine"
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu_s", _number("mu_s", self.mu_s, positive=True))
-        object.__setattr__(self, "sigma", _number("sigma", self.sigma, nonnegative=True))
-        object.__setattr__(
-            self, "plateau_speed", _number("plateau_speed", self.plateau_speed, positive=True, allow_inf=True)
-        )
-
-    @property
-    def static(self) -> float:
-        return self.mu_s
+    BOUNDS: ClassVar[dict[str, str]] = {
+        "mu_s": "positive",
+        "sigma": "nonnegative",
+        "plateau_speed": "positive",
+    }
 
     def mu_continued(self, speed):
         return self.mu_s * (1.0 - self.sigma * np.minimum(speed, self.plateau_speed))
@@ -146,16 +137,7 @@ class CoulombLaw(FrictionLaw):
     mu_s: float
     mu_k: float
     kind: ClassVar[str] = "coulomb"
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu_s", _number("mu_s", self.mu_s, positive=True))
-        object.__setattr__(self, "mu_k", _number("mu_k", self.mu_k, positive=True))
-        if self.mu_k > self.mu_s:
-            raise ParameterError(f"mu_k: must be <= mu_s = {self.mu_s!r}, got {self.mu_k!r}")
-
-    @property
-    def static(self) -> float:
-        return self.mu_s
+    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "mu_k": "positive"}
 
     def mu_continued(self, speed):
         return self.mu_k + 0.0 * np.asarray(speed, dtype=float)
@@ -170,17 +152,7 @@ class StribeckLaw(FrictionLaw):
     mu_k: float
     v_s: float
     kind: ClassVar[str] = "stribeck"
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu_s", _number("mu_s", self.mu_s, positive=True))
-        object.__setattr__(self, "mu_k", _number("mu_k", self.mu_k, nonnegative=True))
-        object.__setattr__(self, "v_s", _number("v_s", self.v_s, positive=True))
-        if self.mu_k > self.mu_s:
-            raise ParameterError(f"mu_k: must be <= mu_s = {self.mu_s!r}, got {self.mu_k!r}")
-
-    @property
-    def static(self) -> float:
-        return self.mu_s
+    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "mu_k": "nonnegative", "v_s": "positive"}
 
     def mu_continued(self, speed):
         # the continuation below 0 is only ever needed near 0: bounded far out so a diverging trial step
@@ -198,17 +170,7 @@ class RationalLaw(FrictionLaw):
     delta: float
     mu_k: float = 0.0
     kind: ClassVar[str] = "rational"
-
-    def __post_init__(self):
-        object.__setattr__(self, "mu_s", _number("mu_s", self.mu_s, positive=True))
-        object.__setattr__(self, "delta", _number("delta", self.delta, nonnegative=True))
-        object.__setattr__(self, "mu_k", _number("mu_k", self.mu_k, nonnegative=True))
-        if self.mu_k > self.mu_s:
-            raise ParameterError(f"mu_k: must be <= mu_s = {self.mu_s!r}, got {self.mu_k!r}")
-
-    @property
-    def static(self) -> float:
-        return self.mu_s
+    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "delta": "nonnegative", "mu_k": "nonnegative"}
 
     def mu_continued(self, speed):
         return self.mu_k + (self.mu_s - self.mu_k) / (1.0 + self.delta * np.asarray(speed, dtype=float))
@@ -254,7 +216,7 @@ class TabulatedLaw(FrictionLaw):
         object.__setattr__(self, "_nodes", speed.tolist())
         object.__setattr__(self, "_coeffs", [tuple(float(c) for c in col) for col in interp.c.T])
         if self.static_mu is not None:
-            object.__setattr__(self, "static_mu", _number("static_mu", self.static_mu, positive=True))
+            object.__setattr__(self, "static_mu", checked_number("static_mu", self.static_mu, "positive"))
         self._check_jump()
 
     @property
@@ -305,13 +267,9 @@ class TabulatedLaw(FrictionLaw):
         return cls(speed, values, static_mu=static_mu, source=str(path))
 
 
-_LAW_KEYS = {
-    "affine": {"mu_s", "sigma", "plateau_speed"},
-    "coulomb": {"mu_s", "mu_k"},
-    "stribeck": {"mu_s", "mu_k", "v_s"},
-    "rational": {"mu_s", "delta", "mu_k"},
-    "tabulated": {"path", "static_mu"},
-}
+#: Config keys of each kind: its fields (a table is read from ``path``).
+_LAW_KEYS = {kind: {f.name for f in fields(cls)} for kind, cls in LAW_KINDS.items()}
+_LAW_KEYS["tabulated"] = {"path", "static_mu"}
 
 
 def law_from_config(entry: dict, *, key: str = "law") -> FrictionLaw:

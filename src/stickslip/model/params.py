@@ -8,6 +8,7 @@ readings this project supports.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import MISSING, asdict, dataclass, fields, replace
 
 #: How the paper's numbers are read. ``as_given``: every number is used as printed in one equation,
@@ -19,6 +20,25 @@ UNIT_READINGS = ("as_given", "si")
 
 class ParameterError(ValueError):
     """A parameter is missing, non-finite or non-physical. The message names the key."""
+
+
+def checked_number(key: str, value, bound: str | None = None, *, allow_inf: bool = False) -> float:
+    """``value`` as a float if it is a finite number within ``bound`` ("positive", "nonnegative" or None;
+    ``allow_inf``: +inf too), else ParameterError naming ``key``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ParameterError(f"{key}: expected a number, got {type(value).__name__} {value!r}")
+    if math.isnan(value) or (math.isinf(value) and not (allow_inf and value > 0)):
+        raise ParameterError(f"{key}: must be finite, got {value!r}")
+    if bound == "positive" and not value > 0:
+        raise ParameterError(f"{key}: must be > 0, got {value!r}")
+    if bound == "nonnegative" and not value >= 0:
+        raise ParameterError(f"{key}: must be >= 0, got {value!r}")
+    return float(value)
+
+
+#: The parameters that must be > 0 and >= 0 (the rest, but ``units``, any finite number).
+_POSITIVE = ("mass", "stiffness", "normal_force", "mu_s", "plateau_speed")
+_NONNEGATIVE = ("damping", "sigma", "belt_velocity", "belt_deceleration")
 
 
 @dataclass(frozen=True)
@@ -52,24 +72,11 @@ class BeltParams:
     off at 0.6 mm/s); inf = the printed law, falling linearly without bound."""
 
     def __post_init__(self) -> None:
-        for f in fields(self):
-            value = getattr(self, f.name)
-            if f.name == "units":
-                if value not in UNIT_READINGS:
-                    raise ParameterError(f"units: {value!r} is not one of {UNIT_READINGS}")
-                continue
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                raise ParameterError(f"{f.name}: expected a number, got {type(value).__name__} {value!r}")
-            if f.name == "plateau_speed" and value == math.inf:
-                continue
-            if not math.isfinite(value):
-                raise ParameterError(f"{f.name}: must be finite, got {value!r}")
-        for key in ("mass", "stiffness", "normal_force", "mu_s", "plateau_speed"):
-            if getattr(self, key) <= 0:
-                raise ParameterError(f"{key}: must be > 0, got {getattr(self, key)!r}")
-        for key in ("damping", "sigma", "belt_velocity", "belt_deceleration"):
-            if getattr(self, key) < 0:
-                raise ParameterError(f"{key}: must be >= 0, got {getattr(self, key)!r}")
+        if self.units not in UNIT_READINGS:
+            raise ParameterError(f"units: {self.units!r} is not one of {UNIT_READINGS}")
+        for f in (f for f in fields(self) if f.name != "units"):
+            bound = "positive" if f.name in _POSITIVE else "nonnegative" if f.name in _NONNEGATIVE else None
+            checked_number(f.name, getattr(self, f.name), bound, allow_inf=f.name == "plateau_speed")
 
     @classmethod
     def from_mapping(cls, values: dict) -> BeltParams:

@@ -20,7 +20,7 @@ from ..model.params import ParameterError
 
 if TYPE_CHECKING:  # annotations only: the claims package and pydantic are imported when checked
     from ..claims.rows import Claim
-    from ..schema import Inverse, MethodsStudy, PipelineConfig, Validation
+    from ..schema import Inverse, MethodsStudy, PipelineConfig
     from ..schema.fe import Fe
 
 __all__ = ["ConfigError", "typed_errors", "load_config", "merge", "drop_removed", "validate_config"]
@@ -109,34 +109,18 @@ def _validate(config: dict, producible: list[str], claims: Sequence[Claim] | Non
     except ValidationError as exc:
         raise ConfigError(typed_errors(exc)) from None
     try:
-        _check_ensemble(config)
         _check_onedof(typed)
         check_methods_config(typed.methods_study)
-        _check_dense_maps(typed)
         from ..studies.fe_config import effective_fe
 
         check_fe_config(effective_fe(typed), list(producible), allow_expensive=typed.allow_expensive)
-        _check_validation(typed.validation, list(producible))
+        from ..validation.setup import check as check_validation
+
+        check_validation(typed.validation, list(producible))
         _check_inverse_claims(typed.inverse, claims)
     except ParameterError as exc:
         raise ConfigError(str(exc)) from None
     return typed
-
-
-def _check_ensemble(config: dict) -> None:
-    """The ensemble section builds the spec every claimed dataset's job builds (one schema, checked once)."""
-    from ..ensemble import EnsembleSpec
-
-    try:
-        EnsembleSpec.from_mapping(config.get("ensemble"))
-    except (ValueError, TypeError) as exc:
-        raise ConfigError(str(exc) if str(exc).startswith("ensemble") else f"ensemble: {exc}") from None
-
-
-def _check_validation(validation: Validation, producible: list[str]) -> None:
-    from ..validation.setup import check
-
-    check(validation, producible)
 
 
 def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None) -> None:
@@ -159,8 +143,9 @@ def _check_inverse_claims(inverse: Inverse, read: Sequence[Claim] | None = None)
 
 
 def _check_onedof(typed: PipelineConfig) -> None:
-    """Every figure's runs, every sweep and critical-speed run for every claims reading resolve."""
-    from ..studies.specs import baseline_spec, figure_runs, run_spec, sweep_spec
+    """Every figure's runs, every sweep and critical-speed run for every claims reading and every dense
+    map resolve."""
+    from ..studies.specs import baseline_spec, dense_map, figure_runs, run_spec, sweep_spec
 
     onedof = typed.onedof
     for figure in onedof.figures.values():
@@ -171,13 +156,8 @@ def _check_onedof(typed: PipelineConfig) -> None:
             sweep_spec(onedof, sweep, reading)
     for reading in onedof.critical_speed.readings if onedof.critical_speed else []:
         baseline_spec(onedof, reading)
-
-
-def _check_dense_maps(typed: PipelineConfig) -> None:
-    from ..studies.specs import dense_map
-
     for name in typed.dense_map.maps:
-        dense_map(typed.onedof, typed.dense_map, name)
+        dense_map(onedof, typed.dense_map, name)
 
 
 #: Beam element-increments (elements x explicit steps) a build may run without ``allow_expensive: true``.

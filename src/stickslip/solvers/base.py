@@ -31,15 +31,11 @@ class SolverStats:
 
     rhs_evaluations: int = 0
     steps: int = 0
-    rejected_steps: int = 0
     events: int = 0
     failures: int = 0
     cpu_time: float = 0.0
     status: str = "ok"
     message: str = ""
-    jacobian_evaluations: int = 0
-    min_step: float = float("nan")
-    """Smallest accepted step [s] (methods that report one)."""
 
 
 @dataclass
@@ -131,42 +127,22 @@ def check_settings(solver) -> None:
     config fails when the pipeline starts, not inside a job (a step or tolerance <= 0 or NaN, a count < 1,
     theta outside (0, 1], an unknown solve_ivp method). Raises ``ParameterError`` (a ``ValueError``): the
     callers that re-key config errors catch that type."""
-    problem = settings_problem(solver)
-    if problem:
-        from ..model.params import (
-            ParameterError,  # lazy: model pulls in scipy; readers of Trajectory need not
-        )
+    # lazy: model pulls in scipy; readers of Trajectory need not
+    from ..model.params import ParameterError, checked_number
 
-        raise ParameterError(problem)
-
-
-def settings_problem(solver) -> str:
-    """The first bad setting of ``solver`` as 'name: why, got value', or '' when all are good."""
     for name in POSITIVE_SETTINGS:
-        value = getattr(solver, name, None)
-        if value is not None and not _positive(value, allow_inf=name == "max_step"):
-            return f"{name}: must be a positive number, got {value!r}"
+        if getattr(solver, name, None) is not None:
+            checked_number(name, getattr(solver, name), "positive", allow_inf=name == "max_step")
     for name in COUNT_SETTINGS:
         value = getattr(solver, name, None)
-        if value is not None and not (_number(value, int) and value >= 1):
-            return f"{name}: must be a whole number >= 1, got {value!r}"
+        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or value < 1):
+            raise ParameterError(f"{name}: must be a whole number >= 1, got {value!r}")
     theta = getattr(solver, "theta", None)
-    if theta is not None and not (_number(theta, (int, float)) and 0 < theta <= 1):
-        return f"theta: must be in (0, 1], got {theta!r}"
+    if theta is not None and not 0 < checked_number("theta", theta) <= 1:
+        raise ParameterError(f"theta: must be in (0, 1], got {theta!r}")
     method = getattr(solver, "method", None)
     if method is not None and method not in IVP_METHODS:
-        return f"method: {method!r} is not one of {IVP_METHODS}"
-    return ""
-
-
-def _number(value, kinds) -> bool:
-    return isinstance(value, kinds) and not isinstance(value, bool)  # True is an int, not a tolerance
-
-
-def _positive(value, allow_inf: bool) -> bool:
-    if not _number(value, (int, float)) or not value > 0:  # NaN fails value > 0
-        return False
-    return allow_inf and value == float("inf") or bool(np.isfinite(value))
+        raise ParameterError(f"method: {method!r} is not one of {IVP_METHODS}")
 
 
 def reading_model(model, solver: str):

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..model.equations import BeltModel
 from . import exact
-from .base import Samples, SolverError, SolverStats, checked_t_end
+from .base import Samples, SolverError, SolverStats
 from .events import Segment, StickMotion
 from .exact import ExactSwitchSolver
 from .linear import LinearSegment
@@ -125,8 +125,7 @@ class CompiledExactSolver(ExactSwitchSolver):
 
     def segments(self, model, t_end: float, stats: SolverStats | None = None) -> list[Segment]:
         """The phases up to ``t_end`` as the reference's ``Segment`` objects (closed forms included)."""
-        stats = stats if stats is not None else SolverStats()
-        raw = self._integrate(self._integrated(model), checked_t_end(t_end, self.name), stats)
+        raw = super().segments(model, t_end, stats)  # the kernel's table, or the reference's segments
         return raw if isinstance(raw, list) else table_segments(raw)
 
 

@@ -52,9 +52,9 @@ class IvpSolver(OneDofSolver):
         # imported here: the config check at parse time builds every solver, and scipy.integrate is ~0.5 s
         from scipy.integrate import solve_ivp
 
-        counts = {"rhs": 0, "jac": 0}
+        counts = {"rhs": 0}
         jac = self._jac(model)
-        kwargs = {} if jac is None else {"jac": counted(jac, counts, "jac")}
+        kwargs = {} if jac is None else {"jac": jac}
         try:
             sol = solve_ivp(
                 counted(self._rhs(model), counts, "rhs"),
@@ -70,11 +70,10 @@ class IvpSolver(OneDofSolver):
         except (ValueError, ArithmeticError) as exc:  # e.g. a non-finite Jacobian
             raise SolverError(f"{type(exc).__name__}: {exc}") from None
         finally:  # the work done counts on a failed run too
-            stats.rhs_evaluations, stats.jacobian_evaluations = counts["rhs"], counts["jac"]
+            stats.rhs_evaluations = counts["rhs"]
         if not sol.success:
             raise SolverError(str(sol.message))
         stats.steps = max(len(sol.t) - 1, 0)
-        stats.min_step = float(np.min(np.diff(sol.t))) if len(sol.t) > 1 else float("nan")
         return sol
 
     def _sample(self, sol, t_eval: np.ndarray, belt_velocity: np.ndarray) -> Samples:

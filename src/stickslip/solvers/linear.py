@@ -127,7 +127,3 @@ class LinearSegment:
     def acceleration(self, tau):
         x, v = self.state(tau)
         return (self.g0 + self.g1 * np.asarray(tau, dtype=float) - self.c * v - self.k * x) / self.m
-
-    @property
-    def natural_period(self) -> float:
-        return 2.0 * np.pi * np.sqrt(self.m / self.k)

@@ -90,5 +90,4 @@ class MoreauJean(OneDofSolver):
             xs[i + 1], vs[i + 1], ph[i] = x, v, code
         stats.steps = n
         stats.rhs_evaluations = n  # one force evaluation per step
-        stats.min_step = h
         return ts, xs, vs, ph

@@ -169,12 +169,9 @@ class SwitchSolver(EventDrivenSolver):
             if t0 < t_min < t1 and s * (y_min[1] - float(vb(t_min))) <= self.graze_tolerance * scale:
                 stats.events += 1
                 return Segment(t0, float(t_min), s, motion), "contact"
-        if sol.status == 1 and len(sol.t_events[0]):
+        if sol.status == 1:  # v_r = 0, or a breakpoint of the law (same direction, fresh integration)
             stats.events += 1
-            return Segment(t0, t1, s, motion), "contact"
-        if sol.status == 1:  # a breakpoint of the law: same direction, fresh integration
-            stats.events += 1
-            return Segment(t0, t1, s, motion), s
+            return Segment(t0, t1, s, motion), "contact" if len(sol.t_events[0]) else s
         return Segment(t0, t1, s, motion), s
 
 

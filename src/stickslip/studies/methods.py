@@ -11,6 +11,7 @@ import numpy as np
 
 from ..analysis.errors import measure_run, segment_cycle_metrics
 from ..analysis.failure import FAILURE_KINDS, classify
+from ..analysis.metrics import cf_variable
 from ..model import BeltModel, BeltParams
 from ..schema import MethodsStudy, StudyMethod, Timing, given
 from ..solvers import make_solver
@@ -107,13 +108,10 @@ def records_dataset(records, dim="run") -> xr.Dataset:
 
     ds = xr.Dataset()
     for key, (units, long_name) in NUMERIC.items():
-        ds[key] = (dim, np.array([float(r[key]) for r in records]), {"units": units, "long_name": long_name})
+        ds[key] = cf_variable(dim, np.array([float(r[key]) for r in records]), units, long_name)
     for key in FLAGS:
-        ds[key] = (
-            dim,
-            np.array([int(bool(r[key])) for r in records], dtype=np.int8),
-            {"units": "1", "long_name": f"failure flag: {key}", "flag_values": "0 1"},
-        )
+        flags = np.array([int(bool(r[key])) for r in records], dtype=np.int8)
+        ds[key] = cf_variable(dim, flags, "1", f"failure flag: {key}", flag_values="0 1")
     for key, long_name in STRINGS.items():
         ds[key] = (dim, np.array([str(r[key]) for r in records], dtype=object), {"long_name": long_name})
     return ds
@@ -125,10 +123,11 @@ def work_precision_dataset(study: MethodsStudy, scene: str) -> tuple[xr.Dataset,
     model = scene_model(study, scene)
     records, _, ref_cycle, paper = run_scene(study, model, study.t_end, expand_methods(study.methods))
     ds = records_dataset(records)
-    ds["cpu_ratio_to_paper"] = (
+    ds["cpu_ratio_to_paper"] = cf_variable(
         "run",
         ds["cpu_time"].values / paper["cpu_time"],
-        {"units": "1", "long_name": "CPU time / paper's method (sign+RK45 rtol 1e-3), same run"},
+        "1",
+        "CPU time / paper's method (sign+RK45 rtol 1e-3), same run",
     )
     ds.attrs.update(
         title=f"Work-precision of integration methods, scene {scene}",

@@ -10,7 +10,7 @@ from ..analysis.critical import continuation, critical_speed
 from ..analysis.divergence import BoundedSolver
 from ..analysis.extra_metrics import extra_metrics
 from ..analysis.friction_curve import friction_along_solution, friction_table
-from ..analysis.metrics import METRICS, limit_cycle_metrics, metric_attrs
+from ..analysis.metrics import METRICS, cf_variable, limit_cycle_metrics, metric_attrs
 from ..analysis.outcome import FLAG_ATTRS, mechanism, outcome_name, run_outcome
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
 from ..io.netcdf import trajectory_dataset
@@ -169,10 +169,10 @@ def sweep_dataset(spec: SweepSpec, dense: bool, progress=None) -> xr.Dataset:
             ds[m] = (spec.parameter, np.full(n, np.nan), metric_attrs(m))
     ds["slip_fraction"] = (spec.parameter, 1.0 - ds.stick_fraction.values, metric_attrs("slip_fraction"))
     if not dense:  # the paper's curves: keep each run's time series
-        ds = ds.assign_coords(time=("time", base.t_eval, {"units": "s", "long_name": "time"}))
+        ds = ds.assign_coords(time=cf_variable("time", base.t_eval, "s", "time"))
         dims = (spec.parameter, "time")
-        ds["displacement"] = (dims, series[:, 0], {"units": "mm", "long_name": "mass displacement x"})
-        ds["velocity"] = (dims, series[:, 1], {"units": "mm s-1", "long_name": "mass velocity"})
+        ds["displacement"] = cf_variable(dims, series[:, 0], "mm", "mass displacement x")
+        ds["velocity"] = cf_variable(dims, series[:, 1], "mm s-1", "mass velocity")
         at_values = {}  # assigned at once: each single assignment re-aligns the whole dataset
         for m in POINT_METRICS:
             for value in spec.values:
@@ -233,34 +233,24 @@ def critical_speed_dataset(spec: RunSpec, speeds: np.ndarray, t_end: float, tran
     vc = critical_speed(speeds, out["stick_fraction"], out["solver_ok"])
     stable = out["steady_sliding_stable"]
     first_stable = float(speeds[np.argmax(stable == 1)]) if np.any(stable == 1) else float("inf")
-    speed_attrs = {"units": "mm s-1", "long_name": "belt speed V_b"}
     ds = xr.Dataset(
-        {k: ("belt_velocity", out[k], {"units": u, "long_name": n}) for k, (u, n) in CRITICAL_UNITS.items()},
-        coords={"belt_velocity": ("belt_velocity", speeds, speed_attrs)},
+        {k: cf_variable("belt_velocity", out[k], u, n) for k, (u, n) in CRITICAL_UNITS.items()},
+        coords={"belt_velocity": cf_variable("belt_velocity", speeds, "mm s-1", "belt speed V_b")},
     )
-    ds["critical_belt_speed"] = (
-        (),
-        vc,
-        {
-            "units": "mm s-1",
-            "long_name": "smallest V_b from which on no run sticks (0: never sticks; inf: none)",
-        },
+    ds["critical_belt_speed"] = cf_variable(
+        (), vc, "mm s-1", "smallest V_b from which on no run sticks (0: never sticks; inf: none)"
     )
-    ds["steady_sliding_stable_from"] = (
+    ds["steady_sliding_stable_from"] = cf_variable(
         (),
         first_stable,
-        {
-            "units": "mm s-1",
-            "long_name": "smallest swept V_b at which steady sliding is linearly stable (inf: none)",
-        },
+        "mm s-1",
+        "smallest swept V_b at which steady sliding is linearly stable (inf: none)",
     )
-    ds["has_critical_speed"] = (
+    ds["has_critical_speed"] = cf_variable(
         (),
         float(0 < vc < np.inf),
-        {
-            "units": "1",
-            "long_name": "stick-slip present at low speed and gone above a finite speed (1) or not (0)",
-        },
+        "1",
+        "stick-slip present at low speed and gone above a finite speed (1) or not (0)",
     )
     ds.attrs["failures"] = "; ".join(messages) or "none"
     return ds
@@ -285,35 +275,21 @@ def friction_table_dataset(spec: RunSpec, bins: int) -> xr.Dataset:
         spec.params.normal_force,
     )
     table_v, table_mu = friction_table(speed, mu, spec.params.mu_s, bins)
-    scalar = {"units": "1"}
+    max_speed = float(np.max(speed)) if len(speed) else np.nan
     return xr.Dataset(
         {
-            "mu": ("relative_speed", table_mu, {"units": "1", "long_name": "friction coefficient |F|/N"}),
-            "sample_relative_speed": (
-                "sample",
-                speed,
-                {"units": "mm s-1", "long_name": "|v_r| of each slip sample"},
+            "mu": cf_variable("relative_speed", table_mu, "1", "friction coefficient |F|/N"),
+            "sample_relative_speed": cf_variable("sample", speed, "mm s-1", "|v_r| of each slip sample"),
+            "sample_mu": cf_variable("sample", mu, "1", "|F|/N of each slip sample"),
+            "max_relative_speed": cf_variable(
+                (), max_speed, "mm s-1", "largest relative speed along the solution"
             ),
-            "sample_mu": ("sample", mu, {**scalar, "long_name": "|F|/N of each slip sample"}),
-            "max_relative_speed": (
-                (),
-                float(np.max(speed)) if len(speed) else np.nan,
-                {"units": "mm s-1", "long_name": "largest relative speed along the solution"},
+            "mu_at_max_relative_speed": cf_variable(
+                (), float(table_mu[-1]), "1", "friction coefficient at the largest relative speed"
             ),
-            "mu_at_max_relative_speed": (
-                (),
-                float(table_mu[-1]),
-                {**scalar, "long_name": "friction coefficient at the largest relative speed"},
-            ),
-            "mu_static": ((), spec.params.mu_s, {**scalar, "long_name": "static friction coefficient"}),
+            "mu_static": cf_variable((), spec.params.mu_s, "1", "static friction coefficient"),
         },
-        coords={
-            "relative_speed": (
-                "relative_speed",
-                table_v,
-                {"units": "mm s-1", "long_name": "relative speed |v_r|"},
-            )
-        },
+        coords={"relative_speed": cf_variable("relative_speed", table_v, "mm s-1", "relative speed |v_r|")},
     )
 
 
@@ -340,19 +316,21 @@ def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
     fs, as_ = correct_peak(force, p.stiffness, p.damping, effective_mass(p.mass, "si"))
 
     def scalar(value, units, long_name):
-        return (), float(value), {"units": units, "long_name": long_name}
+        return cf_variable((), float(value), units, long_name)
 
     return xr.Dataset(
         {
-            "amplitude_printed": (
+            "amplitude_printed": cf_variable(
                 "frequency",
                 amplitude_printed(w, force, p.stiffness, p.damping),
-                {"units": "mm", "long_name": "Eq. 6 as printed: F/sqrt((K-w^2)^2 + c w^2)"},
+                "mm",
+                "Eq. 6 as printed: F/sqrt((K-w^2)^2 + c w^2)",
             ),
-            "amplitude_correct": (
+            "amplitude_correct": cf_variable(
                 "frequency",
                 amplitude_correct(w, force, p.stiffness, p.damping, p.mass),
-                {"units": "mm", "long_name": "1-DOF: F/sqrt((K-M w^2)^2 + (C w)^2)"},
+                "mm",
+                "1-DOF: F/sqrt((K-M w^2)^2 + (C w)^2)",
             ),
             "peak_frequency_printed": scalar(fp, "Hz", "peak of Eq. 6 as printed (w^2 = K - c/2)"),
             "peak_amplitude_printed": scalar(ap, "mm", "peak amplitude of Eq. 6 as printed"),
@@ -364,7 +342,7 @@ def eq6_dataset(spec: RunSpec, f_max: float, points: int) -> xr.Dataset:
             "peak_amplitude_correct_si": scalar(as_, "mm", "peak amplitude with M converted to N s^2/mm"),
             "force": scalar(force, "N", "F = mu_s N assumed for 'the friction force' of Eq. 6"),
         },
-        coords={"frequency": ("frequency", f, {"units": "Hz", "long_name": "excitation frequency w / 2 pi"})},
+        coords={"frequency": cf_variable("frequency", f, "Hz", "excitation frequency w / 2 pi")},
     )
 
 

@@ -101,9 +101,7 @@ class RunSpec:
     @property
     def friction(self):
         """The friction the metrics read (``force(v, v_b)``): the reading's, or the scene's law at N."""
-        if self.law is not None:
-            return self.model.slip_friction
-        return self.model.friction
+        return self.model.slip_friction if self.law is not None else self.model.friction
 
     def solver(self):
         """The configured method; with ``budget: {max_rhs: N}`` a stall becomes a failed run."""
@@ -246,11 +244,7 @@ def sweep_spec(onedof: OnedofRuns, sweep: str, reading: str) -> SweepSpec:
     base = run_spec(onedof, cfg.scene or baseline.scene, reading, cfg.method or baseline.method)
     dense = axis_values(cfg.dense)
     axis = SweepAxis(cfg.parameter, dense, linked=cfg.linked)
-    for value in [*cfg.values, dense[0], dense[-1]]:
-        try:
-            base.params.with_(**axis.point(value))
-        except ParameterError as exc:
-            raise ParameterError(f"{key}.values ({cfg.parameter} = {value:g}): {exc}") from None
+    check_points(base.params, axis, [*cfg.values, dense[0], dense[-1]], f"{key}.values")
     return SweepSpec(
         name=sweep,
         figure=cfg.figure,
@@ -264,6 +258,15 @@ def sweep_spec(onedof: OnedofRuns, sweep: str, reading: str) -> SweepSpec:
         coord_scale=cfg.dense.spacing,
         law=_law(cfg.law, key),
     )
+
+
+def check_points(params: BeltParams, axis: SweepAxis, values, key: str) -> None:
+    """Each of ``values`` on ``axis`` makes valid parameters; an error names ``key`` and the value."""
+    for value in values:
+        try:
+            params.with_(**axis.point(value))
+        except ParameterError as exc:
+            raise ParameterError(f"{key} ({axis.name} = {value:g}): {exc}") from None
 
 
 # --- dense maps ---------------------------------------------------------------------------------------------
@@ -355,11 +358,7 @@ def dense_map(onedof: OnedofRuns, maps: DenseMaps, name: str) -> DenseMap:
     spec = dataclasses.replace(spec, **{k: float(v) for k, v in lengths.items()})
     axes = [sweep_axis(a) for a in cfg.axes]
     for i, axis in enumerate(axes):
-        for value in (min(axis.values), max(axis.values)):
-            try:
-                spec.params.with_(**axis.point(value))
-            except ParameterError as exc:
-                raise ParameterError(f"{key}.axes[{i}] ({axis.name} = {value:g}): {exc}") from None
+        check_points(spec.params, axis, (min(axis.values), max(axis.values)), f"{key}.axes[{i}]")
     chunk_size = cfg.chunk_size or maps.chunk_size
     return DenseMap(
         name=name,

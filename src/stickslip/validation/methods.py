@@ -22,30 +22,11 @@ from ..solvers import make_solver
 
 
 @dataclass(frozen=True)
-class SignLawModel:
+class SignLawModel(LawModel):
     """A law model as the paper's one equation with sgn(v_r) (what ode45 integrates)."""
 
-    law_model: LawModel
-
-    @property
-    def params(self):
-        return self.law_model.params
-
-    @property
-    def law(self):
-        return self.law_model.law
-
-    @property
-    def mass(self) -> float:
-        return self.law_model.mass
-
-    @property
-    def friction(self):
-        """No affine coefficients: methods that need them (implicit Jacobians, Karnopp, Moreau) cannot run."""
-        return None
-
-    def belt_velocity(self, t):
-        return self.law_model.belt_velocity(t)
+    #: No affine coefficients: methods that need them (implicit Jacobians, Karnopp, Moreau) cannot run.
+    friction = None
 
     def acceleration(self, t, x, v, sign=np.sign):
         p = self.params
@@ -69,7 +50,7 @@ def expand_methods(entries: Iterable[LawMethod]) -> list[tuple[str, dict, str]]:
 
 def model_for(solver: str, law_model: LawModel):
     """The model object a method takes: the law model (switch) or its single-equation form."""
-    return law_model if solver == "switch" else SignLawModel(law_model)
+    return law_model if solver == "switch" else SignLawModel(law_model.params, law_model.law)
 
 
 def methods_study(law_model: LawModel, study: MethodsPerLaw, reference):
