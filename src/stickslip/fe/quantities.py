@@ -82,12 +82,6 @@ def metric_attrs(name: str, long_name: str | None = None) -> dict:
     return {"units": units, "long_name": text}
 
 
-def cf_var(dims, values, units: str, long_name: str, **attrs) -> tuple:
-    """A dataset variable as xarray takes it: (dims, values, its CF ``units`` and ``long_name``, then
-    ``attrs``)."""
-    return (dims, values, {"units": units, "long_name": long_name, **attrs})
-
-
 def cf_attrs(title: str, **attrs) -> dict:
     """A dataset's own attributes: CF conventions, its ``title``, then ``attrs`` in the order given."""
     return {"Conventions": "CF-1.10", "title": title, **attrs}

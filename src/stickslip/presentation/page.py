@@ -43,9 +43,10 @@ from ..claims.verdicts import (
     tally,
     verdict_label,
 )
+from ..io.benchmarks import as_number
 from ..io.text_files import write_text_atomic
 from ..pipeline.code_deps import module_file
-from .report import as_number, paper_figures
+from .report import paper_figures
 from .show import show_text
 from .sources import definition_lines, imported_names, rule_line
 

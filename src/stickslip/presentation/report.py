@@ -14,6 +14,7 @@ from collections import Counter
 from pathlib import Path
 
 from ..claims.rows import STATUSES
+from ..io.benchmarks import as_number
 from ..io.text_files import write_text_atomic
 
 _FIG = re.compile(r"Fig(?:ure)?s?\.?\s*((?:\d+\s*(?:[-/,]|and|vs\.?|–)?\s*(?:Fig\.?\s*)?)+)", re.IGNORECASE)
@@ -50,14 +51,6 @@ INDISTINGUISHABLE_NOTE = (
     "threshold, so the pipeline's own numerical noise could decide it; it is called neither reproduced nor "
     "deviating."
 )
-
-
-def as_number(value) -> float:
-    """A table cell as a float, NaN for a blank or a word."""
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        return float("nan")
 
 
 def _margin(row: dict) -> str:

@@ -10,7 +10,8 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
+from ..analysis.metrics import cf_variable
+from ..fe.quantities import INTERPRETATION, cf_attrs
 from ..fe.step_halving import REL_TOL, converged, sign_converged
 
 #: quantities of the comparison table
@@ -234,20 +235,20 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
     rel = arr["relative_difference"]
     ds = xr.Dataset(
         {
-            "continuum_value": cf_var(dims, arr["continuum"], "1", "continuum strip value"),
-            "beam_value": cf_var(dims, arr["beam"], "1", "beam model value"),
-            "relative_difference": cf_var(dims, rel, "1", "(beam - continuum) / |continuum|"),
-            "noise_floor": cf_var(
+            "continuum_value": cf_variable(dims, arr["continuum"], "1", "continuum strip value"),
+            "beam_value": cf_variable(dims, arr["beam"], "1", "beam model value"),
+            "relative_difference": cf_variable(dims, rel, "1", "(beam - continuum) / |continuum|"),
+            "noise_floor": cf_variable(
                 dims,
                 arr["noise_floor"],
                 "1",
                 "beam's change of the quantity at half the time step (quantity's units)",
             ),
-            "agreement": cf_var(
+            "agreement": cf_variable(
                 dims, arr["agreement"].astype("i1"), "1", "beam and continuum agree", rule=AGREEMENT_RULE
             ),
             **{
-                f"{model}_cpu_time": cf_var(
+                f"{model}_cpu_time": cf_variable(
                     "scene",
                     np.array([float(runs[s]["cpu_time"]) for s in scenes]),
                     "s",
@@ -258,7 +259,7 @@ def comparison_dataset(rows: list[dict], continuum: Mapping[str, xr.Dataset], be
         },
         coords={"scene": ("scene", scenes), "quantity": ("quantity", qs)},
     )
-    ds["max_abs_relative_difference"] = cf_var(
+    ds["max_abs_relative_difference"] = cf_variable(
         "quantity",
         np.nanmax(np.abs(np.where(np.isfinite(rel), rel, np.nan)), 0),
         "1",
@@ -291,10 +292,12 @@ def window_dataset(rows: list[dict]) -> xr.Dataset:
     dims = ("window_scene", "window_quantity", "time_step")
     return xr.Dataset(
         {
-            "window_beam_value": cf_var(dims, beam, "1", "beam model value (quantity's units)"),
-            "window_continuum_value": cf_var(dims, cont, "1", "continuum strip value (quantity's units)"),
-            "window_agreement": cf_var(dims[:2], ok, "1", "beam and continuum agree", rule=WINDOW_RULE),
-            "window_t_end": cf_var("window_scene", t_end, "s", "claim window of both runs"),
+            "window_beam_value": cf_variable(dims, beam, "1", "beam model value (quantity's units)"),
+            "window_continuum_value": cf_variable(
+                dims, cont, "1", "continuum strip value (quantity's units)"
+            ),
+            "window_agreement": cf_variable(dims[:2], ok, "1", "beam and continuum agree", rule=WINDOW_RULE),
+            "window_t_end": cf_variable("window_scene", t_end, "s", "claim window of both runs"),
         },
         coords={
             "window_scene": ("window_scene", scenes),

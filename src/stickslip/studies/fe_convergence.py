@@ -8,9 +8,10 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe.beam import cantilever_errors
 from ..fe.params import FrictionTable, SolverParams
-from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var, metric_attrs
+from ..fe.quantities import INTERPRETATION, cf_attrs, metric_attrs
 from ..schema.fe import Convergence, FeJob
 from .fe_config import as_mapping, deep_merge
 from .fe_scene import run_scene
@@ -58,11 +59,11 @@ def _grid_runs(cv: Convergence, base: Mapping, n_el: list, sfs: list, friction: 
 
 def _grid_coords(n_el: list, sfs: list) -> dict:
     return {
-        "n_elements": cf_var("n_elements", np.array(n_el), "1", "number of beam elements"),
-        "safety_factor": cf_var(
+        "n_elements": cf_variable("n_elements", np.array(n_el), "1", "number of beam elements"),
+        "safety_factor": cf_variable(
             "safety_factor", np.array(sfs, float), "1", "time step over the stable limit"
         ),
-        "bending_mode": cf_var("bending_mode", np.arange(1, 4), "1", "cantilever bending mode"),
+        "bending_mode": cf_variable("bending_mode", np.arange(1, 4), "1", "cantilever bending mode"),
     }
 
 
@@ -81,17 +82,17 @@ def convergence_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     for q in CONVERGENCE_QUANTITIES:
         ds[q] = (dims, vals[q], metric_attrs(q))
         dev, what = max_deviation(q, vals[q])
-        ds[f"{q}_max_deviation"] = cf_var(
+        ds[f"{q}_max_deviation"] = cf_variable(
             (), dev, "1", f"{what} of {q} on the two finest meshes from the finest run"
         )
-    ds["time_step"] = cf_var(dims, dt, "s", "time step used")
-    ds["bending_frequency_error"] = cf_var(
+    ds["time_step"] = cf_variable(dims, dt, "s", "time step used")
+    ds["bending_frequency_error"] = cf_variable(
         ("n_elements", "bending_mode"),
         np.array(bend_err),
         "1",
         "relative error of the cantilever bending frequencies",
     )
-    ds["axial_frequency_error"] = cf_var(
+    ds["axial_frequency_error"] = cf_variable(
         "n_elements", np.array(ax_err), "1", "relative error of the first axial frequency"
     )
     ds.attrs.update(

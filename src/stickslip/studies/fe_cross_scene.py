@@ -9,7 +9,8 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
-from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
+from ..analysis.metrics import cf_variable
+from ..fe.quantities import INTERPRETATION, cf_attrs
 
 
 def _step_value(ds: xr.Dataset, var: str, step: str) -> float:
@@ -24,12 +25,12 @@ def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, 
     ds = xr.Dataset()
     for name, (a, b, var) in pairs.items():
         va, vb = float(datasets[a][var]), float(datasets[b][var])
-        ds[name] = cf_var((), va / vb if vb != 0 else np.nan, "1", f"{var} of {a} over {b}")
+        ds[name] = cf_variable((), va / vb if vb != 0 else np.nan, "1", f"{var} of {a} over {b}")
         ea, eb = datasets[a].get(f"{var}_ensemble"), datasets[b].get(f"{var}_ensemble")
         if ea is not None and eb is not None and ea.shape == eb.shape:  # member by member
             with np.errstate(divide="ignore", invalid="ignore"):
                 ratio = np.where(eb.values != 0, ea.values / eb.values, np.nan)
-            ds[f"{name}_ensemble"] = cf_var(
+            ds[f"{name}_ensemble"] = cf_variable(
                 ea.dims, ratio, "1", f"{var} of {a} over {b}, per perturbation-ensemble member"
             )
         if not np.isfinite(ds[name].values):  # an operand withheld by step halving: keep both steps' ratios
@@ -37,7 +38,7 @@ def cross_scene_dataset(datasets: Mapping[str, xr.Dataset], pairs: Mapping[str, 
                 sa = _step_value(datasets[a], var, step)
                 sb = _step_value(datasets[b], var, step)
                 at = "dt" if step == "full_step" else "dt/2"
-                ds[f"{name}_{step}"] = cf_var(
+                ds[f"{name}_{step}"] = cf_variable(
                     (), sa / sb if sb != 0 else np.nan, "1", f"{var} of {a} over {b} at {at}"
                 )
     ds.attrs.update(

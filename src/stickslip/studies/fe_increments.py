@@ -6,8 +6,9 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe.params import FrictionTable, SceneParams
-from ..fe.quantities import cf_attrs, cf_var
+from ..fe.quantities import cf_attrs
 from ..schema.fe import FeJob
 from .fe_config import as_mapping
 
@@ -31,17 +32,17 @@ def increments_dataset(job: FeJob, duration: float = 0.65) -> xr.Dataset:
                 n[i, j, k] = increments(sc, duration, sf)
     ds = xr.Dataset(
         {
-            "increments": cf_var(
+            "increments": cf_variable(
                 ("mesh", "safety_factor", "stiffness_damping"),
                 n,
                 "1",
                 f"explicit increments to reach {duration} s",
             ),
-            "stable_time_step": cf_var(
+            "stable_time_step": cf_variable(
                 ("mesh", "stiffness_damping"), dtc, "s", "global stable time step 2/omega_max (damped)"
             ),
-            "mesh_nx": cf_var("mesh", np.array([m[0] for m in meshes]), "1", "elements along"),
-            "mesh_ny": cf_var("mesh", np.array([m[1] for m in meshes]), "1", "elements across"),
+            "mesh_nx": cf_variable("mesh", np.array([m[0] for m in meshes]), "1", "elements along"),
+            "mesh_ny": cf_variable("mesh", np.array([m[1] for m in meshes]), "1", "elements across"),
         },
         coords={
             "mesh": ("mesh", [f"{a}x{b}" for a, b in meshes], {"long_name": "mesh (along x across)"}),
@@ -51,7 +52,7 @@ def increments_dataset(job: FeJob, duration: float = 0.65) -> xr.Dataset:
     )
     i0 = [f"{a}x{b}" for a, b in meshes].index("100x1") if (100, 1) in [tuple(m) for m in meshes] else 0
     j0 = int(np.argmin(np.abs(np.array(safety_factors, float) - 1.0)))
-    ds["increments_0p65s_100x1"] = cf_var(
+    ds["increments_0p65s_100x1"] = cf_variable(
         (), float(n[i0, j0, 0]), "1", "increments for 0.65 s, continuum 100x1, full stable step, no damping"
     )
     ds.attrs.update(

@@ -9,10 +9,11 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe.beam import node_coordinates
 from ..fe.metrics import window_envelope
 from ..fe.modes import contact_held_modes, nodal_field
-from ..fe.quantities import cf_var, metric_attrs
+from ..fe.quantities import metric_attrs
 
 
 def _binned(t: np.ndarray, y: np.ndarray, edges: np.ndarray):
@@ -107,8 +108,8 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     ser = _series(r)
     data: dict = {}
     for k, (u, ln) in SERIES.items():
-        data[k] = cf_var("time", ser[k][keep], u, ln)
-    data["contact_state"] = cf_var(
+        data[k] = cf_variable("time", ser[k][keep], u, ln)
+    data["contact_state"] = cf_variable(
         "time",
         r.state[keep].astype("i1"),
         "1",
@@ -124,10 +125,10 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
         for stat, what, values in zip(
             ("min", "max", "mean"), ("minimum", "maximum", "mean"), _binned(t, ser[k], edges)
         ):
-            data[f"{k}_{stat}"] = cf_var("bin_time", values, u, f"{what} per bin of the {ln}")
+            data[f"{k}_{stat}"] = cf_variable("bin_time", values, u, f"{what} per bin of the {ln}")
     for code, name in enumerate(("separation", "stick", "slip")):
         _, _, frac = _binned(t, (r.state == code).astype(float), edges)
-        data[f"{name}_fraction_per_bin"] = cf_var(
+        data[f"{name}_fraction_per_bin"] = cf_variable(
             "bin_time", frac, "1", f"fraction of output samples in {name} per bin"
         )
     tw, evx = window_envelope(t, r.vx)
@@ -137,17 +138,17 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
         ("horizontal_displacement", ser["horizontal_displacement"], "mm"),
         ("vertical_displacement", ser["vertical_displacement"], "mm"),
     ):
-        data[f"{k}_envelope"] = cf_var(
+        data[f"{k}_envelope"] = cf_variable(
             "window", window_envelope(t, y)[1], u, f"half peak-to-peak {k.replace('_', ' ')} per window"
         )
     if "first_mode_amplitude" in r.extra:
         mode_window_time, amp = r.extra["first_mode_amplitude"]
-        data["first_mode_amplitude"] = cf_var(
+        data["first_mode_amplitude"] = cf_variable(
             "mode_window", amp, "mm", "horizontal amplitude of the first contact-held mode at node 1"
         )
     else:
         mode_window_time = np.zeros(0)
-    data["detail_windows"] = cf_var(
+    data["detail_windows"] = cf_variable(
         ("detail_window", "bound"),
         np.array(windows, float),
         "s",
@@ -160,10 +161,10 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
     return xr.Dataset(
         data,
         coords={
-            "time": cf_var("time", t[keep], "s", "time (full-resolution windows only)"),
-            "bin_time": cf_var("bin_time", 0.5 * (edges[:-1] + edges[1:]), "s", "bin centre"),
-            "window_time": cf_var("window", tw, "s", "window centre time"),
-            "mode_window_time": cf_var(
+            "time": cf_variable("time", t[keep], "s", "time (full-resolution windows only)"),
+            "bin_time": cf_variable("bin_time", 0.5 * (edges[:-1] + edges[1:]), "s", "bin centre"),
+            "window_time": cf_variable("window", tw, "s", "window centre time"),
+            "mode_window_time": cf_variable(
                 "mode_window", mode_window_time, "s", "centre of the first-mode demodulation window"
             ),
         },
@@ -188,19 +189,19 @@ def shape_variables(scene, q_static: np.ndarray) -> dict:
     both = np.concatenate([shapes["horizontal"], shapes["vertical"]], axis=1)
     sign = np.sign(both[np.arange(freq.size), np.abs(both).argmax(axis=1)])
     out = {
-        "node_position": cf_var(
+        "node_position": cf_variable(
             "node_position", x, "mm", "position of the node along the beam from the clamp"
         ),
-        "natural_frequency": cf_var("mode", freq, "Hz", "natural frequencies with contact held"),
+        "natural_frequency": cf_variable("mode", freq, "Hz", "natural frequencies with contact held"),
     }
     for c in ("horizontal", "vertical"):
-        out[f"static_deflection_{c}"] = cf_var(
+        out[f"static_deflection_{c}"] = cf_variable(
             "node_position",
             nodal_field(scene, q_static, 0 if c == "horizontal" else 1),
             "mm",
             f"{c} displacement of the beam axis in the static equilibrium in contact",
         )
-        out[f"mode_shape_{c}"] = cf_var(
+        out[f"mode_shape_{c}"] = cf_variable(
             ("mode", "node_position"),
             shapes[c] * (sign / np.where(scale > 0, scale, 1.0))[:, None],
             "1",

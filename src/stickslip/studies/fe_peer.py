@@ -21,11 +21,12 @@ import numpy as np
 import scipy.sparse.linalg as spla
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe import mechanics
 from ..fe.abaqus_deck import LINEAR_ELEMENT, LINEAR_ELEMENT_REASON, linear_deck
 from ..fe.continuum import build_continuum, natural_frequencies, static_state
 from ..fe.params import BeamParams, ContactParams, DiscParams, FrictionTable
-from ..fe.quantities import cf_attrs, cf_var
+from ..fe.quantities import cf_attrs
 from ..schema.fe import FePeer
 from ..validation.calculix import CalculixError, mode_blocks, parse_dat, run_ccx, static_block
 
@@ -183,22 +184,22 @@ def peer_dataset(rows: list[dict], beam: BeamParams, nx: int, ny: int, tolerance
     data = {}
     for r in rows:
         for m in MODELS:
-            data[f"{r['quantity']}_{m}"] = cf_var(
+            data[f"{r['quantity']}_{m}"] = cf_variable(
                 (), r[m], r["unit"], f"{r['long_name']}: {m.replace('_', ' ')}"
             )
     quantities = [r["quantity"] for r in rows]
     for a, b in PAIRS:
-        data[f"rel_diff_{a}_{b}"] = cf_var(
+        data[f"rel_diff_{a}_{b}"] = cf_variable(
             "quantity",
             [r[f"rel_diff_{a}_{b}"] for r in rows],
             "1",
             f"relative difference ({a} - {b}) / |{b}|",
         )
     worst = max(abs(r[f"rel_diff_{a}_{b}"]) for r in rows for a, b in PAIRS)
-    data["max_abs_rel_diff"] = cf_var(
+    data["max_abs_rel_diff"] = cf_variable(
         (), worst, "1", "largest |relative difference| over quantities and pairs"
     )
-    data["peers_agree"] = cf_var(
+    data["peers_agree"] = cf_variable(
         (),
         np.int8(worst <= tolerance),
         "1",

@@ -7,9 +7,10 @@ from collections.abc import Mapping
 
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe import mechanics as mc
 from ..fe.params import BeamParams, FrictionTable
-from ..fe.quantities import INTERPRETATION, cf_var
+from ..fe.quantities import INTERPRETATION
 from ..schema.fe import FeJob
 from .fe_config import as_mapping, deep_merge
 from .fe_scene import scene_dataset
@@ -33,7 +34,7 @@ def setup_fit_mapping(job: FeJob, base: str, centre: float) -> tuple[dict, float
 def setup_fit_dataset(mapping: Mapping, friction: FrictionTable, stiffness: float) -> xr.Dataset:
     """The fitted setup's scene dataset, labelled as a fit."""
     ds = scene_dataset(mapping, friction, "setup_fit")
-    ds["tip_support_stiffness"] = cf_var((), stiffness, "N mm-1", "fitted tip support stiffness")
+    ds["tip_support_stiffness"] = cf_variable((), stiffness, "N mm-1", "fitted tip support stiffness")
     ds.attrs["title"] = "Beam on rotating rigid disc: FIT of the tip support to Fig. 21"
     ds.attrs["model_interpretation"] = FIT_LABEL + ". " + INTERPRETATION
     return ds

@@ -8,9 +8,10 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe.explicit import static_state
 from ..fe.params import FrictionTable, SolverParams
-from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var
+from ..fe.quantities import INTERPRETATION, cf_attrs
 from ..fe.stability import max_growth, sliding_eigenvalues, sliding_state, transient_growth
 from ..schema.fe import FeJob, Stability
 from .fe_config import as_mapping, deep_merge
@@ -61,7 +62,7 @@ def crosscheck_point(base, friction, speed, angle, slope, st: Stability, damp: M
 
 
 def _cc_var(v, units, long_name):
-    return cf_var("crosscheck", np.array(v, float), units, long_name)
+    return cf_variable("crosscheck", np.array(v, float), units, long_name)
 
 
 def crosscheck_variables(cc: list, rows: list[dict]) -> dict:
@@ -88,7 +89,7 @@ def crosscheck_variables(cc: list, rows: list[dict]) -> dict:
         ),
         "crosscheck_angle": _cc_var([c[0] for c in cc], "degree", "cross-check contact angle"),
         "crosscheck_slope": _cc_var([c[1] for c in cc], "s mm-1", "cross-check friction slope"),
-        "crosscheck_max_relative_difference": cf_var(
+        "crosscheck_max_relative_difference": cf_variable(
             (),
             float(np.nanmax(rel)) if rel.size else np.nan,
             "1",
@@ -99,15 +100,15 @@ def crosscheck_variables(cc: list, rows: list[dict]) -> dict:
 
 def map_variables(g: np.ndarray, fr: np.ndarray) -> dict:
     return {
-        "max_growth_rate": cf_var(MAP_DIMS, g, "s-1", "largest real part of the linearised eigenvalues"),
-        "unstable_frequency": cf_var(MAP_DIMS, fr, "Hz", "frequency of the least stable eigenvalue"),
+        "max_growth_rate": cf_variable(MAP_DIMS, g, "s-1", "largest real part of the linearised eigenvalues"),
+        "unstable_frequency": cf_variable(MAP_DIMS, fr, "Hz", "frequency of the least stable eigenvalue"),
     }
 
 
 def map_coords(angles, slopes) -> dict:
     return {
-        "contact_angle": cf_var("contact_angle", np.array(angles, float), "degree", "contact angle"),
-        "friction_slope": cf_var("friction_slope", np.array(slopes, float), "s mm-1", "d mu / d v_r"),
+        "contact_angle": cf_variable("contact_angle", np.array(angles, float), "degree", "contact angle"),
+        "friction_slope": cf_variable("friction_slope", np.array(slopes, float), "s mm-1", "d mu / d v_r"),
     }
 
 
@@ -120,10 +121,10 @@ def at_table_slope(g, fr, angles, slopes, table_slope: float) -> dict:
     """Growth rate and frequency at angle 0 and the mapped slope nearest the table's."""
     a0, k0 = _nearest(angles, slopes, table_slope)
     return {
-        "growth_rate_at_table_slope_angle0": cf_var(
+        "growth_rate_at_table_slope_angle0": cf_variable(
             (), g[a0, k0], "s-1", "growth rate at angle 0 and the slope nearest the table's"
         ),
-        "unstable_frequency_at_table_slope_angle0": cf_var(
+        "unstable_frequency_at_table_slope_angle0": cf_variable(
             (), fr[a0, k0], "Hz", "frequency of the least stable mode at angle 0 and the table's slope"
         ),
     }
@@ -135,8 +136,8 @@ def at_speed(g, angles, slopes, table_slope: float, label: str, speed: float) ->
     a0, k0 = _nearest(angles, slopes, table_slope)
     where = f"at {speed:.3g} mm/s (table slope {table_slope:.3g} s/mm, mapped {slopes[k0]:.3g})"
     return {
-        f"growth_rate_angle0_{label}": cf_var((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
-        f"table_slope_{label}": cf_var((), table_slope, "s mm-1", f"d mu / d v_r of the table {where}"),
+        f"growth_rate_angle0_{label}": cf_variable((), g[a0, k0], "s-1", f"growth rate at angle 0 {where}"),
+        f"table_slope_{label}": cf_variable((), table_slope, "s mm-1", f"d mu / d v_r of the table {where}"),
     }
 
 
@@ -156,7 +157,7 @@ def stability_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     cc = st.crosscheck
     rows = [crosscheck_point(base, friction, V, a, s, st, damp) for a, s in cc]
     table_slope = {
-        "table_slope_at_disc_speed": cf_var(
+        "table_slope_at_disc_speed": cf_variable(
             (), friction.slope(V), "s mm-1", "d mu / d v_r of the friction table at the disc speed"
         )
     }

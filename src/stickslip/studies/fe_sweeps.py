@@ -10,8 +10,9 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from ..analysis.metrics import cf_variable
 from ..fe.params import FrictionTable
-from ..fe.quantities import INTERPRETATION, cf_attrs, cf_var, metric_attrs
+from ..fe.quantities import INTERPRETATION, cf_attrs, metric_attrs
 from ..schema.fe import FeJob, FeSweep
 from .fe_config import as_mapping, halved_step
 from .fe_scene import run_scene
@@ -55,7 +56,7 @@ def sweep_dataset(job: FeJob, sweep_name: str, friction: FrictionTable) -> xr.Da
     coord = sw.coord
     ds = xr.Dataset(
         {k: (coord, v, metric_attrs(k)) for k, v in _scalar_columns(rows).items()},
-        coords={coord: cf_var(coord, np.array(sw.values, float), sw.units, sw.long_name or coord)},
+        coords={coord: cf_variable(coord, np.array(sw.values, float), sw.units, sw.long_name or coord)},
     )
     ds.attrs.update(
         cf_attrs(
