@@ -88,7 +88,7 @@ def write_study(out: dict, outdir) -> list[Path]:
         "forward": "exact event-driven solver",
         "best_fit": "scipy.optimize.least_squares (trf, seeded multi-start)",
         "region": "emcee EnsembleSampler (seeded)",
-        "identifiability": "chi-square profiles along the flat and near-flat directions (identify)",
+        "identifiability": "rank from the equations (structure), ranges by profile likelihood (profile)",
         "conflicts": "minimal conflicting subsets by increasing size (conflicts)",
         **{k: v for k, v in inverse.settings_record.items() if k != "mode"},
     }
