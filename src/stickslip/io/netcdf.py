@@ -148,7 +148,8 @@ def software_versions() -> dict:
             f"{i.get('num_threads')} threads)"
             for i in blas
         ]
-        out["blas"] = "; ".join(described) or "none loaded"
+        # sorted: the order threadpoolctl lists them in is the order numpy and scipy happened to load them
+        out["blas"] = "; ".join(sorted(described)) or "none loaded"
     except ImportError:
         out["blas"] = "unknown (threadpoolctl not installed)"
     return out
