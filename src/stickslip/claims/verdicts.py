@@ -39,9 +39,6 @@ VERDICT_RULE = {
     "not comparable": "no claim decided (n = 0: none, or all undecided or not comparable)",
 }
 
-#: The disc speeds of the beam-on-disc scenes, as their dataset names spell them, in words.
-SPEEDS = DISC_SPEEDS
-
 #: The column of :func:`figure_row` that holds a beam-on-disc figure's ``k of n`` at each disc speed.
 SPEED_COLUMNS = {"15p2rpm": "stated_speed", "0p5mm_s": "implied_speed"}
 
@@ -132,8 +129,8 @@ def status_counts(statuses) -> dict[str, int]:
 
 
 def speed_of(claim: Claim | None) -> str:
-    """The disc speed a beam-on-disc claim reads (a key of :data:`SPEEDS`), ``""`` for none or both (or no
-    claim: a table row whose id is in no claims file)."""
+    """The disc speed a beam-on-disc claim reads (a key of :data:`DISC_SPEEDS`), ``""`` for none or both
+    (or no claim: a table row whose id is in no claims file)."""
     return "" if claim is None else disc_speed(claim)
 
 
@@ -185,7 +182,7 @@ def figure_row(
         out["readings_searched"] = len(readings)
         out |= dict.fromkeys(SPEED_COLUMNS.values(), "")
     else:
-        by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"])) in ("", s)] for s in SPEEDS}
+        by_speed = {s: [r for r in rows if speed_of(claims.get(r["claim"])) in ("", s)] for s in DISC_SPEEDS}
         out |= _columns("primary", tally(rows), primary)
         stated = tally(by_speed["15p2rpm"])
         out |= _columns("printed", stated, f"{primary} at 15.2 rev/min")

@@ -27,12 +27,11 @@ from pathlib import Path
 import yaml
 
 from .. import catalogue as paths
-from ..claims.load import load_claims
+from ..claims.load import DISC_SPEEDS, load_claims
 from ..claims.rows import EVIDENCE_CLASSES, Claim
 from ..claims.table import read_table
 from ..claims.verdicts import (
     SPEED_COLUMNS,
-    SPEEDS,
     VERDICT_RULE,
     VERDICTS,
     is_evidence,
@@ -492,7 +491,7 @@ class PageBuilder:
                 {
                     "claim": r["claim"],
                     "quantity": r["quantity"],
-                    "speed": SPEEDS.get(speed_of(claim), "") if fe else "",
+                    "speed": DISC_SPEEDS.get(speed_of(claim), "") if fe else "",
                     "reported": fmt(r["reported"]),
                     "measured": fmt(r["measured"]),
                     "unit": r["unit"],
@@ -559,7 +558,7 @@ class PageBuilder:
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
-        speeds = [{"label": SPEEDS[s], "text": v[col]} for s, col in SPEED_COLUMNS.items()] if fe else []
+        speeds = [{"label": DISC_SPEEDS[s], "text": v[col]} for s, col in SPEED_COLUMNS.items()] if fe else []
         verdict = v["primary"]["verdict"]
         return {
             "key": key,
@@ -592,7 +591,7 @@ class PageBuilder:
         return {
             "claim": r["claim"],
             "reading": r["reading"] or "all",
-            "speed": SPEEDS.get(speed_of(claim), ""),
+            "speed": DISC_SPEEDS.get(speed_of(claim), ""),
             "quantity": r["quantity"],
             "reported": fmt(r["reported"]),
             "measured": fmt(r["measured"]),
