@@ -78,8 +78,7 @@ class Region:
 
 def _fun(forward: Forward, problem: Problem):
     def fun(u):
-        with np.errstate(over="ignore"):  # far outside the bounds: inf, rejected just below
-            values = 10.0**u
+        values = _power10(u)
         if not problem.in_bounds(values):
             return np.full(len(problem.observations), INFEASIBLE_RESIDUAL)
         r = forward.residuals(values)  # clipped: a run growing without bound must not overflow the solver
@@ -88,6 +87,12 @@ def _fun(forward: Forward, problem: Problem):
         )
 
     return fun
+
+
+def _power10(u) -> np.ndarray:
+    """10**u, inf where a step far outside the bounds overflows (the bounds check then rejects it)."""
+    with np.errstate(over="ignore"):
+        return 10.0**u
 
 
 def best_fit(forward: Forward, starts: int, max_nfev: int, seed: int, x0=None, candidates=()) -> BestFit:

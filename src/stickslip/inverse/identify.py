@@ -86,19 +86,10 @@ def _chi2(forward: Forward, u: np.ndarray) -> float:
 
 
 def bound_step(problem: Problem, u0: np.ndarray, d: np.ndarray, sign: float) -> float:
-    """Largest t >= 0 with u0 + sign t d within the bounds (box and, if set, sigma v_p <= 1)."""
-    lo, hi = problem.log_bounds
-    step = sign * d
+    """Largest t >= 0 with u0 + sign t d within the bounds (``shift_constraints`` along one direction)."""
+    a, b = shift_constraints(problem, (sign * d)[:, None], u0)
     with np.errstate(divide="ignore", invalid="ignore"):
-        t_hi = np.where(step > 0, (hi - u0) / step, np.inf)
-        t_lo = np.where(step < 0, (lo - u0) / step, np.inf)
-    t = float(max(0.0, min(np.min(t_hi), np.min(t_lo))))
-    if problem.plateau_pair is not None:
-        i, j = problem.plateau_pair
-        slope, value = step[i] + step[j], u0[i] + u0[j]
-        if slope > 0:
-            t = min(t, max(0.0, -value / slope))
-    return t
+        return float(max(0.0, np.min(np.where(a[:, 0] > 0, b / a[:, 0], np.inf))))
 
 
 def profile(forward: Forward, u0: np.ndarray, d: np.ndarray, chi2_0: float, slope=0.0, ends_first=False):
@@ -210,13 +201,20 @@ def flat_extent(problem: Problem, free_values, ident: Identification, rows: np.n
     d = np.column_stack([r.direction for r in ridges])
     a_ub, b_ub = shift_constraints(problem, d, np.log10(np.asarray(free_values, dtype=float)))
     box = [(None, None) if r.structural else (r.t_lower, r.t_upper) for r in ridges]
-    out = np.zeros((len(rows), 2))
-    for n, row in enumerate(rows):
-        c = row @ d
+    return lp_extent([row @ d for row in rows], a_ub, b_ub, box)[0]
+
+
+def lp_extent(costs, a_ub, b_ub, bounds=(None, None)) -> tuple[np.ndarray, list]:
+    """(lowest, highest) of each ``c . s`` over the shifts s with ``A s <= max(b, 0)`` within ``bounds`` (NaN
+    where the programme fails), and the shifts where each is reached."""
+    out, shifts = np.full((len(costs), 2), np.nan), []
+    for n, c in enumerate(costs):
         for col, sign in ((0, 1.0), (1, -1.0)):
-            res = linprog(sign * c, A_ub=a_ub, b_ub=np.maximum(b_ub, 0.0), bounds=box, method="highs")
-            out[n, col] = sign * res.fun if res.status == 0 else np.nan
-    return out
+            res = linprog(sign * c, A_ub=a_ub, b_ub=np.maximum(b_ub, 0.0), bounds=bounds, method="highs")
+            if res.status == 0:
+                out[n, col] = sign * res.fun
+                shifts.append(res.x)
+    return out, shifts
 
 
 def parameter_ranges(problem: Problem, free_values, ident: Identification) -> tuple[np.ndarray, np.ndarray]:

@@ -39,9 +39,9 @@ import numpy as np
 from scipy.optimize import least_squares, linprog
 from scipy.stats import chi2 as chi2_distribution
 
-from .fit import _fun
+from .fit import _fun, _power10
 from .forward import Forward
-from .identify import JACOBIAN_STEP, jacobian_w, quantity_rows, shift_constraints
+from .identify import JACOBIAN_STEP, jacobian_w, lp_extent, quantity_rows, shift_constraints
 from .problem import Problem
 from .structure import fibre_extent, identifiable_in_structure, runs_rank
 
@@ -151,20 +151,16 @@ class _Space:
     def extremes(self, u, rows: np.ndarray) -> tuple[np.ndarray, list]:
         """(lower, upper) of each row . u over the structural shifts of u within the bounds, and the shifted
         sets where each is reached (on the straight part of the fibre: starts for ``fibre_extent``)."""
-        out, sets = np.tile((rows @ u)[:, None], (1, 2)), []
+        out = np.tile((rows @ u)[:, None], (1, 2))
         if self.null.shape[1] == 0:
-            return out, sets
-        a, b = shift_constraints(self.p, self.null, u)
-        for n, row in enumerate(rows):
-            c = row @ self.null
-            if np.linalg.norm(c) <= ROW_SPACE_TOL:
-                continue
-            for col, sign in ((0, 1.0), (1, -1.0)):
-                res = linprog(sign * c, A_ub=a, b_ub=np.maximum(b, 0.0), bounds=(None, None), method="highs")
-                out[n, col] += sign * res.fun if res.status == 0 else np.nan
-                if res.status == 0:
-                    sets.append(u + self.null @ res.x)
-        return out, sets
+            return out, []
+        costs = [row @ self.null for row in rows]
+        moving = np.array([np.linalg.norm(c) > ROW_SPACE_TOL for c in costs], dtype=bool)
+        offsets, shifts = lp_extent(
+            [c for c, m in zip(costs, moving) if m], *shift_constraints(self.p, self.null, u)
+        )
+        out[moving] += offsets
+        return out, [u + self.null @ s for s in shifts]
 
     def slack(self, u) -> float:
         """Largest distance [log10] to the box bounds of any set with the motion of u (structural shifts)."""
@@ -315,12 +311,6 @@ def _minimise(fun, space: _Space, w_fixed, q, z0, target: float, nfev: int):
     r = fun(u)
     chi2 = float(r @ r)
     return u, (chi2 if space.p.in_bounds(_power10(u)) else np.inf), z
-
-
-def _power10(u) -> np.ndarray:
-    """10**u, inf where a step far outside the bounds overflows (the bounds check then rejects it)."""
-    with np.errstate(over="ignore"):
-        return 10.0**u
 
 
 def profile_identify(forward: Forward, free_values, structure: tuple) -> ProfileIdentification:
