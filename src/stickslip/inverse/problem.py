@@ -299,9 +299,7 @@ def build_problem(job: InverseJob, claims: dict[str, Claim], name: str, family: 
             )
         if one_scene:
             stated.update(given(onedof.scenes[figure.scene].params))
-    fixed = [
-        set(run.overrides) & set(fam.free) for run in runs
-    ]  # a sweep's parameter, where every run sets it
+    fixed = [set(run.overrides) & set(fam.free) for run in runs]  # a sweep's parameter: every run sets it
     fixed_everywhere = set.intersection(*fixed) if fixed else set()
     free = tuple(p for p in PARAMS if p in fam.free and p not in fixed_everywhere)
     defaults = onedof.defaults

@@ -31,20 +31,13 @@ import sympy as sp
 from scipy.optimize import minimize
 
 from .forward import build_model
+from .problem import SYMBOLS as PARAMETER_SYMBOLS
 
-#: The model's parameters as sympy symbols (BeltParams field names), all positive.
+#: The model's parameters as sympy symbols (BeltParams field names), all positive: the inverse study's names
+#: and the belt speed, an input of every run.
 SYMBOLS = {
     name: sp.Symbol(symbol, positive=True)
-    for name, symbol in (
-        ("mass", "M"),
-        ("stiffness", "K"),
-        ("damping", "C"),
-        ("mu_s", "mu_s"),
-        ("normal_force", "N"),
-        ("sigma", "sigma"),
-        ("plateau_speed", "v_p"),
-        ("belt_velocity", "V_b"),
-    )
+    for name, symbol in {**PARAMETER_SYMBOLS, "belt_velocity": "V_b"}.items()
 }
 #: Phases a run can visit: stick, slip backward (v < V_b) or forward, and slip beyond the plateau speed.
 PHASES = ("stick", "slip_backward", "slip_forward", "plateau")
@@ -82,9 +75,8 @@ def phase_combinations(phases) -> dict[str, sp.Expr]:
         if phase in phases:
             damping, stiffness, equilibrium = normalised(a * s + b * v + kappa * vb)
             out["K/M"], out["(C - mu_s N sigma)/M"], out[f"x_e({s:+d})"] = stiffness, damping, equilibrium
-            if (
-                "plateau" in phases
-            ):  # beyond v_p the law's v_r is held at s v_p: F = a s + b s v_p + (b + kappa) V_b
+            # beyond v_p the law's v_r is held at s v_p: F = a s + b s v_p + (b + kappa) V_b
+            if "plateau" in phases:
                 damping, _, equilibrium = normalised(a * s + b * s * vp + (b + kappa) * vb)
                 out["C/M"], out[f"x_p({s:+d})"] = damping, equilibrium
                 out["v_p"] = vp  # the switch into the plateau happens at |v_r| = v_p
