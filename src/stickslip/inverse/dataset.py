@@ -37,13 +37,8 @@ INTERPRETATION = (
     "event-driven solver. The claims table (stated parameters) is unchanged by this study."
 )
 
-COMBINATION_KEYS = {
-    "K/M": "K_over_M",
-    "C/M": "C_over_M",
-    "mu_s N/M": "mu_s_N_over_M",
-    "sigma": "sigma",
-    "v_p": "v_p",
-}
+#: Variable-name key of each combination ("mu_s N/M" -> "mu_s_N_over_M").
+COMBINATION_KEYS = {c: c.replace("/", "_over_").replace(" ", "_") for c in COMBINATIONS}
 
 IDENTIFIABILITY_METHOD = (
     "structure from the equations, what the data bound from the profile likelihood. (1) Structural "
