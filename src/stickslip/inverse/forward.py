@@ -19,7 +19,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..analysis.metrics import displacement_peaks, frequency_from_peaks, intervals
+from ..analysis.metrics import count_peaks, displacement_peaks, frequency_from_peaks, intervals
+from ..analysis.outcome import REST_FRACTION
 from ..model.equations import BeltModel
 from ..model.friction import AffineFriction, friction_law
 from ..model.params import BeltParams, ParameterError
@@ -107,11 +108,10 @@ def observe(traj: Trajectory, transient: float, count_window: float, names) -> d
         sticking = traj.phase == STICK
         out["stick_velocity"] = float(np.mean(v[sticking])) if np.any(sticking) else nan
     if "frequency_peaks" in need:
-        at_rest = np.ptp(xw) <= 1e-4 * max(np.ptp(x), 1e-300)  # REST_FRACTION of analysis.metrics
+        at_rest = np.ptp(xw) <= REST_FRACTION * max(np.ptp(x), 1e-300)
         out["frequency_peaks"] = nan if at_rest else float(frequency_from_peaks(tw, xw))
     if "peaks_in_count_window" in need:
-        peaks = displacement_peaks(t, x)
-        out["peaks_in_count_window"] = float(np.sum((t[peaks] >= 0.0) & (t[peaks] <= count_window)))
+        out["peaks_in_count_window"] = float(count_peaks(t, x, 0.0, count_window))
     if "periodic" in need:
         peaks = displacement_peaks(tw, xw)
         periodic = nan
