@@ -59,8 +59,6 @@ if TYPE_CHECKING:  # annotations only: pydantic and the studies are imported whe
 
 #: The name of the scene a call with changes runs (``onedof.scenes.custom``, ``fe.scenes.custom``).
 CUSTOM = "custom"
-#: Run-length keys of a 1-DOF scene (``stickslip.schema.RunLengths``).
-RUN_LENGTHS = ("t_end", "output_dt", "transient", "count_window")
 
 
 def _is_project(folder: Path) -> bool:
@@ -419,8 +417,8 @@ def simulate(
     config = config if config is not None else load_project_config(configfiles, base_root)
     output = check_output(output, force=force, config=config)
     project = onedof_project(config)
-    lengths = (t_end, output_dt, transient, count_window)
-    run = {k: v for k, v in zip(RUN_LENGTHS, lengths, strict=True) if v is not None}
+    lengths = dict(t_end=t_end, output_dt=output_dt, transient=transient, count_window=count_window)
+    run = {k: v for k, v in lengths.items() if v is not None}  # the scene's run lengths you set
     own = own_law(law, law_derivative, f"onedof.scenes.{CUSTOM}.law")
     onedof, name = onedof_scenario(
         project.onedof, scene, law=law if own is None else own, run=run, params=params
@@ -440,15 +438,9 @@ def simulate(
         return spec if own is None else replace(spec, law=own)
 
     # the params of the pipeline's job for this run (onedof_subconfig): what its ensemble perturbs
-    job = OnedofJob(
-        onedof=OnedofRuns(
-            baseline=onedof.baseline,
-            defaults=onedof.defaults,
-            readings={reading: onedof.readings[reading]},
-            methods={method: onedof.methods[method]},
-            scenes={name: onedof.scenes[name]},
-        )
-    )
+    chosen = {"readings": reading, "methods": method, "scenes": name}
+    runs = {key: {n: getattr(onedof, key)[n]} for key, n in chosen.items()}
+    job = OnedofJob(onedof=OnedofRuns(baseline=onedof.baseline, defaults=onedof.defaults, **runs))
     try:
         check_run_lengths(*scene_run_lengths(onedof, name, reading))
         spec = spec_of(job.onedof)
