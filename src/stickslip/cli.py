@@ -393,20 +393,10 @@ def cmd_run(args) -> int:
 
     started = time.perf_counter()
     values = {k: getattr(args, k) for k in [*run_options(), "units"] if getattr(args, k) is not None}
+    values |= {k: getattr(args, k) for k in ("reading", "method", "ensemble", "output", "force")}
     law = _law(args.law)
     root, config = _project(args)
-    ds = api.simulate(
-        args.scene,
-        reading=args.reading,
-        method=args.method,
-        law=law,
-        ensemble=args.ensemble,
-        output=args.output,
-        force=args.force,
-        root=root,
-        config=config,
-        **values,
-    )
+    ds = api.simulate(args.scene, law=law, root=root, config=config, **values)
     onedof = api.onedof_project(config).onedof
     reading = args.reading or onedof.baseline.reading
     base, where = baseline_metrics(onedof, reading, root)
@@ -464,20 +454,9 @@ def cmd_fe(args) -> int:
         return step_callback(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
 
     root, _ = _project(args, keys=("output", "plot"))
-    ds = api.simulate_fe(
-        args.scene,
-        speed=args.speed,
-        rpm=args.rpm,
-        reading=args.reading,
-        model=args.model,
-        t_end=args.t_end,
-        ensemble=args.ensemble,
-        progress=progress,
-        output=args.output,
-        force=args.force,
-        configfiles=args.configfile,
-        root=root,
-    )
+    given = ("speed", "rpm", "reading", "model", "t_end", "ensemble", "output", "force")
+    options = {k: getattr(args, k) for k in given}
+    ds = api.simulate_fe(args.scene, progress=progress, configfiles=args.configfile, root=root, **options)
     print(summary_text(ds))
     _wrote(args.output, sys.stdout)
     if args.plot:
