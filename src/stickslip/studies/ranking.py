@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import numpy as np
+import xarray as xr
+
 from ..claims.rows import STATUSES
 
 #: Columns of the ranking table, in order (one count column per status).
@@ -53,3 +56,11 @@ def unreproduced_claims(rows: list[dict], readings: list[str]) -> list[dict]:
             }
         )
     return out
+
+
+def reading_dataset(readings: list[str], long_name: str, variables: dict) -> xr.Dataset:
+    """A table with one row per reading as a dataset: ``variables`` name -> (values, attrs) along
+    ``reading``, the readings' names (``long_name``) an auxiliary coordinate: CF wants dimension coordinates
+    numeric and monotonic."""
+    names = ("reading", np.array(readings, dtype=object), {"long_name": long_name})
+    return xr.Dataset({k: ("reading", *v) for k, v in variables.items()}, coords={"reading_name": names})
