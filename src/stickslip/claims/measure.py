@@ -122,20 +122,12 @@ class Measurement:
     invariance: str = ""
 
 
-def _tolerance_band(claim: ClaimRow, reported: float) -> float:
-    """Half-width of the accepted interval around the reported number (the larger of rel and abs; a value
-    or ratio row always has a tolerance with one of them, stickslip.claims.rows)."""
-    tol = claim.tolerance
-    band = [] if tol.abs is None else [tol.abs]
-    if tol.rel is not None:
-        band.append(tol.rel * abs(reported))
-    return max(band)
-
-
 def decide_value(claim: ClaimRow, measured: float) -> tuple[bool, float]:
-    """(holds, margin) of a value/ratio claim for one measured number."""
-    reported = float(claim.value)
-    band = _tolerance_band(claim, reported)
+    """(holds, margin) of a value/ratio claim for one measured number. The accepted band around the
+    reported number has the half-width of the larger of rel x |value| and abs (a value or ratio row always
+    has one of them, stickslip.claims.rows)."""
+    reported, tol = float(claim.value), claim.tolerance
+    band = max(w for w in (tol.abs, None if tol.rel is None else tol.rel * abs(reported)) if w is not None)
     distance = abs(measured - reported)
     return bool(distance <= band), abs(distance - band)
 

@@ -2,16 +2,8 @@
 
 A row that a typo would silently change (``tolerence`` for ``tolerance`` would make the band 0, a negative
 tolerance turns equal numbers into a deviation, ``value: "1.5 mm"`` fails inside the table job) is an error
-naming its file, claim id and key. What a row may hold depends on its kind:
-
-==========  ======================================================  ==========================
-kind        needs                                                    may not hold
-==========  ======================================================  ==========================
-value       dataset, variable, value, unit, tolerance               lhs, rhs, relation, coord, sign
-ratio       lhs, rhs, value, tolerance                               dataset, relation, coord, sign
-compare     lhs, rhs, relation                                       value, tolerance, coord, sign
-trend       dataset, variable, coord, sign                           lhs, rhs, value, tolerance, relation
-==========  ======================================================  ==========================
+naming its file, claim id and key. What a row may hold depends on its kind: the keys it needs (``NEEDS``)
+and those it may not hold (``MAY_NOT``).
 """
 
 from __future__ import annotations

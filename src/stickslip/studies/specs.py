@@ -305,10 +305,6 @@ def axis_values(axis: MapAxis | DenseRange) -> tuple[float, ...]:
     return tuple(float(v) for v in spaced(axis.start, axis.stop, axis.num))
 
 
-def sweep_axis(axis: MapAxis) -> SweepAxis:
-    return SweepAxis(axis.name, axis_values(axis), axis.units, axis.long_name, dict(axis.linked))
-
-
 @dataclass(frozen=True)
 class DenseMap:
     name: str
@@ -381,7 +377,7 @@ def dense_map(onedof: OnedofRuns, maps: DenseMaps, name: str) -> DenseMap:
         raise ParameterError(f"{key} (scene/reading/method): {exc}") from None
     lengths, _ = merged_run_lengths([(key, cfg)])  # the map's own run lengths, over the scene's
     spec = dataclasses.replace(spec, **{k: float(v) for k, v in lengths.items()})
-    axes = [sweep_axis(a) for a in cfg.axes]
+    axes = [SweepAxis(a.name, axis_values(a), a.units, a.long_name, dict(a.linked)) for a in cfg.axes]
     for i, axis in enumerate(axes):
         check_points(spec.params, axis, (min(axis.values), max(axis.values)), f"{key}.axes[{i}]")
     chunk_size = cfg.chunk_size or maps.chunk_size
