@@ -22,7 +22,6 @@ MARGIN_FACTOR = 3.0
 #: two numbers that agree to 0.1 % (a rest position reached in both runs, 0.75 vs 0.75) are not ordered.
 RESOLUTION = 1e-3
 
-KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
 
 
