@@ -6,6 +6,7 @@ import numpy as np
 import xarray as xr
 
 from ..claims.rows import STATUSES
+from ..claims.verdicts import is_evidence, status_counts
 
 #: Columns of the ranking table, in order (one count column per status).
 COLUMNS = ("reading", *STATUSES, "total", "reproduced_fraction_of_comparable")
@@ -17,8 +18,8 @@ def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
     indistinguishable check is decided neither way and is not comparable to the paper's number."""
     table = []
     for r in readings:  # only rows that could have failed count (stickslip.claims.rows.EVIDENCE_CLASSES)
-        mine = [row for row in rows if row["reading"] == r and row.get("evidence", "evidence") == "evidence"]
-        counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
+        mine = [row for row in rows if row["reading"] == r and is_evidence(row)]
+        counts = status_counts(row["status"] for row in mine)
         comparable = counts["reproduced"] + counts["deviates"]
         table.append(
             {
