@@ -4,10 +4,10 @@ import matplotlib
 
 matplotlib.use("Agg")
 import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
 
 from stickslip.io.netcdf import read_dataset, write_dataset  # noqa: E402
 from stickslip.presentation.plots import critical_speed_figure  # noqa: E402
+from stickslip.studies.ranking import reading_dataset  # noqa: E402
 
 readings = list(snakemake.params.readings)
 data = {r: read_dataset(p) for r, p in zip(readings, snakemake.input)}
@@ -42,28 +42,20 @@ with open(snakemake.output.csv, "w") as fh:
     fh.write("reading,critical_belt_speed_mm_per_s,steady_sliding_stable_from_mm_per_s,failed_runs,verdict\n")
     for r in rows:
         fh.write(f'{r[0]},{r[1]:.4g},{r[2]:.4g},{r[3]},"{r[4]}"\n')
-out = xr.Dataset(
+out = reading_dataset(
+    readings,
+    "reading of the paper",
     {
         "critical_belt_speed": (
-            "reading",
             [r[1] for r in rows],
             {"units": "mm s-1", "long_name": "critical belt speed"},
         ),
         "steady_sliding_stable_from": (
-            "reading",
             [r[2] for r in rows],
             {"units": "mm s-1", "long_name": "steady sliding linearly stable from"},
         ),
-        "failed_runs": (
-            "reading",
-            [r[3] for r in rows],
-            {"units": "1", "long_name": "failed or diverging runs"},
-        ),
-        "verdict": ("reading", np.array([r[4] for r in rows], dtype=object), {"long_name": "verdict"}),
-    },
-    # an auxiliary (non-dimension) coordinate: CF wants dimension coordinates numeric and monotonic
-    coords={
-        "reading_name": ("reading", np.array(readings, dtype=object), {"long_name": "reading of the paper"})
+        "failed_runs": ([r[3] for r in rows], {"units": "1", "long_name": "failed or diverging runs"}),
+        "verdict": (np.array([r[4] for r in rows], dtype=object), {"long_name": "verdict"}),
     },
 )
 write_dataset(

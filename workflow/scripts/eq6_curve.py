@@ -4,23 +4,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-from stickslip.ensemble import EnsembleSpec, ensemble_dataset  # noqa: E402
 from stickslip.io.netcdf import write_dataset  # noqa: E402
 from stickslip.presentation.plots import eq6_figure  # noqa: E402
 from stickslip.schema import OnedofJob  # noqa: E402
 from stickslip.studies.onedof import eq6_from_config  # noqa: E402
-from stickslip.studies.specs import PERTURBED_FIELDS, baseline_spec, from_job_params  # noqa: E402
+from stickslip.studies.specs import baseline_spec, job_dataset  # noqa: E402
 
 params = snakemake.params  # noqa: F821
 onedof = OnedofJob.model_validate(params.config).onedof
-ensemble = EnsembleSpec.from_mapping(params.ensemble).without_blas()  # closed form: no BLAS
-ds = ensemble_dataset(
-    from_job_params(eq6_from_config),
-    params.config,
-    ensemble,
-    run_id=snakemake.output.nc,
-    fields=PERTURBED_FIELDS,
-)
+ds = job_dataset(eq6_from_config, params.config, params.ensemble, snakemake.output.nc)
 write_dataset(
     ds,
     snakemake.output.nc,

@@ -1,13 +1,11 @@
 """Thin wiring: every paper figure's verdicts -> results/claims/figure_verdicts.csv."""
 
-import csv
-import os
-
 import yaml
 
 from stickslip.claims.table import read_table
 from stickslip.claims.verdicts import figure_table
 from stickslip.io.progress import log_to_file
+from stickslip.io.text_files import write_csv_atomic
 from stickslip.studies.ranking import rank_readings
 
 log_to_file(snakemake.log[0], capture_output=True)  # noqa: F821
@@ -26,9 +24,4 @@ rows = figure_table(
     order,
     params.alternative,
 )
-out = snakemake.output[0]  # noqa: F821
-with open(out + ".tmp", "w", newline="") as fh:
-    writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
-os.replace(out + ".tmp", out)
+write_csv_atomic(snakemake.output[0], rows, lineterminator="\r\n")  # noqa: F821

@@ -6,36 +6,24 @@ metrics only), from stickslip.studies.onedof.sweep_dataset; the claimed ones car
 import logging
 from functools import partial
 
-from stickslip.ensemble import EnsembleSpec, ensemble_dataset
-from stickslip.io.netcdf import write_dataset
 from stickslip.io.progress import log_to_file, step_callback
 from stickslip.schema import OnedofJob
 from stickslip.studies.onedof import sweep_from_config
-from stickslip.studies.specs import PERTURBED_FIELDS, from_job_params, sweep_spec
+from stickslip.studies.specs import job_dataset, sweep_spec
 
 log_to_file(snakemake.log[0])  # noqa: F821
 reading, params = snakemake.wildcards.reading, snakemake.params  # noqa: F821
 onedof = OnedofJob.model_validate(params.config).onedof
-ensemble = EnsembleSpec.from_mapping(params.ensemble).without_blas()  # 1-DOF: no BLAS
 for (sweep, dense), path in zip(params.runs, snakemake.output, strict=True):  # noqa: F821
     name = f"{sweep}_dense" if dense else sweep
     spec = sweep_spec(onedof, sweep, reading)
     progress = partial(step_callback, f"sweep {name}", sink=logging.info)
-    ds = ensemble_dataset(
-        from_job_params(
-            partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress)
-        ),
-        params.config,
-        ensemble if path in params.ensemble_outputs else None,
-        run_id=path,
-        fields=PERTURBED_FIELDS,
-    )
-    write_dataset(
+    build = partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress)
+    ds = job_dataset(build, params.config, params.ensemble, path, path in params.ensemble_outputs)
+    spec.base.write(
         ds,
         path,
-        scene=spec.base.scene_attrs() | {"sweep": spec.name, "parameter": spec.parameter},
-        interpretation=spec.base.interpretation(),
-        method={"name": spec.base.method, **spec.base.solver_settings},
-        title=f"{spec.figure} sweep over {spec.parameter} ({ds.attrs['sweep_kind']}), reading {reading}",
+        f"{spec.figure} sweep over {spec.parameter} ({ds.attrs['sweep_kind']}), reading {reading}",
+        scene={"sweep": spec.name, "parameter": spec.parameter},
     )
     logging.info("%s: %d points, %d failed", path, ds.sizes[spec.parameter], ds.attrs["failed_runs"])

@@ -40,8 +40,9 @@ def flipped_decisions(claims: list[Claim], readings: list[str], read: Callable) 
     """Claims (with reading) whose decision flips at the ensemble minimum or maximum; ``read(path)`` opens a
     dataset (cached by the caller or not: each path is read once per pass)."""
     cached = functools.cache(read)
+    first = functools.partial(np.take, indices=0)  # the base run (member 0): the claims table's own numbers
     base = {
-        (r.claim, r.reading): r.status for r in evaluate_all(claims, readings, moved_opener(cached, _first))
+        (r.claim, r.reading): r.status for r in evaluate_all(claims, readings, moved_opener(cached, first))
     }
     flipped = []
     for reduce in (np.nanmin, np.nanmax):
@@ -52,8 +53,3 @@ def flipped_decisions(claims: list[Claim], readings: list[str], read: Callable) 
                     f"{r.claim} [{r.reading}] {before} -> {r.status} at the ensemble {reduce.__name__}"
                 )
     return flipped
-
-
-def _first(values, axis=0):
-    """The base run's values (member 0): the claims table's own numbers."""
-    return np.take(values, 0, axis=axis)

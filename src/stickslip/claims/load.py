@@ -148,8 +148,4 @@ def readings_of(claim: Claim, readings: list[str]) -> list[str]:
 
 
 def required_datasets(claims: list[Claim], readings: list[str]) -> list[str]:
-    out = set()
-    for c in claims:
-        for r in readings_of(c, readings):
-            out.update(p.format(reading=r) for p in c.dataset_paths())
-    return sorted(out)
+    return sorted({path for *_, path in claimed_paths(claims, readings)})

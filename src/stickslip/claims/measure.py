@@ -22,7 +22,6 @@ MARGIN_FACTOR = 3.0
 #: two numbers that agree to 0.1 % (a rest position reached in both runs, 0.75 vs 0.75) are not ordered.
 RESOLUTION = 1e-3
 
-KINDS = ("value", "ratio", "compare", "trend")
 RELATIONS = {">": operator.gt, "<": operator.lt, ">=": operator.ge, "<=": operator.le}
 
 
@@ -37,14 +36,13 @@ def relative_change(slope: float, x: np.ndarray, y: np.ndarray) -> float:
     return slope * float(np.ptp(x)) / scale if scale > 0 else (0.0 if slope == 0 else np.sign(slope) * np.inf)
 
 
-def withheld_values(ds, variable: str) -> tuple[float, float] | None:
-    """(value at dt, value at dt/2) of a metric the step-halving check withheld (NaN in the dataset, both
-    steps' values kept beside it: stickslip.fe.step_halving); None when nothing was withheld."""
-    names = (variable, f"{variable}_full_step", f"{variable}_half_step")
+def withheld_steps(ds, variable: str) -> tuple[np.ndarray, np.ndarray] | None:
+    """(values at dt, values at dt/2) kept beside a metric the step-halving check withheld (NaN in the
+    dataset: stickslip.fe.step_halving); None when the dataset keeps none."""
+    names = (f"{variable}_full_step", f"{variable}_half_step")
     if any(name not in ds for name in names):
         return None
-    value, full, half = (float(np.asarray(ds[name].values, dtype=float).reshape(-1)[0]) for name in names)
-    return None if np.isfinite(value) else (full, half)
+    return tuple(np.asarray(ds[name].values, dtype=float).reshape(-1) for name in names)
 
 
 def _member_values(
@@ -65,14 +63,14 @@ def _member_values(
     ds = open_dataset(ref.dataset.format(reading=reading))
     if ref.variable not in ds:
         return np.array([np.nan])
-    withheld = withheld_values(ds, ref.variable)
-    if withheld is not None:
+    base = float(np.asarray(ds[ref.variable].values).reshape(-1)[0])
+    steps = None if np.isfinite(base) else withheld_steps(ds, ref.variable)
+    if steps is not None:
+        full, half = (float(values[0]) for values in steps)
         if notes is not None:
-            full, half = withheld
             notes.append(f"{ref.variable} moves under step halving ({full:.3g} at dt, {half:.3g} at dt/2)")
         if side_only:
-            return np.array(withheld)
-    base = float(np.asarray(ds[ref.variable].values).reshape(-1)[0])
+            return np.array([full, half])
     members = ds.get(ref.variable + SUFFIX)
     if members is None:
         return np.array([base])
@@ -123,20 +121,12 @@ class Measurement:
     invariance: str = ""
 
 
-def _tolerance_band(claim: ClaimRow, reported: float) -> float:
-    """Half-width of the accepted interval around the reported number (the larger of rel and abs; a value
-    or ratio row always has a tolerance with one of them, stickslip.claims.rows)."""
-    tol = claim.tolerance
-    band = [] if tol.abs is None else [tol.abs]
-    if tol.rel is not None:
-        band.append(tol.rel * abs(reported))
-    return max(band)
-
-
 def decide_value(claim: ClaimRow, measured: float) -> tuple[bool, float]:
-    """(holds, margin) of a value/ratio claim for one measured number."""
-    reported = float(claim.value)
-    band = _tolerance_band(claim, reported)
+    """(holds, margin) of a value/ratio claim for one measured number. The accepted band around the
+    reported number has the half-width of the larger of rel x |value| and abs (a value or ratio row always
+    has one of them, stickslip.claims.rows)."""
+    reported, tol = float(claim.value), claim.tolerance
+    band = max(w for w in (tol.abs, None if tol.rel is None else tol.rel * abs(reported)) if w is not None)
     distance = abs(measured - reported)
     return bool(distance <= band), abs(distance - band)
 
@@ -197,14 +187,6 @@ def _equal_within_noise(m: Measurement) -> bool:
     return m.margin <= max(noise, RESOLUTION * m.scale)
 
 
-def _withheld_series(ds, variable: str, y: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
-    """(series at dt, series at dt/2) of a series the step-halving check withheld (all NaN, both kept)."""
-    full, half = f"{variable}_full_step", f"{variable}_half_step"
-    if np.any(np.isfinite(y)) or full not in ds or half not in ds:
-        return None
-    return tuple(np.asarray(ds[name].values, dtype=float).reshape(-1) for name in (full, half))
-
-
 def _trend_change(claim: ClaimRow, x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
     """(least-squares slope, fitted change relative to the mean) of y along x; NaN when not measurable."""
     if claim.coord_scale == "log":  # decade sweeps: the trend per decade
@@ -239,7 +221,7 @@ def measure_trend(claim: Claim, reading: str, open_dataset: Callable) -> Measure
         return out
     x = np.asarray(ds[claim.coord].values, dtype=float).reshape(-1)
     y = np.asarray(ds[claim.variable].values, dtype=float).reshape(-1)
-    steps = _withheld_series(ds, claim.variable, y)
+    steps = None if np.any(np.isfinite(y)) else withheld_steps(ds, claim.variable)
     if steps is not None:  # withheld for moving under step halving: decided on both steps' trends
         y = steps[0]
     out.measured, change = _trend_change(claim, x, y)

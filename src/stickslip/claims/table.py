@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..io.text_files import write_csv_atomic, write_text_atomic
 from .evaluate import ClaimResult
-from .rows import STATUSES
+from .verdicts import status_counts
 
 FIELDS = [f for f in ClaimResult.__dataclass_fields__]
 
@@ -138,7 +138,7 @@ def main(argv=None) -> int:
             f"{r['status']} ({r['reason']})"
         )
     bad = bad + unshown
-    counts = {s: sum(r["status"] == s for r in rows) for s in STATUSES}
+    counts = status_counts(r["status"] for r in rows)
     print(
         f"{len(rows)} claim checks: "
         + ", ".join(f"{v} {k}" for k, v in counts.items())

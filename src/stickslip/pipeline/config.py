@@ -181,41 +181,38 @@ def fe_layer_key(fe: Fe, scene: str, reading: str | None, dotted: str) -> str:
     return f"fe.scenes.{scene}.{dotted}"
 
 
-def check_fe_lengths(
-    mapping: dict, key: str, reading: str | None, allow_expensive: bool = False, key_of=None
-) -> None:
-    """A merged FE scene's windows fit inside its run, it stores at most ``MAX_SAMPLES_PER_RUN`` samples
-    (like a 1-DOF scene), and its estimated cost is within the guard: the explicit step is at most the time
-    an axial wave needs to cross one element (the cheapest case), so elements x t_end / step is a lower
-    bound of the work. ``key_of(dotted)`` names the config key a value came from."""
+def check_fe_lengths(fe: Fe, scene: str, reading: str, allow_expensive: bool = False) -> None:
+    """A scene merged under a reading: its windows fit inside its run, it stores at most
+    ``MAX_SAMPLES_PER_RUN`` samples (like a 1-DOF scene), and its estimated cost is within the guard: the
+    explicit step is at most the time an axial wave needs to cross one element (the cheapest case), so
+    elements x t_end / step is a lower bound of the work. An error names the key a value came from."""
+    from ..fe.params import SolverParams
     from ..schema import MAX_SAMPLES_PER_RUN
+    from ..studies.fe_config import scene_mapping
 
+    mapping = scene_mapping(fe, scene, reading)
     solver, output, beam = mapping.get("solver", {}), mapping.get("output", {}), mapping.get("beam", {})
-    where = f"{key} (FE reading {reading})" if reading else key
-    key_of = key_of or (lambda dotted: f"{where}.{dotted}")
+    where = f"fe.scenes.{scene} (FE reading {reading})"
     t_end = solver.get("t_end")
     if t_end is None:
         return
-    checks = [
-        ("solver.output_dt", solver.get("output_dt"), "<="),
-        ("output.bin_width", output.get("bin_width"), "<="),
-    ]
-    checks += [(f"output.windows[{i}]", w[1], "<=") for i, w in enumerate(output.get("windows") or [])]
-    for name, value, _ in checks:
+    checks = [("solver.output_dt", solver.get("output_dt")), ("output.bin_width", output.get("bin_width"))]
+    checks += [(f"output.windows[{i}]", w[1]) for i, w in enumerate(output.get("windows") or [])]
+    for name, value in checks:
         if value is not None and value > t_end:
-            raise ConfigError(f"{key_of(name)}: {value!r} does not fit in solver.t_end = {t_end!r} ({where})")
+            key = fe_layer_key(fe, scene, reading, name)
+            raise ConfigError(f"{key}: {value!r} does not fit in solver.t_end = {t_end!r} ({where})")
     output_dt = solver.get("output_dt")
     if output_dt is not None and t_end / output_dt + 1 > MAX_SAMPLES_PER_RUN:
         raise ConfigError(
-            f"{key_of('solver.output_dt')}: {output_dt!r} stores {t_end / output_dt + 1:.3g} samples over "
-            f"solver.t_end = {t_end!r} ({where}), more than the limit {MAX_SAMPLES_PER_RUN:.3g} per run"
+            f"{fe_layer_key(fe, scene, reading, 'solver.output_dt')}: {output_dt!r} stores "
+            f"{t_end / output_dt + 1:.3g} samples over solver.t_end = {t_end!r} ({where}), more than the "
+            f"limit {MAX_SAMPLES_PER_RUN:.3g} per run"
         )
     needed = ("n_elements", "length", "youngs_modulus_gpa", "density_kg_m3")
     if allow_expensive or any(beam.get(k) is None for k in needed):
         return
     wave_speed = (beam["youngs_modulus_gpa"] * 1e9 / beam["density_kg_m3"]) ** 0.5 * 1e3  # mm/s
-    from ..fe.params import SolverParams
-
     factor = SolverParams.from_mapping(solver).safety_factor  # the scene's step factor, its default included
     step = factor * beam["length"] / beam["n_elements"] / wave_speed
     cost = beam["n_elements"] * t_end / step
@@ -235,13 +232,7 @@ def check_fe_config(fe: Fe, producible: list[str], allow_expensive: bool = False
 
     for name in fe.scenes:
         for reading in fe.readings:
-            check_fe_lengths(
-                scene_mapping(fe, name, reading),
-                f"fe.scenes.{name}",
-                reading,
-                allow_expensive,
-                key_of=lambda dotted, n=name, r=reading: fe_layer_key(fe, n, r, dotted),
-            )
+            check_fe_lengths(fe, name, reading, allow_expensive)
         mapping = scene_mapping(fe, name)
         try:
             SceneParams.from_mapping(mapping)

@@ -257,16 +257,13 @@ class Onedof(OnedofRuns):
             readings += [(f"onedof.figures.{name}.readings", r) for r in fig.readings]
             methods += [(f"onedof.figures.{name}.methods", m) for m in fig.methods]
         base = self.baseline
-        scenes.append(("onedof.baseline.scene", base.scene))
-        readings.append(("onedof.baseline.reading", base.reading))
-        methods.append(("onedof.baseline.method", base.method))
+        for key, run in (("onedof.baseline", base), ("onedof.friction_table", self.friction_table)):
+            scenes.append((f"{key}.scene", run.scene))
+            readings.append((f"{key}.reading", run.reading))
+            methods.append((f"{key}.method", run.method))
         for name, sweep in self.sweeps.items():
             scenes.append((f"onedof.sweeps.{name}.scene", sweep.scene or base.scene))
             methods.append((f"onedof.sweeps.{name}.method", sweep.method or base.method))
-        table = self.friction_table
-        scenes.append(("onedof.friction_table.scene", table.scene))
-        readings.append(("onedof.friction_table.reading", table.reading))
-        methods.append(("onedof.friction_table.method", table.method))
         if self.critical_speed is not None:
             readings += [("onedof.critical_speed.readings", r) for r in self.critical_speed.readings]
         for name, fig in self.sweep_figures.items():

@@ -31,7 +31,13 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     ds = trajectory_dataset(traj, metrics)
     ds["slip_fraction"] = ((), 1.0 - float(ds.stick_fraction), metric_attrs("slip_fraction"))
     outcome = outcome_name(metrics["outcome"].value)
-    ds["outcome"] = ((), np.int8(metrics["outcome"].value), outcome_attrs(spec.model, outcome, ds, traj))
+    velocity = float(ds.max_velocity) if "max_velocity" in ds else float("nan")
+    why = mechanism(spec.model, outcome, velocity, traj.stats.message)  # the sentence behind the outcome
+    ds["outcome"] = (
+        (),
+        np.int8(metrics["outcome"].value),
+        {**metric_attrs("outcome"), **FLAG_ATTRS, "mechanism": why},
+    )
     extra = dict.fromkeys(EXTRA_METRICS, float("nan"))
     if traj.ok:
         friction, normal = spec.friction, spec.params.normal_force
@@ -41,24 +47,14 @@ def scene_run_dataset(spec: RunSpec) -> xr.Dataset:
     ds.attrs["solver_run_settings"] = dict(traj.settings)
     stats = traj.stats
     ds.attrs["solver_message"] = f"{stats.status}, {stats.steps} segments/steps: {stats.message}"
-    ds.attrs.update(run_status(outcome, ds["outcome"].attrs["mechanism"]))
+    # the run's status as scipy's solve_ivp states one: success (a cycle, rest or no stick: the model
+    # answered), diverged (also the model's answer, the motion grows without bound) or failed (numerical:
+    # nothing computed); success is 1 unless numerically failed
+    status = outcome if outcome in ("diverged", "failed") else "success"
+    ds.attrs.update(
+        status=status, success=int(status != "failed"), message=f"{outcome.replace('_', ' ')}: {why}"
+    )
     return ds
-
-
-#: A run's status as scipy's solve_ivp states one: success (a cycle, rest or no stick: the model answered),
-#: diverged (also the model's answer, the motion grows without bound) or failed (numerical: nothing computed).
-STATUS_OF_OUTCOME = {"diverged": "diverged", "failed": "failed"}
-
-
-def run_status(outcome: str, mechanism_text: str) -> dict:
-    """``status``, ``success`` (1 unless numerically failed) and ``message`` (the outcome and its mechanism)
-    attributes of a run's dataset."""
-    status = STATUS_OF_OUTCOME.get(outcome, "success")
-    return {
-        "status": status,
-        "success": int(status != "failed"),
-        "message": f"{outcome.replace('_', ' ')}: {mechanism_text}",
-    }
 
 
 #: The last few solves, by everything a solve reads (the measurement window is not among it): the ensemble's
@@ -96,13 +92,6 @@ class _ReusedSolve:
 
 #: Metrics beyond the limit-cycle table (stickslip.analysis.extra_metrics), NaN where a run defines none.
 EXTRA_METRICS = tuple(METRICS)[tuple(METRICS).index("early_amplitude") :]
-
-
-def outcome_attrs(model, outcome: str, ds, traj) -> dict:
-    """CF flag attributes of a run's ``outcome`` and the one-sentence ``mechanism`` behind it."""
-    velocity = float(ds.max_velocity) if "max_velocity" in ds else float("nan")
-    why = mechanism(model, outcome, velocity, traj.stats.message)
-    return {**metric_attrs("outcome"), **FLAG_ATTRS, "mechanism": why}
 
 
 SWEEP_METRICS = (

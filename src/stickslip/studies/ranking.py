@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import numpy as np
+import xarray as xr
+
 from ..claims.rows import STATUSES
+from ..claims.verdicts import is_evidence, status_counts
 
 #: Columns of the ranking table, in order (one count column per status).
 COLUMNS = ("reading", *STATUSES, "total", "reproduced_fraction_of_comparable")
@@ -14,8 +18,8 @@ def rank_readings(rows: list[dict], readings: list[str]) -> list[dict]:
     indistinguishable check is decided neither way and is not comparable to the paper's number."""
     table = []
     for r in readings:  # only rows that could have failed count (stickslip.claims.rows.EVIDENCE_CLASSES)
-        mine = [row for row in rows if row["reading"] == r and row.get("evidence", "evidence") == "evidence"]
-        counts = {s: sum(row["status"] == s for row in mine) for s in STATUSES}
+        mine = [row for row in rows if row["reading"] == r and is_evidence(row)]
+        counts = status_counts(row["status"] for row in mine)
         comparable = counts["reproduced"] + counts["deviates"]
         table.append(
             {
@@ -53,3 +57,11 @@ def unreproduced_claims(rows: list[dict], readings: list[str]) -> list[dict]:
             }
         )
     return out
+
+
+def reading_dataset(readings: list[str], long_name: str, variables: dict) -> xr.Dataset:
+    """A table with one row per reading as a dataset: ``variables`` name -> (values, attrs) along
+    ``reading``, the readings' names (``long_name``) an auxiliary coordinate: CF wants dimension coordinates
+    numeric and monotonic."""
+    names = ("reading", np.array(readings, dtype=object), {"long_name": long_name})
+    return xr.Dataset({k: ("reading", *v) for k, v in variables.items()}, coords={"reading_name": names})

@@ -147,11 +147,36 @@ class RunSpec:
             out["friction_law"] = repr(self.law)
         return out
 
+    def write(self, ds, path: str, title: str, scene: Mapping = {}, method: Mapping = {}) -> None:
+        """Write a dataset of this run, its scene, reading and method (with ``scene``/``method`` added) as
+        provenance."""
+        from ..io.netcdf import write_dataset
+
+        write_dataset(
+            ds,
+            path,
+            scene=self.scene_attrs() | dict(scene),
+            interpretation=self.interpretation(),
+            method={"name": self.method, **self.solver_settings, **method},
+            title=title,
+        )
+
 
 def from_job_params(build: Callable[[OnedofRuns], T]) -> Callable[[Mapping], T]:
     """``build`` of the typed section as a function of a job's params mapping (``OnedofJob``): the mapping
     the perturbation ensemble perturbs, typed once per member."""
     return lambda params: build(OnedofJob.model_validate(params).onedof)
+
+
+def job_dataset(
+    build: Callable[[OnedofRuns], T], config: Mapping, ensemble: Mapping | None, path: str, claimed=True
+):
+    """``build`` of a 1-DOF job's params mapping ``config``, with the perturbation ensemble of the config's
+    ``ensemble`` section when the dataset ``path`` is ``claimed`` (a 1-DOF run sets no BLAS threads)."""
+    from ..ensemble import EnsembleSpec, ensemble_dataset
+
+    members = EnsembleSpec.from_mapping(ensemble).without_blas() if claimed else None
+    return ensemble_dataset(from_job_params(build), config, members, run_id=path, fields=PERTURBED_FIELDS)
 
 
 def run_spec(onedof: OnedofRuns, scene: str, reading: str, method: str) -> RunSpec:
@@ -280,10 +305,6 @@ def axis_values(axis: MapAxis | DenseRange) -> tuple[float, ...]:
     return tuple(float(v) for v in spaced(axis.start, axis.stop, axis.num))
 
 
-def sweep_axis(axis: MapAxis) -> SweepAxis:
-    return SweepAxis(axis.name, axis_values(axis), axis.units, axis.long_name, dict(axis.linked))
-
-
 @dataclass(frozen=True)
 class DenseMap:
     name: str
@@ -356,7 +377,7 @@ def dense_map(onedof: OnedofRuns, maps: DenseMaps, name: str) -> DenseMap:
         raise ParameterError(f"{key} (scene/reading/method): {exc}") from None
     lengths, _ = merged_run_lengths([(key, cfg)])  # the map's own run lengths, over the scene's
     spec = dataclasses.replace(spec, **{k: float(v) for k, v in lengths.items()})
-    axes = [sweep_axis(a) for a in cfg.axes]
+    axes = [SweepAxis(a.name, axis_values(a), a.units, a.long_name, dict(a.linked)) for a in cfg.axes]
     for i, axis in enumerate(axes):
         check_points(spec.params, axis, (min(axis.values), max(axis.values)), f"{key}.axes[{i}]")
     chunk_size = cfg.chunk_size or maps.chunk_size
