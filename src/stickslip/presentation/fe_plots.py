@@ -77,6 +77,11 @@ def scaled_ylabel(ax, text: str, unit: str, fontsize=8, exponent: int | None = N
     ax.set_ylabel(f"{text} [{unit}]" if e == 0 else f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
 
 
+def axes_note(ax, x, y, text, **style):
+    """A note at the axes fraction (``x``, ``y``), 8 pt unless ``style`` says otherwise."""
+    return ax.text(x, y, text, transform=ax.transAxes, **{"fontsize": 8, **style})
+
+
 def paper_line(ax, y, text, ls="--", lw=1.2, x=0.99, bbox=NOTE_BOX):
     """What the paper states about a level: a horizontal line in the paper's colour, labelled above it at
     the right edge (``x`` 0.99) or the left one."""
@@ -124,10 +129,10 @@ def state_legend_handles(alpha=0.18):
     return [Patch(color=c, alpha=alpha, label=name) for name, c in STATE_COLOURS.values()]
 
 
-def _window(ds, w):
+def detail_window(ds, w):
+    """(start, end, mask of the full-resolution samples) of the dataset's detail window ``w``."""
     t0, t1 = ds.detail_windows.values[w]
-    m = (ds.time.values >= t0) & (ds.time.values <= t1)
-    return m
+    return t0, t1, (ds.time.values >= t0) & (ds.time.values <= t1)
 
 
 def _between(ds, t0, t1):
@@ -151,15 +156,22 @@ def _spectrum(t, y):
     return np.fft.rfftfreq(y.size, dt), spec
 
 
-def _running_envelope(ax, ds, var, style, t_max=None):
-    """Half peak-to-peak per window (the running envelope a growth claim is judged on), as a staircase."""
+def envelope_windows(ds, var):
+    """(window times, ``<var>_envelope``, window width) of the running envelope a growth claim is judged on
+    (half peak-to-peak per window); None when the dataset has none."""
     key = f"{var}_envelope"
-    if key not in ds or "window_time" not in ds.coords:
+    if key not in ds or "window_time" not in ds.coords or ds.window_time.size == 0:
+        return None
+    t = ds.window_time.values
+    return t, ds[key], float(np.median(np.diff(t))) if t.size > 1 else 2 * float(t[0])
+
+
+def _running_envelope(ax, ds, var, style, t_max=None):
+    """The running envelope (``envelope_windows``) as a staircase."""
+    if (found := envelope_windows(ds, var)) is None:
         return
-    t, env = ds.window_time.values, ds[key].values
-    if t.size == 0:
-        return
-    w = float(np.median(np.diff(t))) if t.size > 1 else 2 * float(t[0])
+    t, env, w = found
+    env = env.values
     keep = t - w / 2 < (np.inf if t_max is None else t_max - 1e-12)
     edges = np.concatenate([t[keep] - w / 2, [t[keep][-1] + w / 2]])
     ax.stairs(
@@ -239,7 +251,7 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     # spectra of the first window: both models sample by sample over the same 5 ms
     ax_f = fig.add_subplot(gs[5, 0])
     for name, ds in models.items():
-        m = _window(ds, 0)
+        m = detail_window(ds, 0)[2]
         if m.sum() > 8:
             f, a = _spectrum(ds.time.values[m], ds.horizontal_displacement.values[m])
             ax_f.loglog(f[1:], a[1:], lw=0.8, label=name, **MODEL_STYLE[name])
@@ -326,10 +338,7 @@ def fe_readings_figure(datasets: dict, scenes: list, readings: list, reported: d
         if reported and q in reported:
             ax.axhline(reported[q] * scale, color="C3", ls="--", lw=1.2, label="paper")
         ax.set_ylabel(label, fontsize=8)
-        if yscale == "symlog":
-            ax.set_yscale("symlog", linthresh=1e-3)
-        else:
-            ax.set_yscale(yscale)
+        ax.set_yscale(yscale, **({"linthresh": 1e-3} if yscale == "symlog" else {}))
         ax.grid(axis="y", alpha=0.3)
     axes[0].legend(fontsize=7, ncol=3)
     axes[-1].set_xticks(x, [s.replace("_", "\n", 1) for s in scenes], fontsize=7)
