@@ -102,29 +102,15 @@ STATUS_COLOUR = {
 
 def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
     """Dotted reference line for a number the paper reports."""
+    font = dict(fontsize=8, color=color)
     if y is not None:
         ax.axhline(y, color=color, ls=":", lw=1)
-        ax.annotate(
-            label or f"paper: {y:g}",
-            (1.0, y),
-            xycoords=("axes fraction", "data"),
-            ha="right",
-            va="bottom",
-            fontsize=8,
-            color=color,
-        )
+        where = dict(xycoords=("axes fraction", "data"), ha="right", va="bottom")
+        ax.annotate(label or f"paper: {y:g}", (1.0, y), **where, **font)
     if x is not None:
         ax.axvline(x, color=color, ls=":", lw=1)
-        ax.annotate(
-            label or f"paper: {x:g}",
-            (x, 1.0),
-            xycoords=("data", "axes fraction"),
-            ha="left",
-            va="top",
-            fontsize=8,
-            color=color,
-            rotation=90,
-        )
+        where = dict(xycoords=("data", "axes fraction"), ha="left", va="top", rotation=90)
+        ax.annotate(label or f"paper: {x:g}", (x, 1.0), **where, **font)
 
 
 def eq6_figure(ds):
@@ -258,13 +244,9 @@ def dense_map_figure(ds, names, title: str):
             # sign for |v_r| > 1/sigma) would otherwise flatten the map; arrows on the colour bar mark them.
             values = data.compressed()
             vmin, vmax = np.percentile(values, [1, 99]) if values.size else (0.0, 1.0)
-            below, above = (
-                bool(values.size and values.min() < vmin),
-                bool(values.size and values.max() > vmax),
-            )
-            extend = {(False, False): "neither", (True, False): "min", (False, True): "max"}.get(
-                (below, above), "both"
-            )
+            below = bool(values.size and values.min() < vmin)
+            above = bool(values.size and values.max() > vmax)
+            extend = "both" if below and above else "min" if below else "max" if above else "neither"
             norm = matplotlib.colors.Normalize(vmin, vmax)
             if values.size and values.min() > 0 and values.max() > 1e3 * values.min():  # spans decades
                 norm, extend = matplotlib.colors.LogNorm(values.min(), values.max()), "neither"
@@ -442,13 +424,11 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
             ax_a.set_title(reading, fontsize=9)
             ax_a.set_xlabel("x [mm]", fontsize=8)
             ax_a.set_ylabel("dx/dt [mm/s]", fontsize=8)
+        targets = {"timeseries": {"x": ax_a, "v": ax_b}, "velocity": {"v": ax_a}, "phase": {"phase": ax_a}}
         for m in marks:
-            target = {
-                "x": ax_a if kind == "timeseries" else None,
-                "v": ax_b if kind == "timeseries" else (ax_a if kind == "velocity" else None),
-                "phase": ax_a if kind == "phase" else None,
-            }[m.get("on", "x")]
-            if target is not None:
+            if m.get("on", "x") not in ("x", "v", "phase"):
+                raise KeyError(m["on"])
+            if (target := targets[kind].get(m.get("on", "x"))) is not None:
                 mark_reported(target, **{k: v for k, v in m.items() if k != "on"})
     if kind == "timeseries":
         axes[-1, 0].set_xlabel("time [s]")
