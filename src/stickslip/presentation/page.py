@@ -13,7 +13,6 @@ names the line of its definition (``workflow/rules/fe.smk, line 253``).
 
 from __future__ import annotations
 
-import csv
 import functools
 import html
 import math
@@ -91,11 +90,8 @@ def not_comparable_causes(rows: list[dict]) -> dict[str, int]:
 
 
 def read_csv(path) -> list[dict]:
-    path = Path(path)
-    if not path.is_file():
-        return []
-    with path.open(newline="") as fh:
-        return list(csv.DictReader(fh))
+    """A table's rows; none when the run has not written it."""
+    return read_table(path) if Path(path).is_file() else []
 
 
 def source_modules(script: Path, src: Path) -> list[tuple[Path, list[tuple[str, int]]]]:
@@ -147,6 +143,12 @@ def fmt(value) -> str:
     if x != x:
         return "" if value in ("", None, "nan", "NaN") else str(value)
     return f"{x:.4g}"
+
+
+def percent(value) -> str:
+    """A relative deviation for display: ``+12 %``, blank for NaN."""
+    x = as_number(value)
+    return f"{100 * x:+.0f} %" if x == x else ""
 
 
 def thumbnail(png: Path, out: Path, width: int = THUMB_WIDTH) -> Path:
@@ -472,7 +474,7 @@ class PageBuilder:
             **{column: row.get(column, "") for column in SPEED_COLUMNS.values()},
         }
 
-    def headline(self, rows: list[dict], fe: bool) -> list[dict]:
+    def headline(self, rows: list[dict]) -> list[dict]:
         """The paper's numbers for the figure beside this run's (primary reading), amplitude, frequency and
         stick/slip first: every value claim that is evidence, with its deviation in %."""
 
@@ -483,23 +485,8 @@ class PageBuilder:
                 r["claim"],
             )
 
-        out = []
-        for r in sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank):
-            dev = as_number(r["deviation"])
-            claim = self.claim.get(r["claim"])
-            out.append(
-                {
-                    "claim": r["claim"],
-                    "quantity": r["quantity"],
-                    "speed": DISC_SPEEDS.get(speed_of(claim), "") if fe else "",
-                    "reported": fmt(r["reported"]),
-                    "measured": fmt(r["measured"]),
-                    "unit": r["unit"],
-                    "deviation": f"{100 * dev:+.0f} %" if dev == dev else "",
-                    "status": r["status"],
-                }
-            )
-        return out
+        values = sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank)
+        return [{**self.claim_row(r), "deviation": percent(r["deviation"])} for r in values]
 
     def card(self, entry: dict) -> dict:
         number = entry.get("number")
@@ -547,14 +534,8 @@ class PageBuilder:
             for p in self.dataset_paths(r["claim"]):
                 data.append(p.format(reading=primary) if "{reading}" in p else p)
         datasets = [self.dataset_link(p) for p in dict.fromkeys(data)]
-        notebook = None
-        if number is not None:
-            found = notebook_link(number, self.notebooks)
-            if found:
-                notebook = {
-                    "name": found[0],
-                    "href": f"{self.href(paths.notebook(found[0]))}#{found[1]}",
-                }
+        found = notebook_link(number, self.notebooks)  # none for a text card (no number)
+        notebook = found and {"name": found[0], "href": f"{self.href(paths.notebook(found[0]))}#{found[1]}"}
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
@@ -573,7 +554,7 @@ class PageBuilder:
             "speeds": speeds,
             "best_drawn": best_drawn,
             "n_rows": len(evidence),
-            "headline": self.headline(evidence, fe),
+            "headline": self.headline(evidence),
             "claims": [self.claim_row(r) for r in evidence],
             "apart": [self.claim_row(r) for r in apart],
             "per_reading": self.per_reading(everything, fe) if everything else [],
