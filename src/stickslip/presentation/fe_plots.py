@@ -140,13 +140,19 @@ def _between(ds, t0, t1):
     return (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
 
 
-def _bins_from(ax, ds, var, t0, t_max, label, model):
-    """A model's per-bin min-max band of ``var`` from ``t0`` on, where it kept no samples to draw."""
-    t, lo, hi = band_columns(ds, var, t_max=t_max)
-    keep = t >= t0
-    ax.fill_between(
-        t[keep], lo[keep], hi[keep], alpha=0.35, lw=0, step="mid", label=label, **MODEL_STYLE[model]
-    )
+def _samples_or_bins(ax, ds, model, var, t0, t1, t_max, lw, label, binned_label):
+    """A model's full-resolution samples of ``var`` in [t0, t1] where it kept them, else its per-bin min-max
+    band from ``t0`` on."""
+    m = _between(ds, t0, t1)
+    if m.sum() > 1:
+        ax.plot(ds.time.values[m], ds[var].values[m], lw=lw, label=label, **MODEL_STYLE[model])
+    elif f"{var}_min" in ds:
+        t, lo, hi = band_columns(ds, var, t_max=t_max)
+        keep = t >= t0
+        style = MODEL_STYLE[model]
+        ax.fill_between(
+            t[keep], lo[keep], hi[keep], alpha=0.35, lw=0, step="mid", label=binned_label, **style
+        )
 
 
 def _spectrum(t, y):
@@ -261,21 +267,11 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_f.legend(fontsize=7)
     # the last 5 ms of the comparison window: full-resolution samples where a model kept them, else its bins
     w_end = (t_cmp - 0.005, t_cmp)
-    last = {name: _between(ds, *w_end) for name, ds in models.items()}
     ax_n = fig.add_subplot(gs[5, 1])
     for name, ds in models.items():
-        if last[name].sum() > 1:
-            ax_n.plot(
-                ds.time.values[last[name]],
-                ds.normal_force.values[last[name]],
-                lw=0.7,
-                label=f"{name} normal",
-                **MODEL_STYLE[name],
-            )
-        elif "normal_force_min" in ds:
-            _bins_from(ax_n, ds, "normal_force", w_end[0], t_max, f"{name} normal (min-max per bin)", name)
-    if last["beam"].sum() > 1:
-        m = last["beam"]
+        binned = f"{name} normal (min-max per bin)"
+        _samples_or_bins(ax_n, ds, name, "normal_force", *w_end, t_max, 0.7, f"{name} normal", binned)
+    if (m := _between(beam, *w_end)).sum() > 1:
         ax_n.plot(
             beam.time.values[m], beam.friction_force.values[m], lw=0.7, color="C1", label="beam friction"
         )
@@ -290,18 +286,8 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
         ax = fig.add_subplot(gs[6, col])
         windows.append(ax)
         for name, ds in models.items():
-            m = _between(ds, t0, t1)
-            if m.sum() > 1:
-                ax.plot(
-                    ds.time.values[m],
-                    ds.horizontal_displacement.values[m],
-                    lw=0.8,
-                    label=name,
-                    **MODEL_STYLE[name],
-                )
-            else:
-                label = f"{name} (min-max per bin: no samples kept here)"
-                _bins_from(ax, ds, "horizontal_displacement", t0, t_max, label, name)
+            binned = f"{name} (min-max per bin: no samples kept here)"
+            _samples_or_bins(ax, ds, name, "horizontal_displacement", t0, t1, t_max, 0.8, name, binned)
         ax.set_xlim(t0, t1)
         m = _between(ref, t0, t1)
         shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
