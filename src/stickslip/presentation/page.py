@@ -317,19 +317,6 @@ class PageBuilder:
         """The link to a file under the results folder that this page writes (it may not exist yet)."""
         return Path(os.path.relpath(path, self.results)).as_posix()
 
-    def preview_of(self, path) -> Path | None:
-        """Where the ``stickslip show`` page of dataset ``path`` (relative to the working directory) goes,
-        registered for ``context`` to write; None when the file does not exist or lies outside results/."""
-        full = self.workdir / path
-        if not full.is_file():
-            return None
-        rel = Path(os.path.relpath(full, self.results))
-        if rel.parts[0] == "..":
-            return None
-        out = self.previews / f"{rel.as_posix()}.html"
-        self.text_jobs.setdefault(full, out)
-        return out
-
     def source_link(self, path, line: int | None = None, name: str = "") -> dict:
         """A link to the repository file ``path``; ``line``, where known, is the line of the definition the
         link is about (stated in its text: a browser opens a plain file at its top). ``href`` None when the
@@ -339,11 +326,13 @@ class PageBuilder:
         return {"href": self.href(path), "text": text, "label": label, "line": line}
 
     def dataset_link(self, path) -> dict:
-        """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""
-        out = self.preview_of(path) if str(path).endswith(".nc") else None
-        file = self.href(path)
-        if out is None:
+        """A dataset's link: for a netCDF file under results/, its text preview (``stickslip show``, a page
+        registered for ``context`` to write), beside the file."""
+        full, file = self.workdir / path, self.href(path)
+        rel = Path(os.path.relpath(full, self.results))
+        if not (str(path).endswith(".nc") and full.is_file() and rel.parts[0] != ".."):
             return {"href": file, "text": str(path), "file": None}
+        out = self.text_jobs.setdefault(full, self.previews / f"{rel.as_posix()}.html")
         return {"href": self.page_path(out), "text": str(path), "file": file}
 
     # -- inverse --------------------------------------------------------------------------------------
