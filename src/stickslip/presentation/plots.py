@@ -14,14 +14,10 @@ FAILED_TEXT = "failed – not a result"
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
 
 
-def _style(method):
-    return METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
-
-
 def _draw_run(ax_x, ax_v, ds, method, kind):
     """One method's run: x and v over time (``timeseries``), v over time (``velocity``) or v over x
     (``phase``)."""
-    style = _style(method)
+    style = METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
     if kind == "timeseries":
         ax_x.plot(ds.time, ds.displacement, label=method, **style)
     if kind in ("timeseries", "velocity"):
@@ -37,6 +33,17 @@ def _belt_velocity(ax, ds):
 def _failed_ticks(ax, x):
     """Failed runs as red ticks on the bottom edge (never drawn as values)."""
     ax.plot(x, np.zeros(len(x)), "|", color="red", ms=12, mew=2, transform=ax.get_xaxis_transform())
+
+
+def _runs(ax, x, y, ok, label="", **style):
+    """The runs that succeeded (``ok``) as a line, its ``label`` counting the failed ones, which are drawn as
+    red ticks (never as values)."""
+    failed = int((~ok).sum())
+    count = f" ({failed} runs failed – not results)" if failed and label else ""
+    (line,) = ax.plot(x[ok], y[ok], ".-", label=label + count, **style)
+    if failed:
+        _failed_ticks(ax, x[~ok])
+    return line
 
 
 def _failed_note(ax, ds, method, row):
@@ -180,9 +187,8 @@ def sweep_figure(paper, dense, title: str, reading: str):
         if var == "stick_fraction":
             ax.plot(x[ok], 1 - dense[var].values[ok], ".-", ms=3, lw=0.8, label="slip_fraction")
             ax.legend(fontsize=7)
-        if (~ok).any():
-            for xf in x[~ok]:
-                ax.axvline(xf, color="red", alpha=0.15, lw=2)
+        for xf in x[~ok]:
+            ax.axvline(xf, color="red", alpha=0.15, lw=2)
         ax.set_ylabel(label, fontsize=8)
         if row == len(SWEEP_METRICS) - 1:
             ax.set_xlabel(
@@ -197,14 +203,9 @@ def critical_speed_figure(datasets: dict):
     """Continuation over belt speed: stick fraction and amplitude per reading, critical speed marked."""
     fig, (ax_s, ax_a) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for reading, ds in datasets.items():
-        vb = ds.belt_velocity.values
-        ok = ds.solver_ok.values == 1
-        (line,) = ax_s.plot(vb[ok], ds.stick_fraction.values[ok], ".-", label=reading)
-        ax_a.plot(vb[ok], ds.amplitude_peak_to_peak.values[ok], ".-", color=line.get_color())
-        if (~ok).any():
-            line.set_label(f"{reading} ({int((~ok).sum())} runs failed – not results)")
-            for ax in (ax_s, ax_a):
-                _failed_ticks(ax, vb[~ok])
+        vb, ok = ds.belt_velocity.values, ds.solver_ok.values == 1
+        line = _runs(ax_s, vb, ds.stick_fraction.values, ok, reading)
+        _runs(ax_a, vb, ds.amplitude_peak_to_peak.values, ok, color=line.get_color())
         vc = float(ds.critical_belt_speed)
         if np.isfinite(vc) and vc > 0:
             ax_s.axvline(vc, color=line.get_color(), ls=":", lw=1)
@@ -353,20 +354,16 @@ def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title="")
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.6 * len(metrics), 3.2), squeeze=False)
     for ax, (var, label) in zip(axes[0], metrics):
         for r, ds in datasets.items():
-            x = ds[param].values
-            ok = ds.solver_ok.values == 1
-            nfail = int((~ok).sum())
-            ax.plot(
-                x[ok],
-                ds[var].values[ok],
-                ".-",
+            _runs(
+                ax,
+                ds[param].values,
+                ds[var].values,
+                ds.solver_ok.values == 1,
+                r,
                 ms=3,
                 lw=0.9,
                 color=colours[r],
-                label=r + (f" ({nfail} runs failed – not results)" if nfail else ""),
             )
-            if nfail:
-                _failed_ticks(ax, x[~ok])
         for rvar, rx, ry, rlabel in reported:
             if rvar == var:
                 ax.plot([rx], [ry], "x", color="k", ms=9, mew=2, zorder=5, label=None)  # the paper's number
