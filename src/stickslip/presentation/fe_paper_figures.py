@@ -188,12 +188,15 @@ def _envelope(ax, ds, var, colour):
         ax.stairs(centre + sgn * env, edges, baseline=None, color=colour, lw=1.6, ls="--", label=label)
 
 
+def _disc_speed(ds) -> tuple:
+    """(rev/min where the scene states it, else None; surface speed [mm/s]) of the scene's disc."""
+    rev = json.loads(ds.attrs.get("parameters", "{}")).get("disc", {}).get("speed_rev_per_min")
+    return rev, float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
+
+
 def _speed_label(ds) -> str:
-    p = json.loads(ds.attrs.get("parameters", "{}")).get("disc", {})
-    v = float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
-    if p.get("speed_rev_per_min"):
-        return f"disc {p['speed_rev_per_min']:g} rev/min = {v:.3g} mm/s at the surface"
-    return f"disc surface {v:.3g} mm/s"
+    rev, v = _disc_speed(ds)
+    return f"disc {rev:g} rev/min = {v:.3g} mm/s at the surface" if rev else f"disc surface {v:.3g} mm/s"
 
 
 #: a legend in a row of its own above its panel
@@ -475,7 +478,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
     a1.set_xlabel("position along the beam x [mm] (clamp at 0, node 1 on the disc at the free end)")
     a1.legend(fontsize=8, loc="lower left", ncol=1)
     a1.grid(alpha=0.25)
-    rev = _params(ds)["disc"].get("speed_rev_per_min")
+    rev = _disc_speed(ds)[0]
     note = f" (the disc turns at {rev / 60:.3g} rev/s, far below every mode)" if rev else ""
     a1.set_title(f"contact-held modes (node 1 pinned on the disc){note}", fontsize=9)
     fig.suptitle(
@@ -615,11 +618,9 @@ def paper_boundary_sketch(ds, number: int, scene: str = ""):
     ax.annotate("", (0, h / 2 + 7), (L, h / 2 + 7), arrowprops=dict(arrowstyle="<->", color="0.3", lw=0.8))
     ax.text(L / 2, h / 2 + 7.5, f"L = {L:g} mm, h = {h:g} mm (beam)", ha="center", fontsize=8)
     ax.text(-5, 11, "clamped", fontsize=8)
-    speed = p["disc"].get("speed_rev_per_min")
-    surf = float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
-    speed_txt = (
-        f"{speed:g} rev/min\n({surf:.3g} mm/s at the surface)" if speed else f"{surf:.3g} mm/s at the surface"
-    )
+    speed, surf = _disc_speed(ds)
+    speed_txt = f"{surf:.3g} mm/s at the surface"
+    speed_txt = f"{speed:g} rev/min\n({speed_txt})" if speed else speed_txt
     disc = f"D = {2 * R:g} mm\n{speed_txt}\n{METHOD_NOTE.get(con.get('method'), con.get('method'))}"
     ax.text(centre[0] + R + 2, centre[1], disc, fontsize=8, va="center")
     ax.set_aspect("equal")
