@@ -707,13 +707,9 @@ def _templates():
     )
 
 
-def render(context: dict) -> str:
-    css = (HERE / "templates" / "page.css").read_text()
-    return _templates().get_template("page.html.j2").render(css=css, **context)
-
-
 def build_page(out: Path, builder: PageBuilder) -> Path:
-    """Write the page to ``out`` (atomically) and return its path."""
-    out = Path(out)
-    write_text_atomic(out, render(builder.context()))
-    return out
+    """Write the page, its CSS inline, to ``out`` (atomically) and return its path."""
+    css = (HERE / "templates" / "page.css").read_text()
+    return write_text_atomic(
+        out, _templates().get_template("page.html.j2").render(css=css, **builder.context())
+    )
