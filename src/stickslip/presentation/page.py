@@ -399,16 +399,14 @@ class PageBuilder:
         return [r for r in self.rows if number in self.figures_of.get(r["claim"], [])]
 
     def per_reading(self, rows: list[dict], fe: bool) -> list[dict]:
-        """The figure's verdict in every reading (FE: every FE reading, from the FE readings table)."""
+        """The figure's verdict in every reading (FE: every FE reading, in the order of the FE readings table,
+        whose rows each name their reading)."""
         if fe:
             ids = {r["claim"] for r in rows}
-            table = [r for r in self.fe_rows if r["claim"] in ids]
-            readings = list(dict.fromkeys(r["reading"] for r in table))
-            return [
-                {"reading": rd, "verdict": tally([r for r in table if r["reading"] == rd]).label}
-                for rd in readings
-            ]
-        readings = readings_by_preference(rows, self.order)
+            rows = [r for r in self.fe_rows if r["claim"] in ids]
+        readings = (
+            dict.fromkeys(r["reading"] for r in rows) if fe else readings_by_preference(rows, self.order)
+        )
         return [{"reading": rd, "verdict": tally(rows_in_reading(rows, rd)).label} for rd in readings]
 
     def images(self, number: int, reading: str, rows: list[dict]) -> list[dict]:
