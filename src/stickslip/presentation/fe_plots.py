@@ -362,14 +362,12 @@ def fe_stability_figure(ds):
     a1.set_title("linearised steady sliding (sliding normal force)", fontsize=9)
     lab = [f"{a:+.0f}°, {s:.3g}" for a, s in zip(ds.crosscheck_angle.values, ds.crosscheck_slope.values)]
     x = np.arange(len(lab))
-    a2.bar(x - 0.27, ds.crosscheck_eigen_growth_rate.values, 0.27, label="eigenvalue (sliding N)")
-    a2.bar(x, ds.crosscheck_transient_growth_rate.values, 0.27, label="explicit transient")
-    a2.bar(
-        x + 0.27,
-        ds.crosscheck_eigen_growth_rate_static_normal.values,
-        0.27,
-        label="eigenvalue (static N, old)",
-    )
+    for dx, rate, label in (
+        (-0.27, "eigen_growth_rate", "eigenvalue (sliding N)"),
+        (0.0, "transient_growth_rate", "explicit transient"),
+        (0.27, "eigen_growth_rate_static_normal", "eigenvalue (static N, old)"),
+    ):
+        a2.bar(x + dx, ds[f"crosscheck_{rate}"].values, 0.27, label=label)
     for i, (f, r) in enumerate(
         zip(ds.crosscheck_transient_frequency.values, ds.crosscheck_relative_difference.values)
     ):

@@ -427,14 +427,10 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
                 raise KeyError(m["on"])
             if (target := targets[kind].get(m.get("on", "x"))) is not None:
                 mark_reported(target, **{k: v for k, v in m.items() if k != "on"})
-    if kind == "timeseries":
-        axes[-1, 0].set_xlabel("time [s]")
-        axes[-1, 1].set_xlabel("time [s]")
-        axes[0, 1].legend(fontsize=7, loc="upper right")
-    elif kind == "velocity":
+    if kind in ("timeseries", "velocity"):
         for ax in axes[-1]:
             ax.set_xlabel("time [s]")
-        axes.flat[0].legend(fontsize=7, loc="upper right")
+        axes[0, 1 if kind == "timeseries" else 0].legend(fontsize=7, loc="upper right")
     else:
         with_lines = [ax for ax in axes.flat if ax.get_legend_handles_labels()[0]]
         if with_lines:
