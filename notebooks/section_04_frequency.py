@@ -85,23 +85,18 @@ display(Markdown("\n".join(lines)))
 # ("n/a").
 
 # %%
+peak = float(eq6.peak_frequency_printed)
 fig = scalars_vs_reported(
     fig02,
     [
         dict(
-            var="frequency_peaks",
-            reported=float(eq6.peak_frequency_printed),
+            var=f"frequency_{how}",
+            reported=peak,
             tol_rel=0.1,
-            ref_label=f"Eq. 6 peak {float(eq6.peak_frequency_printed):.3f}",
-            label="Fig. 2 frequency (peaks)",
-        ),
-        dict(
-            var="frequency_spectrum",
-            reported=float(eq6.peak_frequency_printed),
-            tol_rel=0.1,
-            ref_label=f"Eq. 6 peak {float(eq6.peak_frequency_printed):.3f}",
-            label="Fig. 2 frequency (spectrum)",
-        ),
+            ref_label=f"Eq. 6 peak {peak:.3f}",
+            label=f"Fig. 2 frequency ({how})",
+        )
+        for how in ("peaks", "spectrum")
     ],
     title="baseline frequency per reading vs the Eq. 6 peak (as printed)",
 )

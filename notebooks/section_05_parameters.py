@@ -255,6 +255,13 @@ for name, spec in SWEEP_FIGS.items():
 
 
 def show_sweep(name):
+    """The sweep's figures (when the config has the sweep), then the claims of its paper figures."""
+    if name in sweeps:
+        draw_sweep(name)
+    show_claims(CLAIM_FIG[name])
+
+
+def draw_sweep(name):
     spec = SWEEP_FIGS[name]
     for r in sweeps[name]:  # the pipeline's figure of this sweep and reading (rule sweep_figure_<name>)
         display(Image(filename=paths.figure(name, r)))
@@ -273,33 +280,25 @@ def show_sweep(name):
 # ### Figure 10 — static friction coefficient μ_s
 
 # %%
-if "fig10" in sweeps:
-    show_sweep("fig10")
-show_claims(CLAIM_FIG["fig10"])
+show_sweep("fig10")
 
 # %% [markdown]
 # ### Figure 11 — stiffness K
 
 # %%
-if "fig11" in sweeps:
-    show_sweep("fig11")
-show_claims(CLAIM_FIG["fig11"])
+show_sweep("fig11")
 
 # %% [markdown]
 # ### Figures 12 and 13 — damping C
 
 # %%
-if "fig12" in sweeps:
-    show_sweep("fig12")
-show_claims(CLAIM_FIG["fig12"])
+show_sweep("fig12")
 
 # %% [markdown]
 # ### Figure 14 — mass M (normal load N = 10 M)
 
 # %%
-if "fig14" in sweeps:
-    show_sweep("fig14")
-show_claims(CLAIM_FIG["fig14"])
+show_sweep("fig14")
 
 # %% [markdown]
 # ## Section 5 claims not shown above

@@ -143,8 +143,6 @@ def test_reader_notebook_drops_the_parameters_cell_and_folds_code():
     )
     assert len(nb.cells) == 3 and len(code.outputs) == 1  # the executed notebook itself is untouched
     assert "secret_key_x" not in to_html(nb)
-    with pytest.raises(ValueError, match="code"):
-        reader_notebook(nb, code="fold")
 
 
 SOURCE = """# %% [markdown]

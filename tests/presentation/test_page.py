@@ -93,25 +93,24 @@ def test_best_reading_maximises_reproduced_then_minimises_deviations():
     assert figure_verdict(r["status"] for r in rows_in_reading(rows, "r3")) == "partly"
 
 
-def test_best_reading_prefers_a_reading_that_decides_over_one_that_measures_nothing():
-    rows = [
-        _row("a", "measures", "deviates"),
-        _row("b", "measures", "deviates"),
-        _row("a", "blind", "not-comparable"),
-        _row("b", "blind", "not-comparable"),
-    ]
-    assert best_reading(rows, ["blind", "measures"]) == "measures"
-    assert figure_verdict(r["status"] for r in rows_in_reading(rows, "measures")) == "deviating"
-
-
-def test_best_reading_prefers_a_clean_record_at_equal_reproduced_counts():
-    rows = [
-        _row("a", "mixed", "reproduced"),
-        _row("b", "mixed", "deviates"),
-        _row("a", "clean", "reproduced"),
-        _row("b", "clean", "not-comparable"),
-    ]
-    assert best_reading(rows, ["mixed", "clean"]) == "clean"
+@pytest.mark.parametrize(
+    "statuses, best, verdict",
+    [
+        # a reading that decides beats one that measures nothing
+        ({"measures": ("deviates", "deviates"), "blind": ("not-comparable",) * 2}, "measures", "deviating"),
+        # at equal reproduced counts, a clean record beats one with a deviation
+        (
+            {"mixed": ("reproduced", "deviates"), "clean": ("reproduced", "not-comparable")},
+            "clean",
+            "reproduced",
+        ),
+    ],
+    ids=["decides-over-measures-nothing", "clean-record-at-equal-counts"],
+)
+def test_best_reading_prefers(statuses, best, verdict):
+    rows = [_row(claim, reading, s) for reading, pair in statuses.items() for claim, s in zip("ab", pair)]
+    assert best_reading(rows, [r for r in statuses if r != best] + [best]) == best  # the best ranked last
+    assert figure_verdict(r["status"] for r in rows_in_reading(rows, best)) == verdict
 
 
 def test_best_reading_ties_follow_the_overall_ranking():

@@ -32,22 +32,17 @@ for (scene, beam), cont_path, png in zip(beams.items(), inp.continuum, out.scene
     fe_scene_figure(beam, cont, reported=reported, title=title).savefig(png, dpi=100)
     plt.close("all")
 for number, png in zip(par.paper_figure_numbers, out.paper, strict=True):
-    fig = paper_figure(
-        number,
-        {
-            s: beams[s] for s in par.paper_figures[number]
-        },  # the figure's scenes, as config fe.paper_figures lists them
-        par.paper_reported.get(number, []),
-        reading=par.default_reading,
-        several_times=par.paper_normal_force_ratio,
-    )
-    fig.savefig(png, dpi=100)
+    scenes = {s: beams[s] for s in par.paper_figures[number]}  # as config fe.paper_figures lists them
+    reported = par.paper_reported.get(number, [])
+    ratio = par.paper_normal_force_ratio
+    paper_figure(number, scenes, reported, par.default_reading, several_times=ratio).savefig(png, dpi=100)
     plt.close("all")
-default = {(par.default_reading, scene): ds for scene, ds in beams.items()}  # read once, drawn twice
-dss = {}
 keys = [(reading, scene) for reading in par.readings for scene in par.scenes]
-for key, p in zip(keys, inp.readings, strict=True):
-    dss[key] = default[key] if key in default else read_dataset(p)
+# the default reading's datasets are the scenes' above: read once, drawn twice
+dss = {
+    key: beams[key[1]] if key[0] == par.default_reading else read_dataset(p)
+    for key, p in zip(keys, inp.readings, strict=True)
+}
 fe_readings_figure(dss, par.scenes, par.readings, par.reported).savefig(out.readings, dpi=100)
 fe_convergence_figure(read_dataset(inp.convergence)).savefig(out.convergence, dpi=100)
 fe_stability_figure(read_dataset(inp.stability)).savefig(out.stability, dpi=100)

@@ -4,7 +4,8 @@ import yaml
 
 from stickslip import catalogue as paths
 from stickslip.claims.table import read_table
-from stickslip.presentation.report import caption_text, claims_for, write_captions
+from stickslip.io.text_files import write_text_atomic
+from stickslip.presentation.report import caption_template, caption_text, claims_for
 from stickslip.schema import Figure
 
 params = snakemake.params  # noqa: F821
@@ -53,4 +54,4 @@ captions[paths.claims_table()] = caption_text(
     note="Status per claim and reading, with the margin to the claim's threshold and the spread over the "
     "perturbation ensemble; a status that differs from its pin is shown with the pinned one.",
 )
-write_captions(captions, snakemake.output[0])  # noqa: F821
+write_text_atomic(snakemake.output[0], caption_template(captions))  # noqa: F821

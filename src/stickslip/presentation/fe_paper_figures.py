@@ -22,7 +22,10 @@ from ..fe.params import initial_state_of
 from .fe_plots import (
     NOTE_BOX,
     PAPER_COLOUR,
+    axes_note,
     band_columns,
+    detail_window,
+    envelope_windows,
     grouped,
     paper_line,
     power_of_ten,
@@ -124,13 +127,10 @@ def distinct_values(rows) -> list[dict]:
     """The paper's numbers for one figure (``{label, value, unit}`` rows from its claims), once per value and
     unit, labelled by the first row: the fitted-setup rows and the second disc speed repeat the forward rows'
     numbers."""
-    seen, out = set(), []
+    out = {}
     for r in rows:
-        key = (float(r["value"]), r["unit"])
-        if key not in seen:
-            seen.add(key)
-            out.append(r)
-    return out
+        out.setdefault((float(r["value"]), r["unit"]), r)
+    return list(out.values())
 
 
 # ----------------------------------------------------------------------------------------------- helpers
@@ -162,42 +162,25 @@ def _band(ax, ds, var, colour, label, mean=True):
         span = _mean_span(ds) * 1e3
         ax.plot(tm, mm, color="k", lw=0.9, label=f"mean per {span:.3g} ms")
     if float(np.nanmax(np.abs(hi))) == 0.0 and float(np.nanmax(np.abs(lo))) == 0.0:
-        ax.text(
-            0.5,
-            0.5,
-            "identically zero (held by the constraint)",
-            transform=ax.transAxes,
-            ha="center",
-            va="bottom",
-            fontsize=8,
-            color="0.3",
+        axes_note(
+            ax, 0.5, 0.5, "identically zero (held by the constraint)", ha="center", va="bottom", color="0.3"
         )
 
 
 def _envelope(ax, ds, var, colour):
     """The running envelope a growth claim is judged on (half peak-to-peak per window, ``<var>_envelope``)
     drawn +- about each window's mean, as a staircase over the windows."""
-    key = f"{var}_envelope"
-    if key not in ds or "window_time" not in ds.coords:
+    if (found := envelope_windows(ds, var)) is None:
         return
-    tw, env = ds.window_time.values, ds[key].values
-    if tw.size == 0:
-        return
-    if not np.isfinite(env).any():
-        why = ds[key].attrs.get("step_halving", "")
+    tw, env, w = found
+    if not np.isfinite(env.values).any():
+        why = env.attrs.get("step_halving", "")
         note = "not converged under step halving" if why.startswith("not converged") else "not in the dataset"
-        ax.text(
-            0.01,
-            0.97,
-            f"running envelope: {note} (withheld)",
-            transform=ax.transAxes,
-            fontsize=8,
-            va="top",
-            color=colour,
-            bbox=NOTE_BOX,
+        axes_note(
+            ax, 0.01, 0.97, f"running envelope: {note} (withheld)", va="top", color=colour, bbox=NOTE_BOX
         )
         return
-    w = float(np.median(np.diff(tw))) if tw.size > 1 else 2 * float(tw[0])
+    env = env.values
     tb, mb = ds.bin_time.values, ds[f"{var}_mean"].values
     centre = np.array([np.nanmean(mb[(tb >= a - w / 2) & (tb < a + w / 2)]) for a in tw])
     edges = np.concatenate([tw - w / 2, [tw[-1] + w / 2]])
@@ -205,18 +188,23 @@ def _envelope(ax, ds, var, colour):
         ax.stairs(centre + sgn * env, edges, baseline=None, color=colour, lw=1.6, ls="--", label=label)
 
 
+def _disc_speed(ds) -> tuple:
+    """(rev/min where the scene states it, else None; surface speed [mm/s]) of the scene's disc."""
+    rev = json.loads(ds.attrs.get("parameters", "{}")).get("disc", {}).get("speed_rev_per_min")
+    return rev, float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
+
+
 def _speed_label(ds) -> str:
-    p = json.loads(ds.attrs.get("parameters", "{}")).get("disc", {})
-    v = float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
-    if p.get("speed_rev_per_min"):
-        return f"disc {p['speed_rev_per_min']:g} rev/min = {v:.3g} mm/s at the surface"
-    return f"disc surface {v:.3g} mm/s"
+    rev, v = _disc_speed(ds)
+    return f"disc {rev:g} rev/min = {v:.3g} mm/s at the surface" if rev else f"disc surface {v:.3g} mm/s"
 
 
-def _legend_above(ax, ncol=4):
-    ax.legend(
-        fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=ncol, frameon=False, borderaxespad=0.1
-    )
+#: a legend in a row of its own above its panel
+ABOVE = dict(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False, borderaxespad=0.1)
+
+
+def _legend_above(ax, ncol=4, **kw):
+    ax.legend(**kw, **ABOVE, ncol=ncol)
 
 
 def _title(number, caption, scenes, reading, width=110):
@@ -312,8 +300,7 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         )
         axes["normal" if "normal" in axes else "midspan"].set_xlabel("time [s] (whole run)", fontsize=8)
         ax = axes["zoom"]
-        t0, t1 = ds.detail_windows.values[-1]
-        m = (ds.time.values >= t0) & (ds.time.values <= t1)
+        t0, t1, m = detail_window(ds, -1)
         t = ds.time.values[m]
         y = ds[spec.variable].values[m]
         base, label = 0.0, f"{short}\nnode 1"
@@ -323,16 +310,8 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
             label = f"{short} node 1\n− {base:g} {ulab}"
         ax.plot(t, y - base, color="C0", lw=0.7, label="node 1, every sample")
         if y.size and float(np.nanmax(np.abs(y))) < 1e-13:  # round-off: the node is held by the contact
-            ax.text(
-                0.5,
-                0.03,
-                "round-off level only: node 1 is held on the disc",
-                transform=ax.transAxes,
-                ha="center",
-                fontsize=8,
-                color="0.2",
-                bbox=NOTE_BOX,
-            )
+            note = "round-off level only: node 1 is held on the disc"
+            axes_note(ax, 0.5, 0.03, note, ha="center", color="0.2", bbox=NOTE_BOX)
         ax.set_xlim(t0, t1)
         shade_states(ax, t, ds.contact_state.values[m], alpha=0.2)
         ax.set_xlabel(
@@ -341,15 +320,7 @@ def paper_time_series_figure(number: int, datasets: dict, reported=(), reading: 
         ax.tick_params(labelsize=8)
         labelled.setdefault("zoom", []).append((ax, label, ulab))
         if j == 0:
-            ax.legend(
-                handles=ax.get_lines()[:1] + state_legend_handles(alpha=0.2),
-                fontsize=7,
-                loc="lower left",
-                bbox_to_anchor=(0.0, 1.0),
-                ncol=4,
-                frameon=False,
-                borderaxespad=0.1,
-            )
+            _legend_above(ax, handles=ax.get_lines()[:1] + state_legend_handles(alpha=0.2))
     for row in labelled.values():  # the same power of ten in every column of a row (one unit per quantity)
         e = power_of_ten([ax for ax, _, _ in row])
         for ax, label, u in row:
@@ -401,7 +372,7 @@ def _time_lines(axes, times, t_end) -> set:
                     va="bottom",
                     fontsize=7.5,
                     color=PAPER_COLOUR,
-                    bbox=dict(fc="white", ec="none", alpha=0.8, pad=0.2),
+                    bbox={**NOTE_BOX, "pad": 0.2},
                 )
     return beyond
 
@@ -413,30 +384,16 @@ def _statement(ax, ds, text, lhs, rhs):
     a, b = float(ds[lhs]), float(ds[rhs])
     units = ds[lhs].attrs.get("units", "")
 
-    def value(name, v):
-        # a metric the step-halving check withheld is NaN in the dataset: say so instead of "nan"
-        return (
-            f"{name.replace('_', ' ')} {v:.3g} {units}"
-            if np.isfinite(v)
-            else f"{name.replace('_', ' ')} withheld"
-        )
+    def value(name, v):  # a metric the step-halving check withheld is NaN in the dataset: say so
+        return f"{name.replace('_', ' ')} " + (f"{v:.3g} {units}" if np.isfinite(v) else "withheld")
 
     if np.isfinite(a) and np.isfinite(b):
         verdict = "so it holds here" if a > b else "not here"
     else:
         verdict = "not decided (not converged at half step)"
     here = f"here: {value(lhs, a)} vs {value(rhs, b)}"
-    ax.text(
-        0.01,
-        0.97,
-        f"{text}\n{here}\n{verdict}",
-        transform=ax.transAxes,
-        ha="left",
-        va="top",
-        fontsize=8,
-        color=PAPER_COLOUR,
-        bbox=dict(fc="white", ec=PAPER_COLOUR, alpha=0.85, pad=0.3, lw=0.6),
-    )
+    box = dict(fc="white", ec=PAPER_COLOUR, alpha=0.85, pad=0.3, lw=0.6)
+    axes_note(ax, 0.01, 0.97, f"{text}\n{here}\n{verdict}", ha="left", va="top", color=PAPER_COLOUR, bbox=box)
 
 
 def _first_mode_growth(ax, ds, legend: bool):
@@ -472,15 +429,8 @@ def _first_mode_growth(ax, ds, legend: bool):
     if rate is not None and np.isfinite(float(rate)):
         note = str(ds["first_mode_growth_rate"].attrs.get("step_halving", ""))
         note = "not converged at dt/2" if note.startswith("not converged") else note
-        ax.text(
-            0.99,
-            0.04,
-            f"fitted over the leading segment: {float(rate):+.3g} 1/s" + (f" ({note})" if note else ""),
-            transform=ax.transAxes,
-            ha="right",
-            fontsize=7.5,
-            bbox=NOTE_BOX,
-        )
+        text = f"fitted over the leading segment: {float(rate):+.3g} 1/s" + (f" ({note})" if note else "")
+        axes_note(ax, 0.99, 0.04, text, ha="right", fontsize=7.5, bbox=NOTE_BOX)
     ax.set_ylabel("first-mode\namplitude / first", fontsize=8)
     ax.grid(alpha=0.25, which="both")
     ax.tick_params(labelsize=8)
@@ -528,7 +478,7 @@ def paper_mode_shape_figure(ds, scene: str = "", reading: str = "lower_face_drop
     a1.set_xlabel("position along the beam x [mm] (clamp at 0, node 1 on the disc at the free end)")
     a1.legend(fontsize=8, loc="lower left", ncol=1)
     a1.grid(alpha=0.25)
-    rev = _params(ds)["disc"].get("speed_rev_per_min")
+    rev = _disc_speed(ds)[0]
     note = f" (the disc turns at {rev / 60:.3g} rev/s, far below every mode)" if rev else ""
     a1.set_title(f"contact-held modes (node 1 pinned on the disc){note}", fontsize=9)
     fig.suptitle(
@@ -579,17 +529,8 @@ def paper_deflection_figure(
         n0 = float(ds["static_normal_force"])
         a1.fill_between(tc, lo / n0, hi / n0, color=c, alpha=0.4, lw=0, label=f"{scene}: min-max")
     a0.axhline(0, color="0.6", lw=0.6)
-    a0.annotate(
-        "node 1 (x = L)", (length, 0), xytext=(0, 8), textcoords="offset points", ha="center", fontsize=8
-    )
-    a0.annotate(
-        "mid-span (x = L/2)",
-        (length / 2, 0),
-        xytext=(0, 8),
-        textcoords="offset points",
-        ha="center",
-        fontsize=8,
-    )
+    for xn, text in ((length, "node 1 (x = L)"), (length / 2, "mid-span (x = L/2)")):
+        a0.annotate(text, (xn, 0), xytext=(0, 8), textcoords="offset points", ha="center", fontsize=8)
     a0.set_xlabel("position along the beam x [mm] (clamp at 0)")
     a0.set_ylabel("vertical deflection [mm]")
     sci_ticks(a0)
@@ -672,28 +613,16 @@ def paper_boundary_sketch(ds, number: int, scene: str = ""):
             ax.add_patch(Circle((xr, h / 2 + 0.6), 0.6, fc="white", ec="k", lw=0.8))
         ax.plot([0, L], [h / 2 + 1.2] * 2, color="k", lw=1)
         ax.add_patch(Rectangle((0, h / 2 + 1.2), L, 1.5, fill=False, hatch="////", lw=0, ec="0.3"))
-        ax.text(
-            L / 2,
-            h / 2 + 3.2,
-            "upper face held vertically (rollers: free horizontally, no vertical motion)",
-            ha="center",
-            fontsize=8,
-        )
+        held = "upper face held vertically (rollers: free horizontally, no vertical motion)"
+        ax.text(L / 2, h / 2 + 3.2, held, ha="center", fontsize=8)
     ax.annotate("", (0, h / 2 + 7), (L, h / 2 + 7), arrowprops=dict(arrowstyle="<->", color="0.3", lw=0.8))
     ax.text(L / 2, h / 2 + 7.5, f"L = {L:g} mm, h = {h:g} mm (beam)", ha="center", fontsize=8)
     ax.text(-5, 11, "clamped", fontsize=8)
-    speed = p["disc"].get("speed_rev_per_min")
-    surf = float(ds["disc_surface_speed"]) if "disc_surface_speed" in ds else float("nan")
-    speed_txt = (
-        f"{speed:g} rev/min\n({surf:.3g} mm/s at the surface)" if speed else f"{surf:.3g} mm/s at the surface"
-    )
-    ax.text(
-        centre[0] + R + 2,
-        centre[1],
-        f"D = {2 * R:g} mm\n{speed_txt}\n{METHOD_NOTE.get(con.get('method'), con.get('method'))}",
-        fontsize=8,
-        va="center",
-    )
+    speed, surf = _disc_speed(ds)
+    speed_txt = f"{surf:.3g} mm/s at the surface"
+    speed_txt = f"{speed:g} rev/min\n({speed_txt})" if speed else speed_txt
+    disc = f"D = {2 * R:g} mm\n{speed_txt}\n{METHOD_NOTE.get(con.get('method'), con.get('method'))}"
+    ax.text(centre[0] + R + 2, centre[1], disc, fontsize=8, va="center")
     ax.set_aspect("equal")
     ax.set_xlim(-10, centre[0] + R + 38)
     ax.set_ylim(centre[1] - R - 2, h / 2 + 14)

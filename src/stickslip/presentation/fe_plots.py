@@ -77,6 +77,11 @@ def scaled_ylabel(ax, text: str, unit: str, fontsize=8, exponent: int | None = N
     ax.set_ylabel(f"{text} [{unit}]" if e == 0 else f"{text} [$10^{{{e}}}$ {unit}]", fontsize=fontsize)
 
 
+def axes_note(ax, x, y, text, **style):
+    """A note at the axes fraction (``x``, ``y``), 8 pt unless ``style`` says otherwise."""
+    return ax.text(x, y, text, transform=ax.transAxes, **{"fontsize": 8, **style})
+
+
 def paper_line(ax, y, text, ls="--", lw=1.2, x=0.99, bbox=NOTE_BOX):
     """What the paper states about a level: a horizontal line in the paper's colour, labelled above it at
     the right edge (``x`` 0.99) or the left one."""
@@ -124,10 +129,10 @@ def state_legend_handles(alpha=0.18):
     return [Patch(color=c, alpha=alpha, label=name) for name, c in STATE_COLOURS.values()]
 
 
-def _window(ds, w):
+def detail_window(ds, w):
+    """(start, end, mask of the full-resolution samples) of the dataset's detail window ``w``."""
     t0, t1 = ds.detail_windows.values[w]
-    m = (ds.time.values >= t0) & (ds.time.values <= t1)
-    return m
+    return t0, t1, (ds.time.values >= t0) & (ds.time.values <= t1)
 
 
 def _between(ds, t0, t1):
@@ -135,13 +140,19 @@ def _between(ds, t0, t1):
     return (ds.time.values >= t0 - 1e-9) & (ds.time.values <= t1 + 1e-9)
 
 
-def _bins_from(ax, ds, var, t0, t_max, label, model):
-    """A model's per-bin min-max band of ``var`` from ``t0`` on, where it kept no samples to draw."""
-    t, lo, hi = band_columns(ds, var, t_max=t_max)
-    keep = t >= t0
-    ax.fill_between(
-        t[keep], lo[keep], hi[keep], alpha=0.35, lw=0, step="mid", label=label, **MODEL_STYLE[model]
-    )
+def _samples_or_bins(ax, ds, model, var, t0, t1, t_max, lw, label, binned_label):
+    """A model's full-resolution samples of ``var`` in [t0, t1] where it kept them, else its per-bin min-max
+    band from ``t0`` on."""
+    m = _between(ds, t0, t1)
+    if m.sum() > 1:
+        ax.plot(ds.time.values[m], ds[var].values[m], lw=lw, label=label, **MODEL_STYLE[model])
+    elif f"{var}_min" in ds:
+        t, lo, hi = band_columns(ds, var, t_max=t_max)
+        keep = t >= t0
+        style = MODEL_STYLE[model]
+        ax.fill_between(
+            t[keep], lo[keep], hi[keep], alpha=0.35, lw=0, step="mid", label=binned_label, **style
+        )
 
 
 def _spectrum(t, y):
@@ -151,15 +162,22 @@ def _spectrum(t, y):
     return np.fft.rfftfreq(y.size, dt), spec
 
 
-def _running_envelope(ax, ds, var, style, t_max=None):
-    """Half peak-to-peak per window (the running envelope a growth claim is judged on), as a staircase."""
+def envelope_windows(ds, var):
+    """(window times, ``<var>_envelope``, window width) of the running envelope a growth claim is judged on
+    (half peak-to-peak per window); None when the dataset has none."""
     key = f"{var}_envelope"
-    if key not in ds or "window_time" not in ds.coords:
+    if key not in ds or "window_time" not in ds.coords or ds.window_time.size == 0:
+        return None
+    t = ds.window_time.values
+    return t, ds[key], float(np.median(np.diff(t))) if t.size > 1 else 2 * float(t[0])
+
+
+def _running_envelope(ax, ds, var, style, t_max=None):
+    """The running envelope (``envelope_windows``) as a staircase."""
+    if (found := envelope_windows(ds, var)) is None:
         return
-    t, env = ds.window_time.values, ds[key].values
-    if t.size == 0:
-        return
-    w = float(np.median(np.diff(t))) if t.size > 1 else 2 * float(t[0])
+    t, env, w = found
+    env = env.values
     keep = t - w / 2 < (np.inf if t_max is None else t_max - 1e-12)
     edges = np.concatenate([t[keep] - w / 2, [t[keep][-1] + w / 2]])
     ax.stairs(
@@ -239,7 +257,7 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     # spectra of the first window: both models sample by sample over the same 5 ms
     ax_f = fig.add_subplot(gs[5, 0])
     for name, ds in models.items():
-        m = _window(ds, 0)
+        m = detail_window(ds, 0)[2]
         if m.sum() > 8:
             f, a = _spectrum(ds.time.values[m], ds.horizontal_displacement.values[m])
             ax_f.loglog(f[1:], a[1:], lw=0.8, label=name, **MODEL_STYLE[name])
@@ -249,21 +267,11 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
     ax_f.legend(fontsize=7)
     # the last 5 ms of the comparison window: full-resolution samples where a model kept them, else its bins
     w_end = (t_cmp - 0.005, t_cmp)
-    last = {name: _between(ds, *w_end) for name, ds in models.items()}
     ax_n = fig.add_subplot(gs[5, 1])
     for name, ds in models.items():
-        if last[name].sum() > 1:
-            ax_n.plot(
-                ds.time.values[last[name]],
-                ds.normal_force.values[last[name]],
-                lw=0.7,
-                label=f"{name} normal",
-                **MODEL_STYLE[name],
-            )
-        elif "normal_force_min" in ds:
-            _bins_from(ax_n, ds, "normal_force", w_end[0], t_max, f"{name} normal (min-max per bin)", name)
-    if last["beam"].sum() > 1:
-        m = last["beam"]
+        binned = f"{name} normal (min-max per bin)"
+        _samples_or_bins(ax_n, ds, name, "normal_force", *w_end, t_max, 0.7, f"{name} normal", binned)
+    if (m := _between(beam, *w_end)).sum() > 1:
         ax_n.plot(
             beam.time.values[m], beam.friction_force.values[m], lw=0.7, color="C1", label="beam friction"
         )
@@ -278,18 +286,8 @@ def fe_scene_figure(beam, continuum=None, reported: dict | None = None, title: s
         ax = fig.add_subplot(gs[6, col])
         windows.append(ax)
         for name, ds in models.items():
-            m = _between(ds, t0, t1)
-            if m.sum() > 1:
-                ax.plot(
-                    ds.time.values[m],
-                    ds.horizontal_displacement.values[m],
-                    lw=0.8,
-                    label=name,
-                    **MODEL_STYLE[name],
-                )
-            else:
-                label = f"{name} (min-max per bin: no samples kept here)"
-                _bins_from(ax, ds, "horizontal_displacement", t0, t_max, label, name)
+            binned = f"{name} (min-max per bin: no samples kept here)"
+            _samples_or_bins(ax, ds, name, "horizontal_displacement", t0, t1, t_max, 0.8, name, binned)
         ax.set_xlim(t0, t1)
         m = _between(ref, t0, t1)
         shade_states(ax, ref.time.values[m], ref.contact_state.values[m])
@@ -326,10 +324,7 @@ def fe_readings_figure(datasets: dict, scenes: list, readings: list, reported: d
         if reported and q in reported:
             ax.axhline(reported[q] * scale, color="C3", ls="--", lw=1.2, label="paper")
         ax.set_ylabel(label, fontsize=8)
-        if yscale == "symlog":
-            ax.set_yscale("symlog", linthresh=1e-3)
-        else:
-            ax.set_yscale(yscale)
+        ax.set_yscale(yscale, **({"linthresh": 1e-3} if yscale == "symlog" else {}))
         ax.grid(axis="y", alpha=0.3)
     axes[0].legend(fontsize=7, ncol=3)
     axes[-1].set_xticks(x, [s.replace("_", "\n", 1) for s in scenes], fontsize=7)
@@ -367,14 +362,12 @@ def fe_stability_figure(ds):
     a1.set_title("linearised steady sliding (sliding normal force)", fontsize=9)
     lab = [f"{a:+.0f}°, {s:.3g}" for a, s in zip(ds.crosscheck_angle.values, ds.crosscheck_slope.values)]
     x = np.arange(len(lab))
-    a2.bar(x - 0.27, ds.crosscheck_eigen_growth_rate.values, 0.27, label="eigenvalue (sliding N)")
-    a2.bar(x, ds.crosscheck_transient_growth_rate.values, 0.27, label="explicit transient")
-    a2.bar(
-        x + 0.27,
-        ds.crosscheck_eigen_growth_rate_static_normal.values,
-        0.27,
-        label="eigenvalue (static N, old)",
-    )
+    for dx, rate, label in (
+        (-0.27, "eigen_growth_rate", "eigenvalue (sliding N)"),
+        (0.0, "transient_growth_rate", "explicit transient"),
+        (0.27, "eigen_growth_rate_static_normal", "eigenvalue (static N, old)"),
+    ):
+        a2.bar(x + dx, ds[f"crosscheck_{rate}"].values, 0.27, label=label)
     for i, (f, r) in enumerate(
         zip(ds.crosscheck_transient_frequency.values, ds.crosscheck_relative_difference.values)
     ):

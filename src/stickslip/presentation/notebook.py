@@ -313,23 +313,19 @@ def code_details(source: str) -> str:
     return f'<details class="nb-code">{summary}{code}</details>'
 
 
-def reader_notebook(nb, code: str = "details", source_link: str | None = None):
-    """A copy of an executed notebook as a reader sees it: without the parameters cell and, for
-    ``code="details"``, each code cell's source in a collapsed block above its outputs (``"hide"``: no code
-    at all, ``"show"``: code cells as they are). ``source_link`` (a relative URL) is linked at the top."""
+def reader_notebook(nb, source_link: str | None = None):
+    """A copy of an executed notebook as a reader sees it: without the parameters cell, each code cell's
+    source in a collapsed block above its outputs. ``source_link`` (a relative URL) is linked at the top."""
     import copy
 
     import nbformat
 
-    if code not in ("details", "hide", "show"):
-        raise ValueError(f"code: {code!r} is not one of ['details', 'hide', 'show']")
     out = copy.deepcopy(nb)
     out.cells = [c for c in out.cells if PARAMETERS_TAG not in c.metadata.get("tags", [])]
-    if code == "details":
-        for cell in out.cells:
-            if cell.cell_type == "code" and cell.source.strip():
-                block = nbformat.v4.new_output("display_data", data={"text/html": code_details(cell.source)})
-                cell.outputs.insert(0, block)
+    for cell in out.cells:
+        if cell.cell_type == "code" and cell.source.strip():
+            block = nbformat.v4.new_output("display_data", data={"text/html": code_details(cell.source)})
+            cell.outputs.insert(0, block)
     if source_link:
         note = (
             f"<small>Rendered from [`{Path(source_link).name}`]({source_link}); the code of each result is "
@@ -360,28 +356,19 @@ div.output_subarea { flex: 1 1 auto; }
 """
 
 
-def to_html(nb, code: str = "details", source_link: str | None = None, title: str = "") -> str:
+def to_html(nb, source_link: str | None = None, title: str = "") -> str:
     """HTML of an executed notebook for a reader (see ``reader_notebook``), wide tables scrolling."""
     from nbconvert import HTMLExporter
 
     exporter = HTMLExporter(template_name="classic")
-    if code != "show":
-        exporter.exclude_input = True
-        exporter.exclude_input_prompt = True
-        exporter.exclude_output_prompt = True
+    exporter.exclude_input = exporter.exclude_input_prompt = exporter.exclude_output_prompt = True
     body, _ = exporter.from_notebook_node(
-        reader_notebook(nb, code, source_link), resources={"metadata": {"name": title}}
+        reader_notebook(nb, source_link), resources={"metadata": {"name": title}}
     )
     return body.replace("</head>", READER_CSS + "</head>", 1)
 
 
-def render(
-    source: Path,
-    target: Path,
-    params: dict | None = None,
-    timeout: int = 600,
-    code: str = "details",
-) -> None:
+def render(source: Path, target: Path, params: dict | None = None, timeout: int = 600) -> None:
     """Execute a jupytext notebook (kernel working directory: the current one) and write its reader's HTML
     atomically to ``target`` and the executed notebook, parameters included, next to it (``.ipynb``).
 
@@ -407,7 +394,7 @@ def render(
         shutdown_kernel="immediate",  # the executed notebook is complete; a graceful stop waits ~1 s
     ).execute()
     link = os.path.relpath(source.resolve(), target.resolve().parent)
-    write_text_atomic(target, to_html(nb, code, link, title=notebook_title(nb) or source.stem))
+    write_text_atomic(target, to_html(nb, link, title=notebook_title(nb) or source.stem))
     nbformat.write(nb, target.with_suffix(".ipynb"))
 
 

@@ -13,7 +13,6 @@ names the line of its definition (``workflow/rules/fe.smk, line 253``).
 
 from __future__ import annotations
 
-import csv
 import functools
 import html
 import math
@@ -91,11 +90,8 @@ def not_comparable_causes(rows: list[dict]) -> dict[str, int]:
 
 
 def read_csv(path) -> list[dict]:
-    path = Path(path)
-    if not path.is_file():
-        return []
-    with path.open(newline="") as fh:
-        return list(csv.DictReader(fh))
+    """A table's rows; none when the run has not written it."""
+    return read_table(path) if Path(path).is_file() else []
 
 
 def source_modules(script: Path, src: Path) -> list[tuple[Path, list[tuple[str, int]]]]:
@@ -147,6 +143,12 @@ def fmt(value) -> str:
     if x != x:
         return "" if value in ("", None, "nan", "NaN") else str(value)
     return f"{x:.4g}"
+
+
+def percent(value) -> str:
+    """A relative deviation for display: ``+12 %``, blank for NaN."""
+    x = as_number(value)
+    return f"{100 * x:+.0f} %" if x == x else ""
 
 
 def thumbnail(png: Path, out: Path, width: int = THUMB_WIDTH) -> Path:
@@ -315,19 +317,6 @@ class PageBuilder:
         """The link to a file under the results folder that this page writes (it may not exist yet)."""
         return Path(os.path.relpath(path, self.results)).as_posix()
 
-    def preview_of(self, path) -> Path | None:
-        """Where the ``stickslip show`` page of dataset ``path`` (relative to the working directory) goes,
-        registered for ``context`` to write; None when the file does not exist or lies outside results/."""
-        full = self.workdir / path
-        if not full.is_file():
-            return None
-        rel = Path(os.path.relpath(full, self.results))
-        if rel.parts[0] == "..":
-            return None
-        out = self.previews / f"{rel.as_posix()}.html"
-        self.text_jobs.setdefault(full, out)
-        return out
-
     def source_link(self, path, line: int | None = None, name: str = "") -> dict:
         """A link to the repository file ``path``; ``line``, where known, is the line of the definition the
         link is about (stated in its text: a browser opens a plain file at its top). ``href`` None when the
@@ -337,11 +326,13 @@ class PageBuilder:
         return {"href": self.href(path), "text": text, "label": label, "line": line}
 
     def dataset_link(self, path) -> dict:
-        """A dataset's link: its text preview (``stickslip show``) for a netCDF file, beside the file."""
-        out = self.preview_of(path) if str(path).endswith(".nc") else None
-        file = self.href(path)
-        if out is None:
+        """A dataset's link: for a netCDF file under results/, its text preview (``stickslip show``, a page
+        registered for ``context`` to write), beside the file."""
+        full, file = self.workdir / path, self.href(path)
+        rel = Path(os.path.relpath(full, self.results))
+        if not (str(path).endswith(".nc") and full.is_file() and rel.parts[0] != ".."):
             return {"href": file, "text": str(path), "file": None}
+        out = self.text_jobs.setdefault(full, self.previews / f"{rel.as_posix()}.html")
         return {"href": self.page_path(out), "text": str(path), "file": file}
 
     # -- inverse --------------------------------------------------------------------------------------
@@ -408,16 +399,14 @@ class PageBuilder:
         return [r for r in self.rows if number in self.figures_of.get(r["claim"], [])]
 
     def per_reading(self, rows: list[dict], fe: bool) -> list[dict]:
-        """The figure's verdict in every reading (FE: every FE reading, from the FE readings table)."""
+        """The figure's verdict in every reading (FE: every FE reading, in the order of the FE readings table,
+        whose rows each name their reading)."""
         if fe:
             ids = {r["claim"] for r in rows}
-            table = [r for r in self.fe_rows if r["claim"] in ids]
-            readings = list(dict.fromkeys(r["reading"] for r in table))
-            return [
-                {"reading": rd, "verdict": tally([r for r in table if r["reading"] == rd]).label}
-                for rd in readings
-            ]
-        readings = readings_by_preference(rows, self.order)
+            rows = [r for r in self.fe_rows if r["claim"] in ids]
+        readings = (
+            dict.fromkeys(r["reading"] for r in rows) if fe else readings_by_preference(rows, self.order)
+        )
         return [{"reading": rd, "verdict": tally(rows_in_reading(rows, rd)).label} for rd in readings]
 
     def images(self, number: int, reading: str, rows: list[dict]) -> list[dict]:
@@ -472,7 +461,7 @@ class PageBuilder:
             **{column: row.get(column, "") for column in SPEED_COLUMNS.values()},
         }
 
-    def headline(self, rows: list[dict], fe: bool) -> list[dict]:
+    def headline(self, rows: list[dict]) -> list[dict]:
         """The paper's numbers for the figure beside this run's (primary reading), amplitude, frequency and
         stick/slip first: every value claim that is evidence, with its deviation in %."""
 
@@ -483,23 +472,8 @@ class PageBuilder:
                 r["claim"],
             )
 
-        out = []
-        for r in sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank):
-            dev = as_number(r["deviation"])
-            claim = self.claim.get(r["claim"])
-            out.append(
-                {
-                    "claim": r["claim"],
-                    "quantity": r["quantity"],
-                    "speed": DISC_SPEEDS.get(speed_of(claim), "") if fe else "",
-                    "reported": fmt(r["reported"]),
-                    "measured": fmt(r["measured"]),
-                    "unit": r["unit"],
-                    "deviation": f"{100 * dev:+.0f} %" if dev == dev else "",
-                    "status": r["status"],
-                }
-            )
-        return out
+        values = sorted((r for r in rows if r["kind"] in ("value", "ratio") and is_evidence(r)), key=rank)
+        return [{**self.claim_row(r), "deviation": percent(r["deviation"])} for r in values]
 
     def card(self, entry: dict) -> dict:
         number = entry.get("number")
@@ -547,14 +521,8 @@ class PageBuilder:
             for p in self.dataset_paths(r["claim"]):
                 data.append(p.format(reading=primary) if "{reading}" in p else p)
         datasets = [self.dataset_link(p) for p in dict.fromkeys(data)]
-        notebook = None
-        if number is not None:
-            found = notebook_link(number, self.notebooks)
-            if found:
-                notebook = {
-                    "name": found[0],
-                    "href": f"{self.href(paths.notebook(found[0]))}#{found[1]}",
-                }
+        found = notebook_link(number, self.notebooks)  # none for a text card (no number)
+        notebook = found and {"name": found[0], "href": f"{self.href(paths.notebook(found[0]))}#{found[1]}"}
         title = entry.get("title") or (
             f"Fig. {number}" + (" (the μ(v_r) table)" if entry.get("table") else "")
         )
@@ -573,7 +541,7 @@ class PageBuilder:
             "speeds": speeds,
             "best_drawn": best_drawn,
             "n_rows": len(evidence),
-            "headline": self.headline(evidence, fe),
+            "headline": self.headline(evidence),
             "claims": [self.claim_row(r) for r in evidence],
             "apart": [self.claim_row(r) for r in apart],
             "per_reading": self.per_reading(everything, fe) if everything else [],
@@ -737,13 +705,9 @@ def _templates():
     )
 
 
-def render(context: dict) -> str:
-    css = (HERE / "templates" / "page.css").read_text()
-    return _templates().get_template("page.html.j2").render(css=css, **context)
-
-
 def build_page(out: Path, builder: PageBuilder) -> Path:
-    """Write the page to ``out`` (atomically) and return its path."""
-    out = Path(out)
-    write_text_atomic(out, render(builder.context()))
-    return out
+    """Write the page, its CSS inline, to ``out`` (atomically) and return its path."""
+    css = (HERE / "templates" / "page.css").read_text()
+    return write_text_atomic(
+        out, _templates().get_template("page.html.j2").render(css=css, **builder.context())
+    )

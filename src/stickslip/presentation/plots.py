@@ -14,14 +14,10 @@ FAILED_TEXT = "failed – not a result"
 METHOD_STYLE = {"exact": dict(color="C0", lw=1.6), "ode45": dict(color="C3", lw=1.0, ls="--")}
 
 
-def _style(method):
-    return METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
-
-
 def _draw_run(ax_x, ax_v, ds, method, kind):
     """One method's run: x and v over time (``timeseries``), v over time (``velocity``) or v over x
     (``phase``)."""
-    style = _style(method)
+    style = METHOD_STYLE.get(method, dict(lw=1.0, ls=":"))
     if kind == "timeseries":
         ax_x.plot(ds.time, ds.displacement, label=method, **style)
     if kind in ("timeseries", "velocity"):
@@ -37,6 +33,17 @@ def _belt_velocity(ax, ds):
 def _failed_ticks(ax, x):
     """Failed runs as red ticks on the bottom edge (never drawn as values)."""
     ax.plot(x, np.zeros(len(x)), "|", color="red", ms=12, mew=2, transform=ax.get_xaxis_transform())
+
+
+def _runs(ax, x, y, ok, label="", **style):
+    """The runs that succeeded (``ok``) as a line, its ``label`` counting the failed ones, which are drawn as
+    red ticks (never as values)."""
+    failed = int((~ok).sum())
+    count = f" ({failed} runs failed – not results)" if failed and label else ""
+    (line,) = ax.plot(x[ok], y[ok], ".-", label=label + count, **style)
+    if failed:
+        _failed_ticks(ax, x[~ok])
+    return line
 
 
 def _failed_note(ax, ds, method, row):
@@ -102,29 +109,15 @@ STATUS_COLOUR = {
 
 def mark_reported(ax, *, x=None, y=None, label=None, color="k"):
     """Dotted reference line for a number the paper reports."""
+    font = dict(fontsize=8, color=color)
     if y is not None:
         ax.axhline(y, color=color, ls=":", lw=1)
-        ax.annotate(
-            label or f"paper: {y:g}",
-            (1.0, y),
-            xycoords=("axes fraction", "data"),
-            ha="right",
-            va="bottom",
-            fontsize=8,
-            color=color,
-        )
+        where = dict(xycoords=("axes fraction", "data"), ha="right", va="bottom")
+        ax.annotate(label or f"paper: {y:g}", (1.0, y), **where, **font)
     if x is not None:
         ax.axvline(x, color=color, ls=":", lw=1)
-        ax.annotate(
-            label or f"paper: {x:g}",
-            (x, 1.0),
-            xycoords=("data", "axes fraction"),
-            ha="left",
-            va="top",
-            fontsize=8,
-            color=color,
-            rotation=90,
-        )
+        where = dict(xycoords=("data", "axes fraction"), ha="left", va="top", rotation=90)
+        ax.annotate(label or f"paper: {x:g}", (x, 1.0), **where, **font)
 
 
 def eq6_figure(ds):
@@ -194,9 +187,8 @@ def sweep_figure(paper, dense, title: str, reading: str):
         if var == "stick_fraction":
             ax.plot(x[ok], 1 - dense[var].values[ok], ".-", ms=3, lw=0.8, label="slip_fraction")
             ax.legend(fontsize=7)
-        if (~ok).any():
-            for xf in x[~ok]:
-                ax.axvline(xf, color="red", alpha=0.15, lw=2)
+        for xf in x[~ok]:
+            ax.axvline(xf, color="red", alpha=0.15, lw=2)
         ax.set_ylabel(label, fontsize=8)
         if row == len(SWEEP_METRICS) - 1:
             ax.set_xlabel(
@@ -211,14 +203,9 @@ def critical_speed_figure(datasets: dict):
     """Continuation over belt speed: stick fraction and amplitude per reading, critical speed marked."""
     fig, (ax_s, ax_a) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for reading, ds in datasets.items():
-        vb = ds.belt_velocity.values
-        ok = ds.solver_ok.values == 1
-        (line,) = ax_s.plot(vb[ok], ds.stick_fraction.values[ok], ".-", label=reading)
-        ax_a.plot(vb[ok], ds.amplitude_peak_to_peak.values[ok], ".-", color=line.get_color())
-        if (~ok).any():
-            line.set_label(f"{reading} ({int((~ok).sum())} runs failed – not results)")
-            for ax in (ax_s, ax_a):
-                _failed_ticks(ax, vb[~ok])
+        vb, ok = ds.belt_velocity.values, ds.solver_ok.values == 1
+        line = _runs(ax_s, vb, ds.stick_fraction.values, ok, reading)
+        _runs(ax_a, vb, ds.amplitude_peak_to_peak.values, ok, color=line.get_color())
         vc = float(ds.critical_belt_speed)
         if np.isfinite(vc) and vc > 0:
             ax_s.axvline(vc, color=line.get_color(), ls=":", lw=1)
@@ -258,13 +245,9 @@ def dense_map_figure(ds, names, title: str):
             # sign for |v_r| > 1/sigma) would otherwise flatten the map; arrows on the colour bar mark them.
             values = data.compressed()
             vmin, vmax = np.percentile(values, [1, 99]) if values.size else (0.0, 1.0)
-            below, above = (
-                bool(values.size and values.min() < vmin),
-                bool(values.size and values.max() > vmax),
-            )
-            extend = {(False, False): "neither", (True, False): "min", (False, True): "max"}.get(
-                (below, above), "both"
-            )
+            below = bool(values.size and values.min() < vmin)
+            above = bool(values.size and values.max() > vmax)
+            extend = "both" if below and above else "min" if below else "max" if above else "neither"
             norm = matplotlib.colors.Normalize(vmin, vmax)
             if values.size and values.min() > 0 and values.max() > 1e3 * values.min():  # spans decades
                 norm, extend = matplotlib.colors.LogNorm(values.min(), values.max()), "neither"
@@ -371,20 +354,16 @@ def sweep_metrics_vs_reported(datasets: dict, metrics, reported=(), *, title="")
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.6 * len(metrics), 3.2), squeeze=False)
     for ax, (var, label) in zip(axes[0], metrics):
         for r, ds in datasets.items():
-            x = ds[param].values
-            ok = ds.solver_ok.values == 1
-            nfail = int((~ok).sum())
-            ax.plot(
-                x[ok],
-                ds[var].values[ok],
-                ".-",
+            _runs(
+                ax,
+                ds[param].values,
+                ds[var].values,
+                ds.solver_ok.values == 1,
+                r,
                 ms=3,
                 lw=0.9,
                 color=colours[r],
-                label=r + (f" ({nfail} runs failed – not results)" if nfail else ""),
             )
-            if nfail:
-                _failed_ticks(ax, x[~ok])
         for rvar, rx, ry, rlabel in reported:
             if rvar == var:
                 ax.plot([rx], [ry], "x", color="k", ms=9, mew=2, zorder=5, label=None)  # the paper's number
@@ -442,22 +421,16 @@ def readings_grid(datasets: dict, kind="timeseries", *, title="", marks=None):
             ax_a.set_title(reading, fontsize=9)
             ax_a.set_xlabel("x [mm]", fontsize=8)
             ax_a.set_ylabel("dx/dt [mm/s]", fontsize=8)
+        targets = {"timeseries": {"x": ax_a, "v": ax_b}, "velocity": {"v": ax_a}, "phase": {"phase": ax_a}}
         for m in marks:
-            target = {
-                "x": ax_a if kind == "timeseries" else None,
-                "v": ax_b if kind == "timeseries" else (ax_a if kind == "velocity" else None),
-                "phase": ax_a if kind == "phase" else None,
-            }[m.get("on", "x")]
-            if target is not None:
+            if m.get("on", "x") not in ("x", "v", "phase"):
+                raise KeyError(m["on"])
+            if (target := targets[kind].get(m.get("on", "x"))) is not None:
                 mark_reported(target, **{k: v for k, v in m.items() if k != "on"})
-    if kind == "timeseries":
-        axes[-1, 0].set_xlabel("time [s]")
-        axes[-1, 1].set_xlabel("time [s]")
-        axes[0, 1].legend(fontsize=7, loc="upper right")
-    elif kind == "velocity":
+    if kind in ("timeseries", "velocity"):
         for ax in axes[-1]:
             ax.set_xlabel("time [s]")
-        axes.flat[0].legend(fontsize=7, loc="upper right")
+        axes[0, 1 if kind == "timeseries" else 0].legend(fontsize=7, loc="upper right")
     else:
         with_lines = [ax for ax in axes.flat if ax.get_legend_handles_labels()[0]]
         if with_lines:

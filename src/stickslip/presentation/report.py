@@ -11,11 +11,9 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from pathlib import Path
 
 from ..claims.rows import STATUSES
 from ..io.benchmarks import as_number
-from ..io.text_files import write_text_atomic
 
 _FIG = re.compile(r"Fig(?:ure)?s?\.?\s*((?:\d+\s*(?:[-/,]|and|vs\.?|–)?\s*(?:Fig\.?\s*)?)+)", re.IGNORECASE)
 
@@ -101,7 +99,3 @@ def caption_template(captions: dict[str, str]) -> str:
         "{% endif %}",
     ]
     return "\n".join(parts) + "\n"
-
-
-def write_captions(captions: dict[str, str], path) -> Path:
-    return write_text_atomic(path, caption_template(captions))

@@ -41,12 +41,10 @@ def summary_text(ds, checksum: str = "") -> str:
     for key in ("source", "history", "interpretation", "method", "solver_message", "fe_reading"):
         if attrs.get(key):
             lines.append(f"  {key}: {str(attrs[key]).splitlines()[-1]}")
-    method = {k[7:]: v for k, v in attrs.items() if k.startswith("method_")}
-    scene = {k[6:]: v for k, v in attrs.items() if k.startswith("scene_")}
-    if scene:
-        lines.append("  scene: " + ", ".join(f"{k}={v}" for k, v in scene.items()))
-    if method:
-        lines.append("  method: " + ", ".join(f"{k}={v}" for k, v in method.items()))
+    for prefix in ("scene", "method"):  # the scene_* and method_* attributes, one line each
+        found = {k.removeprefix(f"{prefix}_"): v for k, v in attrs.items() if k.startswith(f"{prefix}_")}
+        if found:
+            lines.append(f"  {prefix}: " + ", ".join(f"{k}={v}" for k, v in found.items()))
     if "outcome" in ds and "mechanism" in ds["outcome"].attrs:  # the run's answer, before its numbers
         lines.insert(1, f"  outcome: {_outcome(ds)}: {ds['outcome'].attrs['mechanism']}")
     scalars = [n for n in ds.data_vars if ds[n].ndim == 0 and ds[n].dtype.kind in "fiu"]
