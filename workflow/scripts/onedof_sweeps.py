@@ -8,7 +8,7 @@ from functools import partial
 
 from stickslip.ensemble import EnsembleSpec, ensemble_dataset
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.progress import log_to_file, step_callback
+from stickslip.io.progress import Progress, log_to_file
 from stickslip.schema import OnedofJob
 from stickslip.studies.onedof import sweep_from_config
 from stickslip.studies.specs import PERTURBED_FIELDS, from_job_params, sweep_spec
@@ -20,7 +20,7 @@ ensemble = EnsembleSpec.from_mapping(params.ensemble).without_blas()  # 1-DOF: n
 for (sweep, dense), path in zip(params.runs, snakemake.output, strict=True):  # noqa: F821
     name = f"{sweep}_dense" if dense else sweep
     spec = sweep_spec(onedof, sweep, reading)
-    progress = partial(step_callback, f"sweep {name}", sink=logging.info)
+    progress = partial(Progress, f"sweep {name}", sink=logging.info)
     ds = ensemble_dataset(
         from_job_params(
             partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress)
