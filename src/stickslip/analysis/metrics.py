@@ -85,6 +85,12 @@ def cf_variable(dims, values, units: str, long_name: str, **attrs) -> tuple:
     return dims, values, {"units": units, "long_name": long_name, **attrs}
 
 
+def table_variables(dims, columns: dict[str, tuple[str, str]], values) -> dict[str, tuple]:
+    """The ``cf_variable`` of every column of a table ``name -> (units, long_name)``, in its order, with
+    ``values(name)`` as each one's data: a table of per-run or per-case quantities as dataset variables."""
+    return {name: cf_variable(dims, values(name), units, text) for name, (units, text) in columns.items()}
+
+
 #: The limit-cycle table's names (``limit_cycle_metrics``), in order; the rest of METRICS is extra_metrics'.
 CYCLE_METRICS = tuple(METRICS)[: tuple(METRICS).index("periodic") + 1]
 

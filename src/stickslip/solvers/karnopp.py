@@ -28,10 +28,6 @@ class Karnopp(IvpSolver):
 
     SETTING_NAMES = ("eta", "method", "rtol", "atol")
 
-    @property
-    def label(self) -> str:
-        return f"{self.name}_{self.method}"
-
     def _stick_band(self) -> float:
         return self.eta  # the band is where this method sticks
 

@@ -25,9 +25,5 @@ class SignRungeKutta(IvpSolver):
 
     SETTING_NAMES = ("method", "rtol", "atol", "max_step", "stick_tolerance")
 
-    @property
-    def label(self) -> str:
-        return f"{self.name}_{self.method}"
-
     def _rhs(self, model):
         return model.rhs

@@ -76,11 +76,8 @@ class SwitchSolver(EventDrivenSolver):
     max_zero_length: int = 50
     name: str = "switch"
 
-    def _check_own_settings(self):
-        if self.method not in SWITCH_METHODS:
-            raise ParameterError(f"method: {self.method!r} is not one of {', '.join(SWITCH_METHODS)}")
-
     SETTING_NAMES = ("rtol", "atol", "method", "graze_tolerance")
+    CHOICES = {"method": SWITCH_METHODS}
 
     def _integrated(self, model) -> LawModel:
         return as_law_model(model)
