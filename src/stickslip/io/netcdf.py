@@ -28,18 +28,14 @@ PAPER_REFERENCE = (
 def git_revision(cwd: str | os.PathLike | None = None) -> str:
     """Commit of the working tree (with '-dirty' when it has uncommitted changes), or 'unknown'."""
     cwd = cwd or Path(__file__).resolve().parent
+
+    def git(*args, check=False) -> str:
+        run = subprocess.run(["git", *args], cwd=cwd, capture_output=True, text=True, check=check, timeout=10)
+        return run.stdout.strip()
+
     try:
-        rev = subprocess.run(
-            ["git", "rev-parse", "HEAD"], cwd=cwd, capture_output=True, text=True, check=True, timeout=10
-        ).stdout.strip()
-        dirty = subprocess.run(
-            ["git", "status", "--porcelain", "--untracked-files=no"],
-            cwd=cwd,
-            capture_output=True,
-            text=True,
-            timeout=10,
-        ).stdout.strip()
-        return rev + ("-dirty" if dirty else "")
+        rev = git("rev-parse", "HEAD", check=True)
+        return rev + ("-dirty" if git("status", "--porcelain", "--untracked-files=no") else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
 
