@@ -9,20 +9,22 @@ stick by the method's band. A method supplies only ``_rhs`` (and ``_jac``, ``_st
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
 from .base import OneDofSolver, Samples, SolverError, SolverStats, classify_phase
 
 
+@dataclass
 class IvpSolver(OneDofSolver):
-    """Base of the solve_ivp methods: subclasses are dataclasses with ``method``, ``rtol``, ``atol`` and
-    ``max_step`` fields and implement ``_rhs``."""
+    """Base of the solve_ivp methods: their common settings (a method redeclares a field to change its
+    default); subclasses are dataclasses with a ``name`` and implement ``_rhs``."""
 
-    method: str
-    rtol: float
-    atol: float
-    max_step: float
+    method: str = "RK45"
+    rtol: float = 1e-6
+    atol: float = 1e-9
+    max_step: float = np.inf
 
     # -- hooks ----------------------------------------------------------------------------------------
     def _rhs(self, model) -> Callable:

@@ -20,10 +20,6 @@ from .ivp import IvpSolver
 class Karnopp(IvpSolver):
     eta: float = 1e-3
     """Half-width of the stick band [mm/s]."""
-    method: str = "RK45"
-    rtol: float = 1e-6
-    atol: float = 1e-9
-    max_step: float = np.inf
     name: str = "karnopp"
 
     SETTING_NAMES = ("eta", "method", "rtol", "atol")

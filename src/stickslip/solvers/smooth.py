@@ -37,9 +37,6 @@ class SmoothedSign(IvpSolver):
     eps: float = 1e-3
     """Regularization velocity [mm/s]."""
     method: str = "Radau"
-    rtol: float = 1e-6
-    atol: float = 1e-9
-    max_step: float = np.inf
     stick_tolerance: float = 1e-3
     name: str = "smooth"
 
