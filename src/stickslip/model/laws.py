@@ -84,18 +84,7 @@ class FrictionLaw:
 
     def describe(self) -> dict:
         """Config mapping of the law (what the dataset attributes record)."""
-        out = {"kind": self.kind}
-        for f in fields(self):
-            if f.repr:
-                value = getattr(self, f.name)
-                out[f.name] = value if not isinstance(value, np.ndarray) else value.tolist()
-        return out
-
-    def _check_jump(self) -> None:
-        if self.kinetic_limit > self.static * (1 + 1e-12):
-            raise ParameterError(
-                f"{self.kind}: mu(0+) = {self.kinetic_limit!r} exceeds the static limit {self.static!r}"
-            )
+        return {"kind": self.kind, **{f.name: getattr(self, f.name) for f in fields(self) if f.repr}}
 
 
 @dataclass(frozen=True)
@@ -204,7 +193,10 @@ class TabulatedLaw(FrictionLaw):
         object.__setattr__(self, "_coeffs", [tuple(float(c) for c in col) for col in interp.c.T])
         if self.static_mu is not None:
             object.__setattr__(self, "static_mu", checked_number("static_mu", self.static_mu, "positive"))
-        self._check_jump()
+        if self.kinetic_limit > self.static * (1 + 1e-12):
+            raise ParameterError(
+                f"{self.kind}: mu(0+) = {self.kinetic_limit!r} exceeds the static limit {self.static!r}"
+            )
 
     @property
     def static(self) -> float:
