@@ -84,6 +84,11 @@ def result_files(root: Path) -> list[Path]:
     return sorted(out)
 
 
+def datasets(root: Path) -> list[Path]:
+    """Every netCDF dataset under ``root`` (relative paths; unfinished hidden temporaries excluded)."""
+    return sorted(p.relative_to(root) for p in Path(root).rglob("*.nc") if not p.name.startswith("."))
+
+
 def without_members(ds, labels):
     """The dataset without its ensemble members of these labels (unchanged when it has no ensemble)."""
     from ..ensemble import MEMBER_DIM
