@@ -440,7 +440,7 @@ def _plot_onedof(ds, onedof: Onedof, path: Path, reading: str, out) -> None:
 
 def cmd_fe(args) -> int:
     from . import api
-    from .io.progress import step_callback
+    from .io.progress import Progress
     from .presentation.show import summary_text
 
     started = time.perf_counter()
@@ -451,7 +451,7 @@ def cmd_fe(args) -> int:
             announced.append(label)
             note = f"running {args.scene} ({args.model}); progress every 2 s on stderr"
             print(note, file=sys.stderr, flush=True)
-        return step_callback(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
+        return Progress(label, every=2.0, sink=lambda line: print(line, file=sys.stderr, flush=True))
 
     root, _ = _project(args, keys=("output", "plot"))
     given = ("speed", "rpm", "reading", "model", "t_end", "ensemble", "output", "force")

@@ -30,6 +30,7 @@ from __future__ import annotations
 import copy
 import hashlib
 from collections.abc import Callable, Collection, Mapping
+from contextlib import nullcontext
 from dataclasses import replace
 from fnmatch import fnmatchcase
 from typing import TYPE_CHECKING, Annotated
@@ -74,10 +75,6 @@ class EnsembleSpec:
         return cls(**{k: v for k, v in (data or {}).items() if v is not None})
 
 
-def _is_number(value) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
-
-
 def draw_sign(seed: int, run_id: str, field: str) -> float:
     """The sign (+1.0 or -1.0) of one field's perturbation: the first bit of sha256 over (seed, run id,
     field path) only. Independent of everything else in the mapping and of the machine."""
@@ -85,16 +82,11 @@ def draw_sign(seed: int, run_id: str, field: str) -> float:
     return 1.0 if digest[0] & 1 else -1.0
 
 
-def _field_name(path: str) -> str:
-    """The declared name of a path: list positions dropped (``values[2]`` is a ``values`` field)."""
-    return ".".join(part.split("[", 1)[0] for part in path.split("."))
-
-
 def declared(path: str, fields: Collection[str]) -> bool:
     """Whether the value at ``path`` (dotted keys, ``[i]`` for list positions) is a declared field: a
     pattern of ``fields`` (``fnmatch``, ``*`` within or across keys) matches the path or its tail after a
     dot, so ``beam.length`` declares ``beam.length`` and ``defaults.beam.length`` alike."""
-    name = _field_name(path)
+    name = ".".join(part.split("[", 1)[0] for part in path.split("."))  # ``values[2]`` is a ``values`` field
     return any(fnmatchcase(name, p) or fnmatchcase(name, "*." + p) for p in fields)
 
 
@@ -105,7 +97,7 @@ def _map_numbers(node, fn: Callable[[str, str, float], object], path: str = "", 
         return {k: _map_numbers(v, fn, f"{path}.{k}" if path else str(k), str(k)) for k, v in node.items()}
     if isinstance(node, (list, tuple)):
         return [_map_numbers(v, fn, f"{path}[{i}]", key) for i, v in enumerate(node)]
-    if _is_number(node):
+    if isinstance(node, (int, float)) and not isinstance(node, bool):
         return fn(path, key, node)
     return node
 
@@ -169,11 +161,9 @@ def blas_threads_now() -> int | None:
 
 
 def _run(build: Callable[[dict], xr.Dataset], mapping: dict, threads: int | None) -> xr.Dataset:
-    if threads is None:
-        return build(mapping)
     from threadpoolctl import threadpool_limits
 
-    with threadpool_limits(limits=threads, user_api="blas"):
+    with nullcontext() if threads is None else threadpool_limits(limits=threads, user_api="blas"):
         return build(mapping)
 
 
@@ -210,12 +200,11 @@ def stack_members(datasets: list[xr.Dataset], labels: list[str]) -> xr.Dataset:
     stacked = {}  # assigned at once: each single assignment re-aligns the whole dataset
     for name in metric_names(base):
         var = base[name]
-        values = []
-        for ds in datasets:
-            if name in ds and ds[name].shape == var.shape:
-                values.append(np.asarray(ds[name].values, dtype=float))
-            else:
-                values.append(np.full(var.shape, np.nan))
+        nan = np.full(var.shape, np.nan)
+        values = [
+            np.asarray(ds[name].values, dtype=float) if name in ds and ds[name].shape == var.shape else nan
+            for ds in datasets
+        ]
         attrs = {
             "units": var.attrs.get("units", "1"),
             "long_name": f"{var.attrs.get('long_name', name)}, per perturbation-ensemble member",

@@ -103,8 +103,8 @@ def test_a_run_that_comes_to_rest_has_no_frequency():
 
 
 def test_friction_along_a_solution_ignores_switching_samples():
-    from stickslip.analysis.extra_metrics import extra_metrics
     from stickslip.analysis.friction_curve import friction_along_solution
+    from stickslip.analysis.metrics import extra_metrics
     from stickslip.model import PAPER_BASELINE, friction_law
 
     law = friction_law(PAPER_BASELINE.with_(sigma=0.5), "consistent")
@@ -122,8 +122,7 @@ def test_friction_along_a_solution_ignores_switching_samples():
 def test_every_measured_metric_is_registered_with_its_units():
     """The registry is the one place a metric's units and long name are written: a baseline run's limit-cycle
     table and extra metrics carry exactly the registry's attributes."""
-    from stickslip.analysis.extra_metrics import extra_metrics
-    from stickslip.analysis.metrics import METRICS, limit_cycle_metrics, metric_attrs
+    from stickslip.analysis.metrics import METRICS, extra_metrics, limit_cycle_metrics, metric_attrs
     from stickslip.model import PAPER_BASELINE, BeltModel
     from stickslip.solvers import make_solver
 

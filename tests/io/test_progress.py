@@ -1,4 +1,4 @@
-"""The progress helper: done/total, elapsed and a linear ETA, at most one line every N seconds."""
+"""The progress callback: done/total, elapsed and a linear ETA, at most one line every N seconds."""
 
 from stickslip.io.progress import Progress, format_seconds
 
@@ -13,20 +13,20 @@ class Clock:
 
 def test_lines_are_throttled_and_eta_is_linear():
     clock, lines = Clock(), []
-    progress = Progress(10, label="sweep", every=5.0, sink=lines.append, clock=clock)
-    for _ in range(4):  # 1 s per unit: first line only once 5 s have passed
+    progress = Progress("sweep", every=5.0, sink=lines.append, clock=clock)
+    progress(0, 10)  # the clock starts at the first call
+    for done in range(1, 5):  # 1 s per unit: first line only once 5 s have passed
         clock.now += 1.0
-        progress.advance()
+        progress(done, 10)
     assert lines == []
     clock.now += 1.0
-    progress.advance()
+    progress(5, 10)
     assert lines == ["sweep: 5/10 (50.0 %), elapsed 5.0 s, ETA 5.0 s"]
-    for _ in range(5):
+    for done in range(6, 11):
         clock.now += 1.0
-        progress.advance()
+        progress(done, 10)
     assert lines[-1] == "sweep: 10/10 (100.0 %), elapsed 10.0 s, ETA 0.0 s"  # the last unit always logs
-    progress.finish()
-    assert len(lines) == 2  # finish does not repeat the last line
+    assert progress.lines == lines and len(lines) == 2
 
 
 def test_format_seconds():
@@ -35,11 +35,9 @@ def test_format_seconds():
     assert format_seconds(3720) == "1 h 02 min"
 
 
-def test_step_callback_reports_time_steps_with_an_estimate():
-    from stickslip.io.progress import step_callback
-
+def test_time_steps_are_reported_with_an_estimate():
     lines = []
-    report = step_callback("fe", every=0.0, sink=lines.append)
+    report = Progress("fe", every=0.0, sink=lines.append)
     for done in (10_000, 20_000, 40_000):
         report(done, 40_000)
     assert lines and "40000/40000" in lines[-1].replace(" ", "").replace(",", "")

@@ -10,8 +10,7 @@ from stickslip.model.params import ParameterError
 from stickslip.solvers import STICK, Trajectory, make_solver
 from stickslip.solvers.exact import ExactSwitchSolver, sample_segments
 from stickslip.solvers.switch import SwitchSolver, contact_decision
-from stickslip.validation.closed_form import coulomb_cycle
-from stickslip.validation.cycle import QUANTITIES, cycle_quantities, record_from_segments
+from stickslip.validation.cycle import QUANTITIES, coulomb_cycle, cycle_quantities, record_from_segments
 
 AGREE = 1e-9  # issue 13: affine laws on the two paths agree to 1e-9
 

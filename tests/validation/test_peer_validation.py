@@ -14,14 +14,13 @@ from stickslip.model.params import ParameterError
 from stickslip.schema import Validation, ValidationLaw
 from stickslip.solvers.switch import SwitchSolver
 from stickslip.validation import setup
-from stickslip.validation.closed_form import coulomb_cycle
 from stickslip.validation.compare import (
     extended_table,
     peer_comparison,
     round_trip,
     table_from_segments,
 )
-from stickslip.validation.cycle import EventRecord, cycle_quantities
+from stickslip.validation.cycle import EventRecord, coulomb_cycle, cycle_quantities
 from stickslip.validation.peer import peer_events
 
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "validation.yaml").read_text())["validation"]

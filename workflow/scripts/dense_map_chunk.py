@@ -5,7 +5,7 @@ import time
 
 from stickslip.analysis.sweep import chunk_dataset, chunk_points
 from stickslip.io.netcdf import write_dataset
-from stickslip.io.progress import log_to_file, step_callback
+from stickslip.io.progress import Progress, log_to_file
 from stickslip.studies.specs import dense_map_job
 
 log_to_file(snakemake.log[0])  # noqa: F821
@@ -16,7 +16,7 @@ logging.info("map %s chunk %d/%d: %d of %d grid points", name, chunk + 1, dm.chu
 start = time.perf_counter()
 results = dm.run(
     points,
-    progress=step_callback(f"map {name} chunk {chunk}", every=5.0, sink=logging.info),
+    progress=Progress(f"map {name} chunk {chunk}", every=5.0, sink=logging.info),
 )
 ds = chunk_dataset(dm.axes, dm.chunk_size, chunk, results)
 failed = int((ds.solver_ok.values != 1).sum())

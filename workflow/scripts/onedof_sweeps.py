@@ -6,7 +6,7 @@ metrics only), from stickslip.studies.onedof.sweep_dataset; the claimed ones car
 import logging
 from functools import partial
 
-from stickslip.io.progress import log_to_file, step_callback
+from stickslip.io.progress import Progress, log_to_file
 from stickslip.schema import OnedofJob
 from stickslip.studies.onedof import sweep_from_config
 from stickslip.studies.specs import job_dataset, sweep_spec
@@ -17,7 +17,7 @@ onedof = OnedofJob.model_validate(params.config).onedof
 for (sweep, dense), path in zip(params.runs, snakemake.output, strict=True):  # noqa: F821
     name = f"{sweep}_dense" if dense else sweep
     spec = sweep_spec(onedof, sweep, reading)
-    progress = partial(step_callback, f"sweep {name}", sink=logging.info)
+    progress = partial(Progress, f"sweep {name}", sink=logging.info)
     build = partial(sweep_from_config, sweep=sweep, reading=reading, dense=dense, progress=progress)
     ds = job_dataset(build, params.config, params.ensemble, path, path in params.ensemble_outputs)
     spec.base.write(

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solvers.base import STICK, Trajectory
+from .friction_curve import friction_along_solution
 from .outcome import OUTCOMES, REST_FRACTION, outcome_code, run_outcome
 
 
@@ -59,7 +60,7 @@ METRICS: dict[str, MetricInfo] = {
     "frequency_spectrum": MetricInfo("Hz", "frequency of the spectral peak"),
     "peaks_in_count_window": MetricInfo("1", "displacement maxima in the first {count_window:g} s"),
     "periodic": MetricInfo("1", "last two cycles repeat to 1e-3 (1) or not (0)"),
-    # beyond the limit cycle (analysis.extra_metrics): the decelerating belt and the friction curve
+    # beyond the limit cycle (``extra_metrics``): the decelerating belt and the friction curve
     "early_amplitude": MetricInfo(
         "mm", "peak-to-peak displacement, first half of the run (of the deceleration if the belt stops)"
     ),
@@ -85,7 +86,13 @@ def cf_variable(dims, values, units: str, long_name: str, **attrs) -> tuple:
     return dims, values, {"units": units, "long_name": long_name, **attrs}
 
 
-#: The limit-cycle table's names (``limit_cycle_metrics``), in order; the rest of METRICS is extra_metrics'.
+def table_variables(dims, columns: dict[str, tuple[str, str]], values) -> dict[str, tuple]:
+    """The ``cf_variable`` of every column of a table ``name -> (units, long_name)``, in its order, with
+    ``values(name)`` as each one's data: a table of per-run or per-case quantities as dataset variables."""
+    return {name: cf_variable(dims, values(name), units, text) for name, (units, text) in columns.items()}
+
+
+#: The limit-cycle table's names (``limit_cycle_metrics``), in order; the rest is ``extra_metrics``'.
 CYCLE_METRICS = tuple(METRICS)[: tuple(METRICS).index("periodic") + 1]
 
 
@@ -264,3 +271,27 @@ def limit_cycle_metrics(
         "periodic": periodic,
     }
     return {name: metric(name, value, count_window=count_window) for name, value in values.items()}
+
+
+def extra_metrics(t, x, v, vb, phase, friction, normal_force: float) -> dict[str, float]:
+    """The registered metrics beyond the limit cycle: early/late (velocity) amplitude of a decelerating belt
+    (Fig. 15), the final speed (Fig. 16 settles), the smallest slip friction coefficient (Fig. 17) and the
+    largest relative speed."""
+    t, x, v, vb = (np.asarray(a, dtype=float) for a in (t, x, v, vb))
+    # Halves of the run, or of the deceleration phase when the belt stops: comparing "before" with "after the
+    # belt has stopped" would make any decay claim true by construction.
+    stopped = vb <= 0.0
+    t_ref = float(t[np.argmax(stopped)]) if stopped.any() else float(t[-1])
+    half = t <= 0.5 * t_ref
+    late = ~half & (t <= t_ref)
+    _, mu_slip = friction_along_solution(v, vb, phase, friction, normal_force)
+    with np.errstate(all="ignore"):
+        return {
+            "early_amplitude": float(np.ptp(x[half])),
+            "late_amplitude": float(np.ptp(x[late])),
+            "early_velocity_amplitude": float(np.ptp(v[half])),
+            "late_velocity_amplitude": float(np.ptp(v[late])),
+            "final_speed": float(abs(v[-1])),
+            "friction_min_slip": float(np.min(mu_slip)) if mu_slip.size else np.nan,
+            "relative_speed_max": float(np.max(np.abs(v - vb))),
+        }

@@ -60,10 +60,6 @@ VOLATILE: tuple[tuple[str, str, str], ...] = (
 )
 
 
-def _excluded(rel: str) -> bool:
-    return any(fnmatch(rel, pattern) for pattern in EXCLUDED_FILES)
-
-
 def _comparable_bytes(rel: str, data: bytes) -> bytes:
     for pattern, regex, _ in VOLATILE:
         if fnmatch(rel, pattern):
@@ -81,7 +77,7 @@ def result_files(root: Path) -> list[Path]:
             not path.is_file()
             or any(part.startswith(".") for part in rel.parts)
             or rel.parts[0] in EXCLUDED_FOLDERS
-            or _excluded(rel.as_posix())
+            or any(fnmatch(rel.as_posix(), pattern) for pattern in EXCLUDED_FILES)
         ):
             continue
         out.append(rel)

@@ -28,18 +28,14 @@ PAPER_REFERENCE = (
 def git_revision(cwd: str | os.PathLike | None = None) -> str:
     """Commit of the working tree (with '-dirty' when it has uncommitted changes), or 'unknown'."""
     cwd = cwd or Path(__file__).resolve().parent
+
+    def git(*args, check=False) -> str:
+        run = subprocess.run(["git", *args], cwd=cwd, capture_output=True, text=True, check=check, timeout=10)
+        return run.stdout.strip()
+
     try:
-        rev = subprocess.run(
-            ["git", "rev-parse", "HEAD"], cwd=cwd, capture_output=True, text=True, check=True, timeout=10
-        ).stdout.strip()
-        dirty = subprocess.run(
-            ["git", "status", "--porcelain", "--untracked-files=no"],
-            cwd=cwd,
-            capture_output=True,
-            text=True,
-            timeout=10,
-        ).stdout.strip()
-        return rev + ("-dirty" if dirty else "")
+        rev = git("rev-parse", "HEAD", check=True)
+        return rev + ("-dirty" if git("status", "--porcelain", "--untracked-files=no") else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
 
@@ -59,6 +55,15 @@ def flat_attrs(prefix: str, mapping: dict) -> dict:
     return {f"{prefix}{key}": _attr_value(val) for key, val in sorted(mapping.items())}
 
 
+#: ``solver_status`` codes: a numerical failure computed nothing; a divergence is the model's answer.
+SOLVER_STATUS = ("ok", "failed", "diverged")
+#: CF flags of a per-sample or per-segment contact phase (``solvers.base``: -1, 0, 1).
+PHASE_FLAGS = {
+    "flag_values": np.array([-1, 0, 1], dtype=np.int8),
+    "flag_meanings": "slip_backward stick slip_forward",
+}
+
+
 def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = None) -> xr.Dataset:
     """Time series of one run plus its metrics as scalar variables."""
     time = xr.Variable(
@@ -75,12 +80,7 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
             "phase": (
                 "time",
                 traj.phase.astype(np.int8),
-                {
-                    "long_name": "contact phase",
-                    "units": "1",
-                    "flag_values": np.array([-1, 0, 1], dtype=np.int8),
-                    "flag_meanings": "slip_backward stick slip_forward",
-                },
+                {"long_name": "contact phase", "units": "1", **PHASE_FLAGS},
             ),
         },
         coords={"time": time},
@@ -90,12 +90,7 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
         ds["segment_start"] = cf_variable("segment", seg[:, 0], "s", "segment start time")
         ds["segment_end"] = cf_variable("segment", seg[:, 1], "s", "segment end time")
         ds["segment_phase"] = cf_variable(
-            "segment",
-            seg[:, 2].astype(np.int8),
-            "1",
-            "segment contact phase",
-            flag_values=np.array([-1, 0, 1], dtype=np.int8),
-            flag_meanings="slip_backward stick slip_forward",
+            "segment", seg[:, 2].astype(np.int8), "1", "segment contact phase", **PHASE_FLAGS
         )
     stats = traj.stats
     code, message = SOLVER_STATUS.index(stats.status), stats.message or "none"
@@ -123,10 +118,6 @@ def trajectory_dataset(traj: Trajectory, metrics: dict[str, Metric] | None = Non
     for name, metric in (metrics or {}).items():
         scalars[name] = cf_variable((), float(metric.value), metric.units, metric.long_name)
     return ds.assign(scalars)
-
-
-#: ``solver_status`` codes: a numerical failure computed nothing; a divergence is the model's answer.
-SOLVER_STATUS = ("ok", "failed", "diverged")
 
 
 def software_versions() -> dict:
@@ -289,10 +280,13 @@ def estimated_file_bytes(ds: xr.Dataset) -> int:
     return int(ds.nbytes) + attrs + VARIABLE_OVERHEAD_BYTES * (len(ds.variables) + 1)
 
 
-def _check_free_space(path: Path, needed: int) -> None:
+def _disk_full(path: Path, needed: int, exc: BaseException | None = None) -> DiskFullError | None:
+    """The error to raise when the folder of ``path`` lacks room for ``needed`` bytes (or ``exc`` says the
+    disk is full), else None."""
     free = shutil.disk_usage(path.parent).free
-    if free < max(needed, MIN_FREE_BYTES):
-        raise DiskFullError(path, free, needed)
+    if free < max(needed, MIN_FREE_BYTES) or (isinstance(exc, OSError) and exc.errno == errno.ENOSPC):
+        return DiskFullError(path, free, needed)
+    return None
 
 
 def write_dataset(
@@ -325,7 +319,8 @@ def write_dataset(
     ds = cf_fill_in(index_text_dimensions(ds))
     encoding = cf_encoding(ds)
     needed = estimated_file_bytes(ds)
-    _check_free_space(path, needed)
+    if full := _disk_full(path, needed):
+        raise full
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
@@ -339,11 +334,9 @@ def write_dataset(
         publish(tmp, path)
     except BaseException as exc:
         Path(tmp).unlink(missing_ok=True)
-        if isinstance(exc, Exception):
-            # measured with the partial file gone: what is free is what the write could have had
-            free = shutil.disk_usage(path.parent).free
-            if (isinstance(exc, OSError) and exc.errno == errno.ENOSPC) or free < max(needed, MIN_FREE_BYTES):
-                raise DiskFullError(path, free, needed) from exc
+        # measured with the partial file gone: what is free is what the write could have had
+        if isinstance(exc, Exception) and (full := _disk_full(path, needed, exc)):
+            raise full from exc
         raise
     return path
 

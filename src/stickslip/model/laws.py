@@ -39,9 +39,6 @@ import numpy as np
 
 from .params import BeltParams, ParameterError, checked_number
 
-#: Config ``kind`` -> class (filled in below).
-LAW_KINDS: dict[str, type] = {}
-
 
 class FrictionLaw:
     """Common interface: ``mu(v_r)`` in slip, ``static`` at rest, ``force(v_r, N)``, ``breakpoints``."""
@@ -87,26 +84,9 @@ class FrictionLaw:
 
     def describe(self) -> dict:
         """Config mapping of the law (what the dataset attributes record)."""
-        out = {"kind": self.kind}
-        for f in fields(self):
-            if f.repr:
-                value = getattr(self, f.name)
-                out[f.name] = value if not isinstance(value, np.ndarray) else value.tolist()
-        return out
-
-    def _check_jump(self) -> None:
-        if self.kinetic_limit > self.static * (1 + 1e-12):
-            raise ParameterError(
-                f"{self.kind}: mu(0+) = {self.kinetic_limit!r} exceeds the static limit {self.static!r}"
-            )
+        return {"kind": self.kind, **{f.name: getattr(self, f.name) for f in fields(self) if f.repr}}
 
 
-def _register(cls):
-    LAW_KINDS[cls.kind] = cls
-    return cls
-
-
-@_register
 @dataclass(frozen=True)
 class AffineLaw(FrictionLaw):
     """mu_s (1 - sigma min(|v_r|, v_p)): the affine ``consistent`` variant, optionally levelling off."""
@@ -129,7 +109,6 @@ class AffineLaw(FrictionLaw):
         return (self.plateau_speed,) if math.isfinite(self.plateau_speed) else ()
 
 
-@_register
 @dataclass(frozen=True)
 class CoulombLaw(FrictionLaw):
     """Static/kinetic jump: mu_k while slipping, up to mu_s while sticking (mu_s >= mu_k > 0)."""
@@ -143,7 +122,6 @@ class CoulombLaw(FrictionLaw):
         return self.mu_k + 0.0 * np.asarray(speed, dtype=float)
 
 
-@_register
 @dataclass(frozen=True)
 class StribeckLaw(FrictionLaw):
     """mu_k + (mu_s - mu_k) exp(-|v_r| / v_s): continuous at v_r = 0+, falling to mu_k."""
@@ -161,7 +139,6 @@ class StribeckLaw(FrictionLaw):
         return self.mu_k + (self.mu_s - self.mu_k) * np.exp(-speed / self.v_s)
 
 
-@_register
 @dataclass(frozen=True)
 class RationalLaw(FrictionLaw):
     """mu_k + (mu_s - mu_k) / (1 + delta |v_r|); with mu_k = 0 the mu_s / (1 + delta |v_r|) law."""
@@ -176,7 +153,6 @@ class RationalLaw(FrictionLaw):
         return self.mu_k + (self.mu_s - self.mu_k) / (1.0 + self.delta * np.asarray(speed, dtype=float))
 
 
-@_register
 @dataclass(frozen=True)
 class TabulatedLaw(FrictionLaw):
     """mu(|v_r|) from a table (speeds from 0, strictly increasing): PCHIP between rows, held beyond the last.
@@ -217,7 +193,10 @@ class TabulatedLaw(FrictionLaw):
         object.__setattr__(self, "_coeffs", [tuple(float(c) for c in col) for col in interp.c.T])
         if self.static_mu is not None:
             object.__setattr__(self, "static_mu", checked_number("static_mu", self.static_mu, "positive"))
-        self._check_jump()
+        if self.kinetic_limit > self.static * (1 + 1e-12):
+            raise ParameterError(
+                f"{self.kind}: mu(0+) = {self.kinetic_limit!r} exceeds the static limit {self.static!r}"
+            )
 
     @property
     def static(self) -> float:
@@ -267,6 +246,10 @@ class TabulatedLaw(FrictionLaw):
         return cls(speed, values, static_mu=static_mu, source=str(path))
 
 
+#: Config ``kind`` -> class.
+LAW_KINDS: dict[str, type] = {
+    cls.kind: cls for cls in (AffineLaw, CoulombLaw, StribeckLaw, RationalLaw, TabulatedLaw)
+}
 #: Config keys of each kind: its fields (a table is read from ``path``).
 _LAW_KEYS = {kind: {f.name for f in fields(cls)} for kind, cls in LAW_KINDS.items()}
 _LAW_KEYS["tabulated"] = {"path", "static_mu"}

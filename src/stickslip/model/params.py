@@ -132,11 +132,9 @@ def effective_mass(mass: float, units: str) -> float:
 
     ``as_given`` uses the printed number; ``si`` converts kg to N s^2/mm (factor 1e-3).
     """
-    if units == "as_given":
-        return mass
-    if units == "si":
-        return mass * 1e-3
-    raise ParameterError(f"units: {units!r} is not one of {UNIT_READINGS}")
+    if units not in UNIT_READINGS:
+        raise ParameterError(f"units: {units!r} is not one of {UNIT_READINGS}")
+    return mass if units == "as_given" else mass * 1e-3
 
 
 #: The paper's baseline (Section 3) with sigma as printed in the text.

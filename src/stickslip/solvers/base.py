@@ -102,18 +102,6 @@ def classify_phase(v, vb, tolerance: float) -> np.ndarray:
     return phase
 
 
-class Timer:
-    """Process CPU time of a block (insensitive to other load on the machine)."""
-
-    def __enter__(self):
-        self.start = time.process_time()
-        return self
-
-    def __exit__(self, *exc):
-        self.elapsed = time.process_time() - self.start
-        return False
-
-
 #: Method settings that must be positive numbers (``max_step`` may be inf: no limit).
 POSITIVE_SETTINGS = ("rtol", "atol", "eta", "eps", "h", "stick_tolerance", "graze_tolerance", "max_step")
 #: Settings that are counts (at least 1).
@@ -125,8 +113,8 @@ IVP_METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA")
 def check_settings(solver) -> None:
     """Reject non-physical or meaningless method settings with the setting named, so a bad value in the
     config fails when the pipeline starts, not inside a job (a step or tolerance <= 0 or NaN, a count < 1,
-    theta outside (0, 1], an unknown solve_ivp method). Raises ``ParameterError`` (a ``ValueError``): the
-    callers that re-key config errors catch that type."""
+    theta outside (0, 1], a value not among its ``CHOICES``: by default solve_ivp's methods). Raises
+    ``ParameterError`` (a ``ValueError``): the callers that re-key config errors catch that type."""
     # lazy: model pulls in scipy; readers of Trajectory need not
     from ..model.params import ParameterError, checked_number
 
@@ -140,9 +128,10 @@ def check_settings(solver) -> None:
     theta = getattr(solver, "theta", None)
     if theta is not None and not 0 < checked_number("theta", theta) <= 1:
         raise ParameterError(f"theta: must be in (0, 1], got {theta!r}")
-    method = getattr(solver, "method", None)
-    if method is not None and method not in IVP_METHODS:
-        raise ParameterError(f"method: {method!r} is not one of {IVP_METHODS}")
+    for name, choices in {"method": IVP_METHODS, **getattr(solver, "CHOICES", {})}.items():
+        value = getattr(solver, name, None)
+        if value is not None and value not in choices:
+            raise ParameterError(f"{name}: {value!r} is not one of {choices}")
 
 
 def reading_model(model, solver: str):
@@ -206,7 +195,7 @@ class OneDofSolver:
     * ``_sample(raw, t_eval, belt_velocity) -> Samples``: that solution on the output times (not timed),
 
     plus ``SETTING_NAMES`` and, where they differ from the defaults, ``label``, ``_integrated``,
-    ``_solve_settings`` and ``_check_own_settings``. Subclasses are dataclasses with a ``name`` field.
+    ``_solve_settings`` and ``CHOICES``. Subclasses are dataclasses with a ``name`` field.
     """
 
     name: str
@@ -215,8 +204,10 @@ class OneDofSolver:
     #: A method that records stick/slip segments stores an empty table when it fails (same dataset layout).
     records_segments = False
 
+    #: Settings that take one of a few values (name -> choices), beyond solve_ivp's ``method``.
+    CHOICES: dict[str, tuple[str, ...]] = {}
+
     def __post_init__(self):
-        self._check_own_settings()  # first: a method's own list of choices is the more precise message
         check_settings(self)
 
     # -- hooks ----------------------------------------------------------------------------------------
@@ -228,9 +219,6 @@ class OneDofSolver:
     def label(self) -> str:
         """The method name a trajectory is stored under."""
         return self.name
-
-    def _check_own_settings(self) -> None:
-        """Settings only this method has (the common ones are checked by ``check_settings``)."""
 
     def _integrated(self, model):
         """The model this method integrates: the paper's affine readings unless a method says otherwise."""
@@ -252,12 +240,12 @@ class OneDofSolver:
         model = self._integrated(model)
         t_end = checked_t_end(t_end, self.name)
         stats = SolverStats()
-        with Timer() as timer:
-            try:
-                raw = self._integrate(model, t_end, stats)
-            except SolverError as exc:
-                record_failure(stats, str(exc))
-        stats.cpu_time = timer.elapsed
+        start = time.process_time()  # process CPU time: insensitive to other load on the machine
+        try:
+            raw = self._integrate(model, t_end, stats)
+        except SolverError as exc:
+            record_failure(stats, str(exc))
+        stats.cpu_time = time.process_time() - start
         t_eval = default_t_eval(t_end, t_eval)
         belt = model.belt_velocity(t_eval)
         settings = self._solve_settings(model)

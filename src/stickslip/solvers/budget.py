@@ -1,10 +1,6 @@
-"""Work budget for methods that can stall (step-size collapse at the sign discontinuity).
-
-``budgeted(model, max_rhs, max_cpu)`` returns a proxy of the model whose ``rhs`` and ``acceleration``
-raise :class:`BudgetExceeded` once the evaluation count or the process CPU time passes the budget.
-Any method that calls the model (``sign_rk``, ``smooth``) thereby stops cleanly; ``run_with_budget``
-turns that into a failed ``Trajectory`` (status 'failed', message 'budget: ...') so a stalled run is
-recorded as data instead of hanging the study.
+"""Work budget for methods that can stall (step-size collapse at the sign discontinuity): the model's
+``rhs`` and ``acceleration`` raise :class:`BudgetExceeded` past a count of evaluations or of CPU time, and
+``run_with_budget`` records that as a failed ``Trajectory`` (message 'budget: ...'), data instead of a hang.
 """
 
 from __future__ import annotations

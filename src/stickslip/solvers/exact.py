@@ -31,6 +31,8 @@ __all__ = [
     "StickMotion",
     "first_exit_root",
     "sample_segments",
+    "stick_or_slip",
+    "stick_segment",
 ]
 
 #: Samples of the slip gap per scanning window: the first window, and the largest it doubles up to.
@@ -68,6 +70,33 @@ def first_exit_root(c0: float, c1: float, c2: float) -> float:
     return min(exits) if exits else math.inf
 
 
+def stick_or_slip(demand: float, limit: float) -> int:
+    """At v_r = 0 under friction that holds the mass (static limit ``limit`` [N]): stick while |D| <= limit,
+    else slip the way the demand D pushes (D > limit: backward)."""
+    if demand > limit:
+        return SLIP_BACKWARD
+    if demand < -limit:
+        return SLIP_FORWARD
+    return STICK
+
+
+def stick_segment(params, t0: float, x0: float, t_limit: float, d0: float, smooth: float, limit: float):
+    """The stick from (t0, x0), the mass on the belt: the demand D (d0 at t0; its part linear in the belt
+    speed has the coefficient ``smooth``) is quadratic in time, and the stick lasts while |D| <= ``limit``.
+    Returns (its Segment up to the release or ``t_limit``, the release's slip direction or None)."""
+    vb0 = float(params.belt_velocity_at(t0))
+    slope = float(params.belt_acceleration_at(t0))
+    d1 = smooth * slope + params.stiffness * vb0
+    d2 = 0.5 * params.stiffness * slope
+    up = first_exit_root(d0 - limit, d1, d2)
+    down = first_exit_root(-limit - d0, -d1, -d2)
+    tau = min(up, down)
+    motion = StickMotion(x0, vb0, slope)
+    if t0 + tau >= t_limit:
+        return Segment(t0, t_limit, STICK, motion), None
+    return Segment(t0, t0 + tau, STICK, motion), SLIP_BACKWARD if up <= down else SLIP_FORWARD
+
+
 @dataclass
 class ExactSwitchSolver(EventDrivenSolver):
     """The exact solver in pure Python, the reference of the compiled ``CompiledExactSolver`` (the method
@@ -98,11 +127,7 @@ class ExactSwitchSolver(EventDrivenSolver):
         a = model.friction.a
         d = float(model.stick_demand(t, x))
         if a < 0:  # attracting: stick while the demand fits the static limit
-            if d > -a:
-                return SLIP_BACKWARD
-            if d < a:
-                return SLIP_FORWARD
-            return STICK
+            return stick_or_slip(d, -a)
         if -a - d > 0:
             return SLIP_FORWARD
         if a - d < 0:
@@ -111,22 +136,10 @@ class ExactSwitchSolver(EventDrivenSolver):
 
     @staticmethod
     def _stick(model: BeltModel, t0: float, x0: float, t_limit: float):
-        p = model.params
-        a_abs = abs(model.friction.a)
-        vb0 = float(model.belt_velocity(t0))
-        slope = float(p.belt_acceleration_at(t0))
-        motion = StickMotion(x0, vb0, slope)
-        d0 = float(model.stick_demand(t0, x0))
-        smooth = p.damping - model.friction.b - model.friction.kappa
-        d1 = smooth * slope + p.stiffness * vb0
-        d2 = 0.5 * p.stiffness * slope
-        up = first_exit_root(d0 - a_abs, d1, d2)
-        down = first_exit_root(-a_abs - d0, -d1, -d2)
-        tau = min(up, down)
-        if t0 + tau >= t_limit:
-            return Segment(t0, t_limit, STICK, motion), None
-        release = SLIP_BACKWARD if up <= down else SLIP_FORWARD
-        return Segment(t0, t0 + tau, STICK, motion), release
+        f, d0 = model.friction, float(model.stick_demand(t0, x0))
+        return stick_segment(
+            model.params, t0, x0, t_limit, d0, model.params.damping - f.b - f.kappa, abs(f.a)
+        )
 
     def _slip(self, model: BeltModel, t0: float, x0: float, v0: float, s: int, t_limit: float):
         """One slip segment in direction s; returns (segment, hit) with hit = reached v_r = 0.

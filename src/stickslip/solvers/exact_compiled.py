@@ -1,14 +1,9 @@
 """The exact event-driven solver, compiled: the pipeline's method ``exact``.
 
-:class:`CompiledExactSolver` runs the algorithm of the pure-Python reference
-:class:`stickslip.solvers.exact.ExactSwitchSolver` (same settings, same events: stick, release, grazing, the
-belt's stop; same counters, failures and exceptions) as one numba function over the model's numbers
-(:mod:`stickslip.solvers.exact_kernel`), and samples its segments there too. It accepts exactly the models
-the reference accepts: a ``BeltModel`` of any affine friction law (the three readings, a friction plateau,
-the inverse study's own laws), a ``LawModel`` of an ``AffineLaw`` (converted to its consistent reading, as
-the reference does); any other law is refused with the reference's error. The two agree to the root
-search's tolerance, not bit for bit (``tests/solvers/test_exact_compiled.py``); the reference stays the
-test oracle and the readable statement of the algorithm.
+:class:`CompiledExactSolver` runs the reference :class:`stickslip.solvers.exact.ExactSwitchSolver`'s
+algorithm (same settings, events, counters, failures and exceptions) as one numba function over the model's
+numbers, and samples its segments there too (:mod:`stickslip.solvers.exact_kernel`: how, and how closely the
+two agree). It accepts exactly the models the reference accepts and refuses the others with its error.
 
 numba is imported on the first solve, not when the solver is built: the config check at parse time builds
 every solver, and a job that only reads trajectories never compiles anything. The compiled functions are

@@ -48,7 +48,6 @@ BRENT_MAXITER = 100
 
 # model / settings vector indices (``run``'s ``par``)
 P_M, P_C, P_K, P_A, P_B, P_KAPPA, P_VP, P_ASTICK, P_X0, P_V0, P_VB, P_DECEL, P_STOP = range(13)
-N_PAR = 13
 
 # slip segment record (a tuple of floats, built by ``_slip_setup``)
 # (m, c, k, g0, g1, p0, p1, alpha, w2, w, h0, h1, q, vs, s, vb0, slope, vp, outside, plateau)

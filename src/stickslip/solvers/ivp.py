@@ -9,30 +9,22 @@ stick by the method's band. A method supplies only ``_rhs`` (and ``_jac``, ``_st
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
 from .base import OneDofSolver, Samples, SolverError, SolverStats, classify_phase
 
 
-def counted(fn: Callable, counts: dict, key: str) -> Callable:
-    """``fn`` that adds one to ``counts[key]`` per call."""
-
-    def wrapper(t, y):
-        counts[key] += 1
-        return fn(t, y)
-
-    return wrapper
-
-
+@dataclass
 class IvpSolver(OneDofSolver):
-    """Base of the solve_ivp methods: subclasses are dataclasses with ``method``, ``rtol``, ``atol`` and
-    ``max_step`` fields and implement ``_rhs``."""
+    """Base of the solve_ivp methods: their common settings (a method redeclares a field to change its
+    default); subclasses are dataclasses with a ``name`` and implement ``_rhs``."""
 
-    method: str
-    rtol: float
-    atol: float
-    max_step: float
+    method: str = "RK45"
+    rtol: float = 1e-6
+    atol: float = 1e-9
+    max_step: float = np.inf
 
     # -- hooks ----------------------------------------------------------------------------------------
     def _rhs(self, model) -> Callable:
@@ -47,17 +39,25 @@ class IvpSolver(OneDofSolver):
         """|v - V_b| [mm/s] below which a sample is labelled stick (these methods have no stick state)."""
         return self.stick_tolerance
 
+    @property
+    def label(self) -> str:
+        return f"{self.name}_{self.method}"
+
     # -- the family's part of the contract -----------------------------------------------------------
     def _integrate(self, model, t_end: float, stats: SolverStats):
         # imported here: the config check at parse time builds every solver, and scipy.integrate is ~0.5 s
         from scipy.integrate import solve_ivp
 
-        counts = {"rhs": 0}
-        jac = self._jac(model)
+        own_rhs, jac = self._rhs(model), self._jac(model)
         kwargs = {} if jac is None else {"jac": jac}
+
+        def rhs(t, y):  # counted: the counters mean the same for every method
+            stats.rhs_evaluations += 1
+            return own_rhs(t, y)
+
         try:
             sol = solve_ivp(
-                counted(self._rhs(model), counts, "rhs"),
+                rhs,
                 (0.0, t_end),
                 [model.params.x0, model.params.v0],
                 method=self.method,
@@ -69,8 +69,6 @@ class IvpSolver(OneDofSolver):
             )
         except (ValueError, ArithmeticError) as exc:  # e.g. a non-finite Jacobian
             raise SolverError(f"{type(exc).__name__}: {exc}") from None
-        finally:  # the work done counts on a failed run too
-            stats.rhs_evaluations = counts["rhs"]
         if not sol.success:
             raise SolverError(str(sol.message))
         stats.steps = max(len(sol.t) - 1, 0)

@@ -20,17 +20,9 @@ from .ivp import IvpSolver
 class Karnopp(IvpSolver):
     eta: float = 1e-3
     """Half-width of the stick band [mm/s]."""
-    method: str = "RK45"
-    rtol: float = 1e-6
-    atol: float = 1e-9
-    max_step: float = np.inf
     name: str = "karnopp"
 
     SETTING_NAMES = ("eta", "method", "rtol", "atol")
-
-    @property
-    def label(self) -> str:
-        return f"{self.name}_{self.method}"
 
     def _stick_band(self) -> float:
         return self.eta  # the band is where this method sticks

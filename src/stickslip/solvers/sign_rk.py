@@ -8,26 +8,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from .ivp import IvpSolver
 
 
 @dataclass
 class SignRungeKutta(IvpSolver):
-    method: str = "RK45"
     rtol: float = 1e-3
     atol: float = 1e-6
-    max_step: float = np.inf
     stick_tolerance: float = 1e-3
     """|v - V_b| [mm/s] below which a sample is labelled stick (the method itself has no stick state)."""
     name: str = "sign_rk"
 
     SETTING_NAMES = ("method", "rtol", "atol", "max_step", "stick_tolerance")
-
-    @property
-    def label(self) -> str:
-        return f"{self.name}_{self.method}"
 
     def _rhs(self, model):
         return model.rhs

@@ -12,24 +12,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.params import ParameterError
 from .ivp import IvpSolver
 
 REGULARIZATIONS = ("tanh", "arctan")
 
 
 def smooth_sign(kind: str, eps: float):
-    """(sign, derivative) pair of the regularized sign function."""
-    if eps <= 0:
-        raise ValueError(f"eps: must be > 0, got {eps!r}")
+    """(sign, derivative) pair of the regularized sign function (``SmoothedSign`` checks kind and eps)."""
     if kind == "tanh":
         return (lambda u: np.tanh(u / eps)), (lambda u: (1.0 - np.tanh(u / eps) ** 2) / eps)
-    if kind == "arctan":
-        return (
-            (lambda u: (2.0 / np.pi) * np.arctan(u / eps)),
-            (lambda u: (2.0 / np.pi) / (eps * (1.0 + (u / eps) ** 2))),
-        )
-    raise ValueError(f"regularization: {kind!r} is not one of {REGULARIZATIONS}")
+    return (
+        (lambda u: (2.0 / np.pi) * np.arctan(u / eps)),
+        (lambda u: (2.0 / np.pi) / (eps * (1.0 + (u / eps) ** 2))),
+    )
 
 
 #: solve_ivp's explicit methods: they take no Jacobian.
@@ -42,29 +37,19 @@ class SmoothedSign(IvpSolver):
     eps: float = 1e-3
     """Regularization velocity [mm/s]."""
     method: str = "Radau"
-    rtol: float = 1e-6
-    atol: float = 1e-9
-    max_step: float = np.inf
     stick_tolerance: float = 1e-3
     name: str = "smooth"
 
     SETTING_NAMES = ("regularization", "eps", "method", "rtol", "atol", "stick_tolerance")
+    CHOICES = {"regularization": REGULARIZATIONS}
 
     @property
     def label(self) -> str:
         return f"{self.name}_{self.regularization}_{self.method}"
 
-    def _check_own_settings(self):
-        if self.regularization not in REGULARIZATIONS:
-            raise ParameterError(f"regularization: {self.regularization!r} is not one of {REGULARIZATIONS}")
-
     def _rhs(self, model):
         sgn, _ = smooth_sign(self.regularization, self.eps)
-
-        def rhs(t, y):
-            return model.rhs(t, y, sign=sgn)
-
-        return rhs
+        return lambda t, y: model.rhs(t, y, sign=sgn)
 
     def _jac(self, model):
         if self.method in EXPLICIT_METHODS:

@@ -32,9 +32,9 @@ import numpy as np
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
 from ..model.params import ParameterError
-from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, SolverError
-from .events import EventDrivenSolver, Segment, StickMotion
-from .exact import first_exit_root
+from .base import STICK, SolverError
+from .events import EventDrivenSolver, Segment
+from .exact import stick_or_slip, stick_segment
 
 #: solve_ivp methods a slip phase may use.
 SWITCH_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
@@ -76,11 +76,8 @@ class SwitchSolver(EventDrivenSolver):
     max_zero_length: int = 50
     name: str = "switch"
 
-    def _check_own_settings(self):
-        if self.method not in SWITCH_METHODS:
-            raise ParameterError(f"method: {self.method!r} is not one of {', '.join(SWITCH_METHODS)}")
-
     SETTING_NAMES = ("rtol", "atol", "method", "graze_tolerance")
+    CHOICES = {"method": SWITCH_METHODS}
 
     def _integrated(self, model) -> LawModel:
         return as_law_model(model)
@@ -101,20 +98,9 @@ class SwitchSolver(EventDrivenSolver):
     # -- phases ---------------------------------------------------------------------------------------
     @staticmethod
     def _stick(lm: LawModel, t0: float, x0: float, t_limit: float):
-        p = lm.params
-        vb0 = float(lm.belt_velocity(t0))
-        slope = float(p.belt_acceleration_at(t0))
-        limit = lm.static_force
         d0 = float(lm.stick_demand(t0, x0))
-        d1 = p.damping * slope + p.stiffness * vb0
-        d2 = 0.5 * p.stiffness * slope
-        up = first_exit_root(d0 - limit, d1, d2)
-        down = first_exit_root(-limit - d0, -d1, -d2)
-        tau = min(up, down)
-        motion = StickMotion(x0, vb0, slope)
-        if t0 + tau >= t_limit:
-            return Segment(t0, t_limit, STICK, motion), STICK
-        return Segment(t0, t0 + tau, STICK, motion), SLIP_BACKWARD if up <= down else SLIP_FORWARD
+        segment, release = stick_segment(lm.params, t0, x0, t_limit, d0, lm.params.damping, lm.static_force)
+        return segment, STICK if release is None else release
 
     def _slip(self, lm: LawModel, t0: float, x0: float, v0: float, s: int, t_limit: float, stats):
         """One slip phase in direction s; it ends at v_r = 0 ('contact'), a law breakpoint or t_limit."""
@@ -191,10 +177,4 @@ def smooth_interval(nodes: tuple[float, ...], rel: float, rate: float) -> tuple[
 
 def contact_decision(lm: LawModel, t: float, x: float):
     """Stick or the slip direction at v_r = 0: the set-valued static friction decides."""
-    d = float(lm.stick_demand(t, x))
-    limit = lm.static_force
-    if d > limit:
-        return SLIP_BACKWARD
-    if d < -limit:
-        return SLIP_FORWARD
-    return STICK
+    return stick_or_slip(float(lm.stick_demand(t, x)), lm.static_force)

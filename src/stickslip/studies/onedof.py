@@ -8,9 +8,8 @@ import xarray as xr
 
 from ..analysis.critical import continuation, critical_speed
 from ..analysis.divergence import BoundedSolver
-from ..analysis.extra_metrics import extra_metrics
 from ..analysis.friction_curve import friction_along_solution, friction_table
-from ..analysis.metrics import METRICS, cf_variable, limit_cycle_metrics, metric_attrs
+from ..analysis.metrics import METRICS, cf_variable, extra_metrics, limit_cycle_metrics, metric_attrs
 from ..analysis.outcome import FLAG_ATTRS, mechanism, outcome_name, run_outcome
 from ..analysis.sweep import chunk_dataset, chunk_points, grid_size, merge_chunks, run_points
 from ..io.netcdf import trajectory_dataset
@@ -90,7 +89,7 @@ class _ReusedSolve:
         return copy.deepcopy(_SOLVES[key])  # the caller may mark it diverged: the kept one stays as solved
 
 
-#: Metrics beyond the limit-cycle table (stickslip.analysis.extra_metrics), NaN where a run defines none.
+#: Metrics beyond the limit-cycle table (analysis.metrics.extra_metrics), NaN where a run defines none.
 EXTRA_METRICS = tuple(METRICS)[tuple(METRICS).index("early_amplitude") :]
 
 

@@ -137,7 +137,7 @@ def parse_dat(text: str) -> DatResult:
 def static_block(result: DatResult, what: str, nset: str, scene: str) -> dict:
     """The last table ``what`` of set ``nset`` outside a frequency step (the static step's)."""
     found = [b for b in result.blocks if b.what == what and b.nset == nset.upper()]
-    static = [b for b in found if b.mode == 0] or []
+    static = [b for b in found if b.mode == 0]
     if not static:
         raise CalculixError(f"{scene}: the .dat has no static '{what}' table for node set {nset}")
     return static[-1].rows

@@ -14,8 +14,7 @@ from ..schema import Peer, Tolerance
 from ..solvers.base import STICK
 from ..solvers.exact import sample_segments
 from ..solvers.switch import SwitchSolver
-from .closed_form import coulomb_cycle
-from .cycle import QUANTITIES, cycle_quantities, record_from_segments
+from .cycle import QUANTITIES, coulomb_cycle, cycle_quantities, record_from_segments
 from .peer import peer_events
 
 #: Which tolerance (config ``validation.tolerances``) applies to each quantity, by its units.

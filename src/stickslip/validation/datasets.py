@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from ..analysis.metrics import cf_variable
+from ..analysis.metrics import cf_variable, table_variables
 from ..io.text_files import write_csv_atomic
 from .compare import TOLERANCE_CLASS, RoundTrip
 from .cycle import QUANTITIES
@@ -72,25 +72,19 @@ DIFFERENCES = {
 
 
 def round_trip_rows(cases: dict[str, RoundTrip]) -> list[dict]:
-    rows = []
-    for case, rt in cases.items():
-        for q, (units, _) in QUANTITIES.items():
-            source, table = float(rt.source[q]), float(rt.table[q])
-            rows.append(_round_trip_row(case, q, units, source, table, float(rt.table[q] - rt.source[q])))
-        for key, (units, _) in DIFFERENCES.items():
-            rows.append(_round_trip_row(case, key, units, np.nan, np.nan, float(rt.differences[key])))
-    return rows
-
-
-def _round_trip_row(case, quantity, units, source, table, difference) -> dict:
-    return dict(
-        case=case,
-        quantity=quantity,
-        units=units,
-        source_cycle=source,
-        table_cycle=table,
-        difference=difference,
-    )
+    """Per case: each cycle quantity of the source and the table run and their difference, then the
+    differences of the two runs (no cycle values: NaN)."""
+    return [
+        dict(case=case, quantity=q, units=units, source_cycle=source, table_cycle=table, difference=diff)
+        for case, rt in cases.items()
+        for q, units, source, table, diff in (
+            *(
+                (q, u, float(rt.source[q]), float(rt.table[q]), float(rt.table[q] - rt.source[q]))
+                for q, (u, _) in QUANTITIES.items()
+            ),
+            *((key, u, np.nan, np.nan, float(rt.differences[key])) for key, (u, _) in DIFFERENCES.items()),
+        )
+    ]
 
 
 def round_trip_dataset(main: RoundTrip, cases: dict[str, RoundTrip], source_check: float) -> xr.Dataset:
@@ -112,14 +106,12 @@ def round_trip_dataset(main: RoundTrip, cases: dict[str, RoundTrip], source_chec
         for side in ("source", "table"):
             values = [getattr(cases[c], side)[q] for c in names]
             data[f"{q}_{side}"] = cf_variable("case", values, units, f"{long_name}, {side} law")
-    for key, (units, long_name) in DIFFERENCES.items():
-        data[key] = cf_variable("case", [cases[c].differences[key] for c in names], units, long_name)
-    data["last_row_speed"] = cf_variable(
-        "case", [cases[c].last_row_speed for c in names], "mm s-1", "relative speed of the table's last row"
-    )
-    data["max_cycle_speed"] = cf_variable(
-        "case", [cases[c].max_cycle_speed for c in names], "mm s-1", "largest sampled |v_r| of the source run"
-    )
+    data |= table_variables("case", DIFFERENCES, lambda key: [cases[c].differences[key] for c in names])
+    speeds = {
+        "last_row_speed": ("mm s-1", "relative speed of the table's last row"),
+        "max_cycle_speed": ("mm s-1", "largest sampled |v_r| of the source run"),
+    }
+    data |= table_variables("case", speeds, lambda name: [getattr(cases[c], name) for c in names])
     coords = {
         "time": time,
         "speed": cf_variable("speed", main.speed_grid, "mm s-1", "relative speed |v_r|"),
@@ -130,17 +122,14 @@ def round_trip_dataset(main: RoundTrip, cases: dict[str, RoundTrip], source_chec
 
 def methods_dataset(records: list[dict], ref_cycle: dict) -> xr.Dataset:
     """Work-precision of the methods on one law: dimension ``method`` (labels as an auxiliary coordinate)."""
-    fields = (
-        ("state", "1", "max-norm state error relative to the reference's peak-to-peak x and v"),
-        ("period_error", "1", "relative error of the limit-cycle period"),
-        ("amplitude_error", "1", "relative error of the peak-to-peak amplitude"),
-        ("cpu_time", "s", "process CPU time of one run (minimum over repeats)"),
-        ("rhs_evaluations", "1", "right-hand-side evaluations"),
-    )
-    data = {
-        name: cf_variable("method", [float(r[name]) for r in records], units, long_name)
-        for name, units, long_name in fields
+    measured = {
+        "state": ("1", "max-norm state error relative to the reference's peak-to-peak x and v"),
+        "period_error": ("1", "relative error of the limit-cycle period"),
+        "amplitude_error": ("1", "relative error of the peak-to-peak amplitude"),
+        "cpu_time": ("s", "process CPU time of one run (minimum over repeats)"),
+        "rhs_evaluations": ("1", "right-hand-side evaluations"),
     }
+    data = table_variables("method", measured, lambda name: [float(r[name]) for r in records])
     data["failed"] = cf_variable(
         "method",
         np.array([r["status"] != "ok" for r in records], dtype=np.int8),
