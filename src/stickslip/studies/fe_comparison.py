@@ -11,17 +11,11 @@ import numpy as np
 import xarray as xr
 
 from ..analysis.metrics import cf_variable
-from ..fe.quantities import INTERPRETATION, cf_attrs
+from ..fe.quantities import INTERPRETATION, RESPONSE_QUANTITIES, cf_attrs
 from ..fe.step_halving import REL_TOL, converged, sign_converged
 
 #: quantities of the comparison table
-QUANTITIES = (
-    "horizontal_amplitude",
-    "mean_horizontal_displacement",
-    "dominant_frequency",
-    "stick_fraction",
-    "separation_fraction",
-)
+QUANTITIES = RESPONSE_QUANTITIES
 #: largest |relative difference| that counts as agreement
 AGREEMENT_REL = 0.05
 #: the rule of the agreement column, printed beside it in every table row
