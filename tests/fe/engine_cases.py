@@ -17,7 +17,6 @@ import copy
 import functools
 import json
 import sys
-from dataclasses import asdict
 from pathlib import Path
 
 import numpy as np
@@ -80,7 +79,7 @@ def _continuum(
     disc = {"speed_rev_per_min": 15.2} if speed is None else {"surface_speed_mm_s": speed}
     return {
         "kind": "continuum",
-        "beam": asdict(BeamParams()),
+        "beam": BeamParams().model_dump(),
         "disc": disc,
         "contact": {"method": method, "penalty_stiffness": 1000.0, "angle_deg": angle},
         "sticky": sticky,

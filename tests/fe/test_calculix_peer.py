@@ -4,8 +4,6 @@ output parsed, and the failures (ccx missing, a deck ccx refuses) named.
 The tests that run ccx skip, naming why, only when ccx is missing outside CI; under CI=true a missing ccx
 fails them (.ci/run installs Debian's calculix-ccx)."""
 
-from dataclasses import replace
-
 import numpy as np
 import pytest
 import yaml
@@ -52,7 +50,7 @@ def test_the_closed_forms_are_the_config_strips_and_the_decks_carry_its_material
     closed = closed_form_values(beam)
     for r in rows:
         assert r["closed_form"] == closed[r["quantity"]]
-    thick = closed_form_values(replace(STRIP, thickness=2.0))
+    thick = closed_form_values(STRIP.model_copy(update={"thickness": 2.0}))
     assert thick["free_f1"] == pytest.approx(2 * closed["free_f1"], rel=1e-12)
     assert closed["propped_f1"] == pytest.approx(366.39, abs=0.01)  # the documented closed form
     for deck in peer[2].values():

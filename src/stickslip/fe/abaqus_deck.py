@@ -86,9 +86,9 @@ def _nset(name: str, ids) -> list[str]:
     return [f"*NSET, NSET={name}", *_id_lines(ids)]
 
 
-def _material(beam: BeamParams, damping_beta: float = 0.0) -> list[str]:
+def _material(beam: BeamParams, damping_beta: float = 0.0, name: str = "STEEL") -> list[str]:
     lines = [
-        "*MATERIAL, NAME=STEEL",
+        f"*MATERIAL, NAME={name}",
         "*ELASTIC",
         f"{_num(beam.E)}, {_num(beam.poisson_ratio)}",
         "*DENSITY",

@@ -169,10 +169,8 @@ def ccx_scene_deck(
     out += ["*SURFACE, TYPE=NODE, NAME=CORNER", "TIPLOW"]
     # C3D8 face S5 = nodes 3-7-8-4: the top face (nodes 3, 4 on the tangent plane at z0, 7, 8 at z1)
     out += ["*SURFACE, TYPE=ELEMENT, NAME=BLOCKTOP", f"{blk_el}, S5"]
-    out += _material(beam)
-    out += ["*SOLID SECTION, ELSET=STRIP, MATERIAL=STEEL"]
-    out += ["*MATERIAL, NAME=BLOCKMAT", "*ELASTIC", f"{_num(beam.E)}, {_num(beam.poisson_ratio)}"]
-    out += ["*DENSITY", _num(beam.rho), "*SOLID SECTION, ELSET=BLOCK, MATERIAL=BLOCKMAT"]
+    out += [*_material(beam), "*SOLID SECTION, ELSET=STRIP, MATERIAL=STEEL"]
+    out += [*_material(beam, name="BLOCKMAT"), "*SOLID SECTION, ELSET=BLOCK, MATERIAL=BLOCKMAT"]
     out += [
         "*SURFACE INTERACTION, NAME=SI",
         "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",

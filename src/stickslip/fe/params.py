@@ -3,122 +3,76 @@
 Internal unit system (consistent): length mm, time s, force N, mass t (tonne = 1e3 kg), stress MPa.
 Config values are given in engineering units (GPa, kg m-3, m s-2, rev/min, mm/s) and converted here.
 Every validation error is a ``ValueError`` whose message starts with the offending key.
+
+Each parameter set is a pydantic model: a key's type, bound and default are declared once, here; the
+config's typed sections (stickslip.schema.fe) are generated from the same fields, so the two refuse the
+same values naming the same key.
 """
 
 from __future__ import annotations
 
 import math
 import numbers
-import operator
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields, replace
-from typing import Any
+from dataclasses import dataclass, field
+from typing import Annotated, Any, Literal
 
 import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from .mechanics import disc_surface_speed
 
-CONTACT_METHODS = ("kinematic", "penalty", "fixed_normal")
-MASS_KINDS = ("lumped", "consistent")
 INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
-OUTPUT_NODES = ("free_end_lower", "free_end_axis", "free_end_upper")
-DISC_DIRECTIONS = ("clockwise", "counterclockwise")
 
 
-@dataclass(frozen=True)
-class Bound:
-    """What one parameter field accepts, declared once: the dataclass checks it at construction, and the
-    config's typed model (stickslip.schema.fe) is generated from the same declaration, so a key
-    and its bound are written in one place. ``kind``: "number" (finite), "integer", "choice" or "flag"."""
-
-    kind: str = "number"
-    gt: float | None = None
-    ge: float | None = None
-    lt: float | None = None
-    le: float | None = None
-    choices: tuple = ()
-    optional: bool = False  #: None is accepted (one of two alternative keys)
-    description: str | None = None  #: units or meaning, shown in the config's JSON schema
-
-    def limits(self) -> dict:
-        return {k: getattr(self, k) for k in ("gt", "ge", "lt", "le") if getattr(self, k) is not None}
-
-    def accepts(self, value) -> bool:
-        if value is None:
-            return self.optional
-        if self.kind == "choice":
-            return value in self.choices
-        if self.kind == "flag":
-            return isinstance(value, bool)
-        kinds = (numbers.Integral,) if self.kind == "integer" else (numbers.Real,)
-        if isinstance(value, bool) or not isinstance(value, kinds) or not math.isfinite(value):
-            return False
-        tests = {"gt": operator.gt, "ge": operator.ge, "lt": operator.lt, "le": operator.le}
-        return all(tests[k](value, limit) for k, limit in self.limits().items())
-
-    def wanted(self) -> str:
-        if self.kind == "choice":
-            return f"one of {self.choices}"
-        if self.kind == "flag":
-            return "true or false"
-        signs = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
-        what = "an integer" if self.kind == "integer" else "a finite number"
-        return " ".join([what, " and ".join(f"{signs[k]} {v:g}" for k, v in self.limits().items())]).strip()
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+#: a contact angle [deg] (the scenes' contact.angle_deg and the stability study's angles)
+Angle = Annotated[float, Field(ge=-80, le=80, allow_inf_nan=False)]
 
 
-def declared(default, bound: Bound):
-    """A dataclass field with its accepted values (``Bound``)."""
-    return field(default=default, metadata={"bound": bound})
+class Params(BaseModel):
+    """A parameter set: unknown keys are errors, YAML's types are meant (no "5" for 5, no bool for a number),
+    and a refused value raises a ValueError that starts with its key."""
+
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+    def __init__(self, **values: Any) -> None:
+        try:
+            super().__init__(**values)
+        except ValidationError as exc:
+            err = exc.errors()[0]
+            key = ".".join(str(k) for k in err["loc"])
+            if "error" in err.get("ctx", {}):  # a check of this model's own: its message names the key
+                raise ValueError(str(err["ctx"]["error"])) from None
+            if err["type"] == "extra_forbidden":
+                raise ValueError(f"{key}: unknown key for {type(self).__name__}") from None
+            raise ValueError(f"{key}: {err['msg'].lower()}, got {err['input']!r}") from None
+
+    @classmethod
+    def from_mapping(cls, data: Mapping[str, Any]) -> Params:
+        return cls(**data)
 
 
-def bounds(cls) -> dict[str, Bound]:
-    """Field name -> its declared Bound, in field order."""
-    return {f.name: f.metadata["bound"] for f in fields(cls) if "bound" in f.metadata}
-
-
-def check_bounds(obj) -> None:
-    """Every declared field of a parameter dataclass within its bound; the error starts with the key."""
-    for name, bound in bounds(type(obj)).items():
-        value = getattr(obj, name)
-        if not bound.accepts(value):
-            raise ValueError(f"{name}: must be {bound.wanted()}, got {value!r}")
-
-
-POSITIVE = Bound(gt=0)
-NON_NEGATIVE = Bound(ge=0)
-
-
-def _from_mapping(cls, data: Mapping[str, Any], prefix: str):
-    names = {f.name for f in fields(cls)}
-    unknown = set(data) - names
-    if unknown:
-        raise ValueError(f"{prefix}{sorted(unknown)[0]}: unknown key for {cls.__name__}")
-    return cls(**dict(data))
-
-
-@dataclass(frozen=True)
-class BeamParams:
+class BeamParams(Params):
     """Clamped-free elastic beam (pad back-plate), 2-D frame elements, 3 DOF/node (u, v, theta)."""
 
-    length: float = declared(100.0, Bound(gt=0, description="mm"))  #: beam length L [mm]
+    length: Positive = Field(100.0, description="mm")  #: beam length L [mm]
     #: beam thickness h (in-plane, bending direction) [mm]
-    thickness: float = declared(1.0, Bound(gt=0, description="mm"))
+    thickness: Positive = Field(1.0, description="mm")
     #: out-of-plane width b [mm] (assumption: the paper gives none)
-    width: float = declared(1.0, Bound(gt=0, description="mm"))
-    youngs_modulus_gpa: float = declared(210.0, POSITIVE)  #: E [GPa] (steel back plate, assumption)
-    density_kg_m3: float = declared(7850.0, POSITIVE)  #: rho [kg m-3] (steel, assumption)
+    width: Positive = Field(1.0, description="mm")
+    youngs_modulus_gpa: Positive = 210.0  #: E [GPa] (steel back plate, assumption)
+    density_kg_m3: Positive = 7850.0  #: rho [kg m-3] (steel, assumption)
     #: nu [-] (recorded only; Euler-Bernoulli elements do not use it)
-    poisson_ratio: float = declared(0.3, Bound(ge=0, lt=0.5))
-    gravity_m_s2: float = declared(9.81, NON_NEGATIVE)  #: g [m s-2], the only normal load
-    n_elements: int = declared(20, Bound("integer", ge=1))  #: number of beam elements [-]
+    poisson_ratio: Annotated[float, Field(ge=0, lt=0.5, allow_inf_nan=False)] = 0.3
+    gravity_m_s2: NonNegative = 9.81  #: g [m s-2], the only normal load
+    n_elements: Annotated[int, Field(ge=1)] = 20  #: number of beam elements [-]
     #: "lumped" (HRZ diagonal, as explicit codes) or "consistent"
-    mass: str = declared("lumped", Bound("choice", choices=MASS_KINDS))
+    mass: Literal["lumped", "consistent"] = "lumped"
     #: rotary inertia rho*I of the cross-sections (Rayleigh beam). Needed for contact at the lower face:
     #: without it the tangential inertia of the face point vanishes under mesh refinement.
-    rotary_inertia: bool = declared(True, Bound("flag"))
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
+    rotary_inertia: bool = True
 
     # derived quantities in the internal unit system
     @property
@@ -145,33 +99,26 @@ class BeamParams:
     def weight(self) -> float:  # N
         return self.rho * self.area * self.length * self.g
 
-    @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> BeamParams:
-        return _from_mapping(cls, data, "beam.")
 
-
-@dataclass(frozen=True)
-class DiscParams:
+class DiscParams(Params):
     """Rigid disc rotating clockwise about its fixed centre (master surface).
 
     Exactly one of ``speed_rev_per_min`` / ``surface_speed_mm_s`` must be given: the paper states
     15.2 rev/min and claims it equals the 0.5 mm/s belt speed, which it does not for a 25 mm disc.
     """
 
-    diameter: float = declared(25.0, Bound(gt=0, description="mm"))  #: disc diameter [mm]
-    #: angular speed [rev/min]
-    speed_rev_per_min: float | None = declared(None, Bound(ge=0, optional=True))
-    #: surface (belt-equivalent) speed [mm s-1]
-    surface_speed_mm_s: float | None = declared(None, Bound(ge=0, optional=True))
+    diameter: Positive = Field(25.0, description="mm")  #: disc diameter [mm]
+    speed_rev_per_min: NonNegative | None = None  #: angular speed [rev/min]
+    surface_speed_mm_s: NonNegative | None = None  #: surface (belt-equivalent) speed [mm s-1]
     #: turning direction seen with the clamp on the left: clockwise drives the disc top away from the
     #: clamp (the paper's "clockwise"; it does not say from which side it is seen)
-    direction: str = declared("clockwise", Bound("choice", choices=DISC_DIRECTIONS))
+    direction: Literal["clockwise", "counterclockwise"] = "clockwise"
 
-    def __post_init__(self) -> None:
-        check_bounds(self)
-        given = [k for k in ("speed_rev_per_min", "surface_speed_mm_s") if getattr(self, k) is not None]
-        if len(given) != 1:
+    @model_validator(mode="after")
+    def one_speed(self):
+        if (self.speed_rev_per_min is None) == (self.surface_speed_mm_s is None):
             raise ValueError("speed_rev_per_min: give exactly one of speed_rev_per_min / surface_speed_mm_s")
+        return self
 
     @property
     def surface_speed(self) -> float:
@@ -180,13 +127,8 @@ class DiscParams:
             return float(self.surface_speed_mm_s)
         return disc_surface_speed(float(self.speed_rev_per_min), self.diameter)
 
-    @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> DiscParams:
-        return _from_mapping(cls, data, "disc.")
 
-
-@dataclass(frozen=True)
-class ContactParams:
+class ContactParams(Params):
     """Contact between the lower face of the beam's free end ("node 1") and the disc.
 
     Geometry: the beam axis stays horizontal; the disc is placed so that it touches the lower corner of
@@ -197,23 +139,16 @@ class ContactParams:
     """
 
     #: "kinematic" (exact non-penetration), "penalty", "fixed_normal" (Sec. 10)
-    method: str = declared("kinematic", Bound("choice", choices=CONTACT_METHODS))
-    angle_deg: float = declared(0.0, Bound(ge=-80, le=80))  #: contact angle a [deg]
+    method: Literal["kinematic", "penalty", "fixed_normal"] = "kinematic"
+    angle_deg: Angle = 0.0  #: contact angle a [deg]
     #: penalty normal stiffness k_p [N mm-1] (method "penalty" only)
-    penalty_stiffness: float = declared(1.0e3, Bound(gt=0, description="N mm-1"))
+    penalty_stiffness: Positive = Field(1.0e3, description="N mm-1")
     #: contact at the lower face (h/2 below the axis, the paper's slave surface: friction then also
     #: bends the beam through the moment h/2*F_t) instead of on the beam axis (a control). Converges with
     #: the element count once the beam has rotary inertia (BeamParams.rotary_inertia).
-    surface_offset: bool = declared(True, Bound("flag"))
+    surface_offset: bool = True
     #: the paper's "node 1": where on the free end the displacement is measured
-    output_node: str = declared("free_end_lower", Bound("choice", choices=OUTPUT_NODES))
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
-
-    @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> ContactParams:
-        return _from_mapping(cls, data, "contact.")
+    output_node: Literal["free_end_lower", "free_end_axis", "free_end_upper"] = "free_end_lower"
 
 
 #: dt = safety_factor * dt_crit: the one default of every explicit integrator and of the scenes' solver
@@ -233,30 +168,23 @@ def initial_state_of(state: str | None) -> str:
     return "drop" if state == "undeformed" else state
 
 
-@dataclass(frozen=True)
-class SolverParams:
+class SolverParams(Params):
     """Explicit central-difference settings."""
 
     #: simulated time [s] (the 1-DOF runs' name)
-    t_end: float = declared(1.0, Bound(gt=0, description="simulated time [s]"))
-    safety_factor: float = declared(
-        DEFAULT_SAFETY_FACTOR, Bound(gt=0, le=1)
-    )  #: dt = safety_factor * 2 / omega_max [-]
+    t_end: Positive = Field(1.0, description="simulated time [s]")
+    #: dt = safety_factor * 2 / omega_max [-]
+    safety_factor: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)] = DEFAULT_SAFETY_FACTOR
     #: sampling interval of the stored trajectory [s]
-    output_dt: float = declared(1.0e-5, Bound(gt=0, description="output interval [s]"))
+    output_dt: Positive = Field(1.0e-5, description="output interval [s]")
     #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)
-    initial_state: str = declared(DEFAULT_INITIAL_STATE, Bound("choice", choices=INITIAL_STATES))
+    initial_state: Literal[INITIAL_STATES] = DEFAULT_INITIAL_STATE
     #: mass-proportional Rayleigh damping alpha [s-1]
-    mass_damping: float = declared(0.0, Bound(ge=0, description="s-1"))
+    mass_damping: NonNegative = Field(0.0, description="s-1")
     #: stiffness-proportional Rayleigh damping beta [s]; below 1e-3 s, far above any scene's (~1e-8 s)
-    stiffness_damping: float = declared(0.0, Bound(ge=0, lt=1e-3, description="s"))
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
-
-    @classmethod
-    def from_mapping(cls, data: Mapping[str, Any]) -> SolverParams:
-        return _from_mapping(cls, data, "solver.")
+    stiffness_damping: Annotated[float, Field(ge=0, lt=1e-3, allow_inf_nan=False)] = Field(
+        0.0, description="s"
+    )
 
 
 #: the solver section's keys that an integrator takes under another name
@@ -274,10 +202,10 @@ def run_settings(
     stiffness_damping=0.0,
 ) -> SolverParams:
     """An explicit run's settings as the solver section they are (``t_end`` = ``duration``), checked by its
-    declared bounds before any work, so both integrators and the config refuse the same values naming the
-    same key. ``output_interval`` None: every step; a given ``dt`` (> 0) replaces safety_factor * dt_crit."""
-    if dt is not None and not POSITIVE.accepts(dt):
-        raise ValueError(f"dt: must be {POSITIVE.wanted()}, got {dt!r}")
+    model before any work, so both integrators and the config refuse the same values naming the same key.
+    ``output_interval`` None: every step; a given ``dt`` (> 0) replaces safety_factor * dt_crit."""
+    if dt is not None and (isinstance(dt, bool) or not isinstance(dt, numbers.Real) or not 0 < dt < math.inf):
+        raise ValueError(f"dt: must be a finite number > 0, got {dt!r}")
     given = {"output_dt": output_interval} if output_interval is not None else {}
     try:
         settings = SolverParams(
@@ -291,7 +219,7 @@ def run_settings(
     except ValueError as exc:  # named as the caller passed it
         key, _, why = str(exc).partition(":")
         raise ValueError(f"{RUN_ARGUMENTS.get(key, key)}:{why}") from None
-    return replace(settings, initial_state=initial_state_of(settings.initial_state))
+    return settings.model_copy(update={"initial_state": initial_state_of(settings.initial_state)})
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,15 @@ INTERPRETATION = (
     "contact.output_node; displacements from the initial position."
 )
 
+#: the response quantities the convergence study follows and the model comparison compares
+RESPONSE_QUANTITIES = (
+    "horizontal_amplitude",
+    "mean_horizontal_displacement",
+    "dominant_frequency",
+    "stick_fraction",
+    "separation_fraction",
+)
+
 #: scalar metric name -> (UDUNITS units, long name)
 UNITS = {
     "max_horizontal_displacement": ("mm", "maximum horizontal displacement of node 1"),

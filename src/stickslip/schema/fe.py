@@ -2,36 +2,27 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from pydantic import Field, create_model, field_validator, model_validator
 
 from ..catalogue import fe_paper_figure_numbers
-from ..fe.params import BeamParams, Bound, ContactParams, DiscParams, SolverParams, bounds
+from ..fe.params import Angle, BeamParams, ContactParams, DiscParams, Params, SolverParams
 from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
 
 #: the paper's beam-on-disc figures, one PNG each (rule fe_figures)
 FE_PAPER_FIGURES = tuple(fe_paper_figure_numbers())
 
 
-def _annotation(bound: Bound):
-    """The pydantic type of a parameter field declared by ``bound`` (always optional: a scene gives only
-    what it changes)."""
-    if bound.kind == "choice":
-        return Literal[bound.choices] | None
-    if bound.kind == "flag":
-        return bool | None
-    if bound.kind == "integer":
-        return Annotated[int, Field(**bound.limits())] | None
-    return Annotated[float, Field(**bound.limits(), allow_inf_nan=False)] | None
-
-
-def parameter_section(name: str, params) -> type[Section]:
-    """The config section of a parameter dataclass of stickslip.fe.params, generated from its declared
-    bounds: a key and its bound are written once, there (the dataclass checks them at construction)."""
+def parameter_section(name: str, params: type[Params]) -> type[Section]:
+    """The config section of a parameter model of stickslip.fe.params: its keys, types and bounds, each
+    optional (a scene gives only what it changes; the model's default fills the rest)."""
     fields = {
-        key: (_annotation(bound), Field(None, description=bound.description))
-        for key, bound in bounds(params).items()
+        key: (
+            (Annotated[f.annotation, *f.metadata] if f.metadata else f.annotation) | None,
+            Field(None, description=f.description),
+        )
+        for key, f in params.model_fields.items()
     }
     return create_model(name, __base__=Section, __module__=__name__, **fields)
 
@@ -40,8 +31,6 @@ Beam = parameter_section("Beam", BeamParams)
 Disc = parameter_section("Disc", DiscParams)
 Contact = parameter_section("Contact", ContactParams)
 FeSolver = parameter_section("FeSolver", SolverParams)
-#: a contact angle of the stability study: the bound of the scenes' contact.angle_deg
-Angle = _annotation(bounds(ContactParams)["angle_deg"]).__args__[0]
 
 
 #: The bin width [s] of a scene's binned series when its output gives none

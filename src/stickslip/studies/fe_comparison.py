@@ -11,17 +11,11 @@ import numpy as np
 import xarray as xr
 
 from ..analysis.metrics import cf_variable
-from ..fe.quantities import INTERPRETATION, cf_attrs
+from ..fe.quantities import INTERPRETATION, RESPONSE_QUANTITIES, cf_attrs
 from ..fe.step_halving import REL_TOL, converged, sign_converged
 
 #: quantities of the comparison table
-QUANTITIES = (
-    "horizontal_amplitude",
-    "mean_horizontal_displacement",
-    "dominant_frequency",
-    "stick_fraction",
-    "separation_fraction",
-)
+QUANTITIES = RESPONSE_QUANTITIES
 #: largest |relative difference| that counts as agreement
 AGREEMENT_REL = 0.05
 #: the rule of the agreement column, printed beside it in every table row
@@ -112,24 +106,29 @@ def window_rows(
             c, b = step_pair(cds, q), step_pair(beam[scene], q)
             unit = str(beam[scene][q].attrs.get("units", "1")) if q in beam[scene] else "1"
             ok = window_agrees(b, c, quantity=q, unit=unit)
-            rows.append(
-                {
-                    "scene": scene,
-                    "quantity": q,
-                    "continuum": c[0],
-                    "beam": b[0],
-                    "relative_difference": relative_difference(c[0], b[0]),
-                    "noise_floor": max(abs(c[1] - c[0]), abs(b[1] - b[0])),
-                    "agreement": ok,
-                    "agreement_rule": WINDOW_RULE,
-                    "note": "" if ok else _window_note(notes, scene, q, b, c, unit),
-                    "window": "claim",
-                    "t_end": float(cds.attrs.get("t_end", np.nan)),
-                    "continuum_half_step": c[1],
-                    "beam_half_step": b[1],
-                }
-            )
+            note = "" if ok else _window_note(notes, scene, q, b, c, unit)
+            floor = max(abs(c[1] - c[0]), abs(b[1] - b[0]))
+            rows.append(_row(scene, q, c, b, floor, ok, note, "claim", cds, WINDOW_RULE))
     return rows
+
+
+def _row(scene, quantity, continuum, beam, noise_floor, ok, note, window, ds, rule) -> dict:
+    """A row of the comparison table: ``continuum`` and ``beam`` are (dt, dt/2) values."""
+    return {
+        "scene": scene,
+        "quantity": quantity,
+        "continuum": continuum[0],
+        "beam": beam[0],
+        "relative_difference": relative_difference(continuum[0], beam[0]),
+        "noise_floor": noise_floor,
+        "agreement": ok,
+        "agreement_rule": rule,
+        "note": note,
+        "window": window,
+        "t_end": float(ds.attrs.get("t_end", np.nan)),
+        "continuum_half_step": continuum[1],
+        "beam_half_step": beam[1],
+    }
 
 
 def noise_floors(metrics: Mapping, metrics_half_step: Mapping) -> dict:
@@ -200,23 +199,9 @@ def comparison_rows(
             ok = ok_of[q] = agrees(c, b, floor)
             if q == "dominant_frequency":
                 ok = ok and ok_of.get("horizontal_amplitude", True)
-            rows.append(
-                {
-                    "scene": scene,
-                    "quantity": q,
-                    "continuum": c,
-                    "beam": b,
-                    "relative_difference": relative_difference(c, b),
-                    "noise_floor": floor,
-                    "agreement": ok,
-                    "agreement_rule": AGREEMENT_RULE,
-                    "note": "" if ok else _note(notes, scene, q, c, b),
-                    "window": "short",
-                    "t_end": float(ds.attrs.get("t_end", np.nan)),
-                    "continuum_half_step": float("nan"),
-                    "beam_half_step": float(beam_half_step.get(scene, {}).get(q, np.nan)),
-                }
-            )
+            note = "" if ok else _note(notes, scene, q, c, b)
+            pair = (b, float(beam_half_step.get(scene, {}).get(q, np.nan)))
+            rows.append(_row(scene, q, (c, float("nan")), pair, floor, ok, note, "short", ds, AGREEMENT_RULE))
     return rows
 
 

@@ -26,15 +26,13 @@ from .fe_packing import result_dataset
 
 def continuum_scene_from_mapping(mapping: Mapping, friction: FrictionTable, nx: int, ny: int):
     """The continuum scene of a beam scene mapping (same geometry reading, damping and contact law)."""
-    from dataclasses import replace
-
     from ..fe.continuum import build_continuum
 
     p = SceneParams.from_mapping(mapping)
     contact = p.contact
     upper = contact.method == "fixed_normal"
     if upper:
-        contact = replace(contact, method="kinematic")
+        contact = contact.model_copy(update={"method": "kinematic"})
     return build_continuum(
         p.beam,
         p.disc,

@@ -11,18 +11,10 @@ import xarray as xr
 from ..analysis.metrics import cf_variable
 from ..fe.beam import cantilever_errors
 from ..fe.params import FrictionTable, SolverParams
-from ..fe.quantities import INTERPRETATION, cf_attrs, metric_attrs
+from ..fe.quantities import INTERPRETATION, RESPONSE_QUANTITIES, cf_attrs, metric_attrs
 from ..schema.fe import Convergence, FeJob
 from .fe_config import as_mapping, deep_merge
 from .fe_scene import run_scene
-
-CONVERGENCE_QUANTITIES = (
-    "horizontal_amplitude",
-    "mean_horizontal_displacement",
-    "dominant_frequency",
-    "stick_fraction",
-    "separation_fraction",
-)
 
 
 def max_deviation(q: str, values: np.ndarray) -> tuple[float, str]:
@@ -39,7 +31,7 @@ def max_deviation(q: str, values: np.ndarray) -> tuple[float, str]:
 def _grid_runs(cv: Convergence, base: Mapping, n_el: list, sfs: list, friction: FrictionTable):
     """Every (n_elements, safety_factor) run: the quantities and time steps on the grid, and the modal
     errors per mesh."""
-    vals = {q: np.zeros((len(n_el), len(sfs))) for q in CONVERGENCE_QUANTITIES}
+    vals = {q: np.zeros((len(n_el), len(sfs))) for q in RESPONSE_QUANTITIES}
     dt = np.zeros((len(n_el), len(sfs)))
     bend_err, ax_err = [], []
     for i, n in enumerate(n_el):
@@ -48,7 +40,7 @@ def _grid_runs(cv: Convergence, base: Mapping, n_el: list, sfs: list, friction: 
                 base, {"beam": {"n_elements": n}, "solver": {"t_end": cv.t_end, "safety_factor": sf}}
             )
             r, m, scene = run_scene(mp, friction)
-            for q in CONVERGENCE_QUANTITIES:
+            for q in RESPONSE_QUANTITIES:
                 vals[q][i, j] = m[q]
             dt[i, j] = r.dt
         bending, axial = cantilever_errors(scene.params.beam)
@@ -79,7 +71,7 @@ def convergence_dataset(job: FeJob, friction: FrictionTable) -> xr.Dataset:
     vals, dt, bend_err, ax_err = _grid_runs(cv, base, n_el, sfs, friction)
     dims = ("n_elements", "safety_factor")
     ds = xr.Dataset(coords=_grid_coords(n_el, sfs))
-    for q in CONVERGENCE_QUANTITIES:
+    for q in RESPONSE_QUANTITIES:
         ds[q] = (dims, vals[q], metric_attrs(q))
         dev, what = max_deviation(q, vals[q])
         ds[f"{q}_max_deviation"] = cf_variable(

@@ -131,15 +131,13 @@ def result_dataset(r, m: Mapping, *, windows=None, bin_width: float = 1e-4) -> x
         data[f"{name}_fraction_per_bin"] = cf_variable(
             "bin_time", frac, "1", f"fraction of output samples in {name} per bin"
         )
-    tw, evx = window_envelope(t, r.vx)
-    for k, y, u in (
-        ("horizontal_velocity", r.vx, "mm s-1"),
-        ("vertical_velocity", r.vy, "mm s-1"),
-        ("horizontal_displacement", ser["horizontal_displacement"], "mm"),
-        ("vertical_displacement", ser["vertical_displacement"], "mm"),
-    ):
+    tw = window_envelope(t, r.vx)[0]
+    for k in ("horizontal_velocity", "vertical_velocity", "horizontal_displacement", "vertical_displacement"):
         data[f"{k}_envelope"] = cf_variable(
-            "window", window_envelope(t, y)[1], u, f"half peak-to-peak {k.replace('_', ' ')} per window"
+            "window",
+            window_envelope(t, ser[k])[1],
+            SERIES[k][0],
+            f"half peak-to-peak {k.replace('_', ' ')} per window",
         )
     if "first_mode_amplitude" in r.extra:
         mode_window_time, amp = r.extra["first_mode_amplitude"]

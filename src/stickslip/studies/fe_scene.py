@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 import json
 from collections.abc import Mapping
 
@@ -55,7 +54,7 @@ def scene_dataset(mapping: Mapping, friction: FrictionTable, name: str = "", pro
         cf_attrs(
             f"Beam on rotating rigid disc, scene {name}".strip(),
             scene=name,
-            parameters=json.dumps(dataclasses.asdict(scene.params)),
+            parameters=json.dumps({k: v.model_dump() for k, v in vars(scene.params).items()}),
             model_interpretation=INTERPRETATION,
             method=f"explicit central difference (compiled kernel), {scene.law.method} contact, "
             f"dt={r.dt:.6g} s (stable limit {r.dt_crit:.6g} s)",
