@@ -122,11 +122,11 @@ for r, ds in belt.items():
             ax.plot(
                 vb[~ok], np.zeros(nfail), "|", color="red", ms=12, mew=2, transform=ax.get_xaxis_transform()
             )
+fig.legend(*axes[0].get_legend_handles_labels(), fontsize=7, loc="outside right center")
 axes[0].set_ylabel("x peak-to-zero [mm]")
 axes[1].set_ylabel("frequency (peaks) [Hz]")
 for ax in axes:
     ax.set_xlabel("belt velocity V_b [mm/s]")
-fig.legend(*axes[0].get_legend_handles_labels(), fontsize=7, loc="outside right center")
 
 # %% [markdown]
 # ## What the readings show
