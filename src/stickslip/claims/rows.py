@@ -2,7 +2,16 @@
 
 A row that a typo would silently change (``tolerence`` for ``tolerance`` would make the band 0, a negative
 tolerance turns equal numbers into a deviation, ``value: "1.5 mm"`` fails inside the table job) is an error
-naming its file, claim id and key. What a row may hold depends on its kind (``KEYS``).
+naming its file, claim id and key. What a row may hold depends on its kind:
+
+==========  ======================================================  ==========================
+kind        needs                                                    may not hold
+==========  ======================================================  ==========================
+value       dataset, variable, value, unit, tolerance               lhs, rhs, relation, coord, sign
+ratio       lhs, rhs, value, tolerance                               dataset, relation, coord, sign
+compare     lhs, rhs, relation                                       value, tolerance, coord, sign
+trend       dataset, variable, coord, sign                           lhs, rhs, value, tolerance, relation
+==========  ======================================================  ==========================
 """
 
 from __future__ import annotations
@@ -50,15 +59,17 @@ Text = Annotated[str, Field(min_length=1)]
 #: A per-reading value: one for every reading, or ``{default: ..., <reading>: ...}``.
 PerReading = Text | dict[str, Text]
 
-#: Per kind: the keys a row needs, and the keys it may not hold.
-KEYS = {
-    "value": (
-        ("dataset", "variable", "value", "unit", "tolerance"),
-        ("lhs", "rhs", "relation", "coord", "sign"),
-    ),
-    "ratio": (("lhs", "rhs", "value", "tolerance"), ("dataset", "variable", "relation", "coord", "sign")),
-    "compare": (("lhs", "rhs", "relation"), ("value", "tolerance", "coord", "sign")),
-    "trend": (("dataset", "variable", "coord", "sign"), ("lhs", "rhs", "value", "tolerance", "relation")),
+NEEDS = {
+    "value": ("dataset", "variable", "value", "unit", "tolerance"),
+    "ratio": ("lhs", "rhs", "value", "tolerance"),
+    "compare": ("lhs", "rhs", "relation"),
+    "trend": ("dataset", "variable", "coord", "sign"),
+}
+MAY_NOT = {
+    "value": ("lhs", "rhs", "relation", "coord", "sign"),
+    "ratio": ("dataset", "variable", "relation", "coord", "sign"),
+    "compare": ("value", "tolerance", "coord", "sign"),
+    "trend": ("lhs", "rhs", "value", "tolerance", "relation"),
 }
 
 
@@ -150,11 +161,10 @@ class ClaimRow(_Strict):
 
     @model_validator(mode="after")
     def _fits_its_kind(self):
-        needs, may_not = KEYS[self.kind]
-        missing = [k for k in needs if getattr(self, k) is None]
+        missing = [k for k in NEEDS[self.kind] if getattr(self, k) is None]
         if missing:
             raise ValueError(f"{missing[0]}: a {self.kind} claim needs it")
-        extra = [k for k in may_not if getattr(self, k) is not None]
+        extra = [k for k in MAY_NOT[self.kind] if getattr(self, k) is not None]
         if extra:
             raise ValueError(f"{extra[0]}: not used by a {self.kind} claim (misplaced or misspelt key?)")
         if self.kind == "compare" and self.lhs.value is not None:
