@@ -22,17 +22,8 @@ from stickslip.solvers import make_solver
 
 from project_run import ROOT, shared_small_run
 
-BASE = BeltParams.from_mapping(
-    dict(
-        mass=1.0,
-        stiffness=5.0,
-        damping=1.5,
-        mu_s=0.5,
-        sigma=0.5,
-        normal_force=10.0,
-        v0=0.5,
-        belt_velocity=0.5,
-    )
+BASE = BeltParams(
+    mass=1.0, stiffness=5.0, damping=1.5, mu_s=0.5, sigma=0.5, normal_force=10.0, v0=0.5, belt_velocity=0.5
 )
 
 

@@ -84,10 +84,10 @@ def test_bad_parameters_name_the_key(key, value):
 def test_from_mapping_names_unknown_and_missing_keys():
     good = PAPER_BASELINE.as_dict()
     with pytest.raises(ParameterError, match="masss"):
-        BeltParams.from_mapping({**good, "masss": 1.0})
+        BeltParams(**{**good, "masss": 1.0})
     del good["stiffness"]
     with pytest.raises(ParameterError, match="stiffness"):
-        BeltParams.from_mapping(good)
+        BeltParams(**good)
 
 
 def test_si_units_reading_scales_the_mass():
@@ -114,8 +114,8 @@ _floats = st.one_of(
 def test_scalar_right_hand_side_is_bit_identical_to_the_array_form(variant, plateau, deceleration, t, x, v):
     """BeltModel.rhs evaluates one state in Python floats; it must give the very bits of the array form
     (acceleration on 1-element arrays: np.sign, np.maximum, np.clip), signed zeros and NaN included."""
-    params = BeltParams.from_mapping(
-        {**PAPER_BASELINE.as_dict(), "plateau_speed": plateau, "belt_deceleration": deceleration}
+    params = BeltParams(
+        **{**PAPER_BASELINE.as_dict(), "plateau_speed": plateau, "belt_deceleration": deceleration}
     )
     model = BeltModel.build(params, variant)
     fast = model.rhs(t, np.array([x, v]))

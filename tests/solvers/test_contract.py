@@ -61,7 +61,7 @@ def test_bad_settings_raise_at_construction_naming_the_setting(name, bad, key):
 
 def test_moreau_refuses_explicit_smooth_forces_as_the_config_check_does():
     """theta = 0 is outside (0, 1]: refused when the solver is built, by the same check the config uses."""
-    with pytest.raises(ValueError, match=r"^theta: must be in \(0, 1\], got 0.0$"):
+    with pytest.raises(ValueError, match=r"^theta: input should be greater than 0, got 0.0$"):
         METHODS["moreau"](h=1e-3, theta=0.0)
 
 

@@ -158,7 +158,7 @@ def test_the_pipeline_method_exact_is_the_compiled_solver():
     assert solver.settings == ExactSwitchSolver().settings
     assert isinstance(build_model(PAPER_BASELINE, "consistent")[1], CompiledExactSolver)
     assert isinstance(build_model(PAPER_BASELINE, "consistent", mu_k_ratio=0.8)[1], StaticKineticSolver)
-    assert isinstance(StaticKineticSolver(5.0), CompiledExactSolver)
+    assert isinstance(StaticKineticSolver(static_force=5.0), CompiledExactSolver)
 
 
 def _config_runs():

@@ -20,13 +20,12 @@ from typing import Annotated, Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
+from ..model.params import STRICT, NonNegative, ParameterError, Positive, error_message
 from .mechanics import disc_surface_speed
 
 INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
 
 
-Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
-NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 #: a contact angle [deg] (the scenes' contact.angle_deg and the stability study's angles)
 Angle = Annotated[float, Field(ge=-80, le=80, allow_inf_nan=False)]
 
@@ -35,19 +34,13 @@ class Params(BaseModel):
     """A parameter set: unknown keys are errors, YAML's types are meant (no "5" for 5, no bool for a number),
     and a refused value raises a ValueError that starts with its key."""
 
-    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+    model_config = ConfigDict(**STRICT, frozen=True)
 
     def __init__(self, **values: Any) -> None:
         try:
             super().__init__(**values)
         except ValidationError as exc:
-            err = exc.errors()[0]
-            key = ".".join(str(k) for k in err["loc"])
-            if "error" in err.get("ctx", {}):  # a check of this model's own: its message names the key
-                raise ValueError(str(err["ctx"]["error"])) from None
-            if err["type"] == "extra_forbidden":
-                raise ValueError(f"{key}: unknown key for {type(self).__name__}") from None
-            raise ValueError(f"{key}: {err['msg'].lower()}, got {err['input']!r}") from None
+            raise ParameterError(error_message(exc)) from None
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> Params:

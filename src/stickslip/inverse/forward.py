@@ -14,7 +14,6 @@ Two hypotheses need laws the model layer does not have, built here from its part
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -23,13 +22,14 @@ from ..analysis.metrics import count_peaks, displacement_peaks, frequency_from_p
 from ..analysis.outcome import REST_FRACTION
 from ..model.equations import BeltModel
 from ..model.friction import AffineFriction, friction_law
-from ..model.params import BeltParams, ParameterError
+from ..model.params import BeltParams, ParameterError, Positive, parameter_set
 from ..solvers.base import STICK, Trajectory
 from ..solvers.exact import ExactSwitchSolver
 from ..solvers.exact_compiled import CompiledExactSolver
 from .problem import Problem
 
 
+@parameter_set(frozen=False)
 class StaticKineticSolver(CompiledExactSolver):
     """The exact solver with a stick limit ``static_force`` [N] larger than the slip friction's |a|.
 
@@ -37,12 +37,9 @@ class StaticKineticSolver(CompiledExactSolver):
     (``_stick_a``); the Python hooks below are its reference (``exact_compiled.python_reference``).
     """
 
-    def __init__(self, static_force: float, **kwargs):
-        super().__init__(**kwargs)
-        if not (math.isfinite(static_force) and static_force > 0):
-            raise ParameterError(f"static_force: must be a positive number, got {static_force!r}")
-        self.static_force = float(static_force)
-        self.name = "exact_static_kinetic"
+    static_force: Positive = field(kw_only=True)
+    """The stick limit N mu_s [N]."""
+    name: str = "exact_static_kinetic"
 
     def _stick_a(self, model: BeltModel) -> float:
         return -self.static_force
@@ -75,7 +72,7 @@ def build_model(params: BeltParams, variant: str, eq4_term: bool = False, mu_k_r
             kappa=-mu_kn * params.sigma if not eq4_term else -params.sigma,
             plateau_speed=law.plateau_speed,
         )
-        return BeltModel(params, law), StaticKineticSolver(params.mu_s * params.normal_force)
+        return BeltModel(params, law), StaticKineticSolver(static_force=params.mu_s * params.normal_force)
     return BeltModel(params, law), CompiledExactSolver()
 
 

@@ -123,7 +123,7 @@ class Problem:
     def run_params(self, free_values, run: RunDef, extra: dict | None = None) -> BeltParams:
         """Parameters of one run: stated, then the free values, then what the run fixes (its overrides)."""
         mapping = {**self.stated, **self.values(free_values), **run.overrides, **(extra or {})}
-        return BeltParams.from_mapping(mapping)
+        return BeltParams(**mapping)
 
     def in_bounds(self, free_values) -> bool:
         v = np.asarray(free_values, dtype=float)

@@ -33,24 +33,19 @@ import csv
 import math
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
-from .params import BeltParams, ParameterError, checked_number
+from .params import BeltParams, NonNegative, ParameterError, Positive, PositiveOrInf, parameter_set
 
 
 class FrictionLaw:
     """Common interface: ``mu(v_r)`` in slip, ``static`` at rest, ``force(v_r, N)``, ``breakpoints``."""
 
     kind: ClassVar[str] = ""
-    #: Each number field's bound, "positive" or "nonnegative": checked (naming the field) and made a float.
-    BOUNDS: ClassVar[dict[str, str]] = {}
 
     def __post_init__(self):
-        for name, bound in self.BOUNDS.items():
-            value = checked_number(name, getattr(self, name), bound, allow_inf=name == "plateau_speed")
-            object.__setattr__(self, name, value)
         if getattr(self, "mu_k", 0.0) > self.mu_s:
             raise ParameterError(f"mu_k: must be <= mu_s = {self.mu_s!r}, got {self.mu_k!r}")
 
@@ -87,19 +82,14 @@ class FrictionLaw:
         return {"kind": self.kind, **{f.name: getattr(self, f.name) for f in fields(self) if f.repr}}
 
 
-@dataclass(frozen=True)
+@parameter_set
 class AffineLaw(FrictionLaw):
     """mu_s (1 - sigma min(|v_r|, v_p)): the affine ``consistent`` variant, optionally levelling off."""
 
-    mu_s: float
-    sigma: float
-    plateau_speed: float = math.inf
+    mu_s: Positive
+    sigma: NonNegative
+    plateau_speed: PositiveOrInf = math.inf
     kind: ClassVar[str] = "affine"
-    BOUNDS: ClassVar[dict[str, str]] = {
-        "mu_s": "positive",
-        "sigma": "nonnegative",
-        "plateau_speed": "positive",
-    }
 
     def mu_continued(self, speed):
         return self.mu_s * (1.0 - self.sigma * np.minimum(speed, self.plateau_speed))
@@ -109,28 +99,26 @@ class AffineLaw(FrictionLaw):
         return (self.plateau_speed,) if math.isfinite(self.plateau_speed) else ()
 
 
-@dataclass(frozen=True)
+@parameter_set
 class CoulombLaw(FrictionLaw):
     """Static/kinetic jump: mu_k while slipping, up to mu_s while sticking (mu_s >= mu_k > 0)."""
 
-    mu_s: float
-    mu_k: float
+    mu_s: Positive
+    mu_k: Positive
     kind: ClassVar[str] = "coulomb"
-    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "mu_k": "positive"}
 
     def mu_continued(self, speed):
         return self.mu_k + 0.0 * np.asarray(speed, dtype=float)
 
 
-@dataclass(frozen=True)
+@parameter_set
 class StribeckLaw(FrictionLaw):
     """mu_k + (mu_s - mu_k) exp(-|v_r| / v_s): continuous at v_r = 0+, falling to mu_k."""
 
-    mu_s: float
-    mu_k: float
-    v_s: float
+    mu_s: Positive
+    mu_k: NonNegative
+    v_s: Positive
     kind: ClassVar[str] = "stribeck"
-    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "mu_k": "nonnegative", "v_s": "positive"}
 
     def mu_continued(self, speed):
         # the continuation below 0 is only ever needed near 0: bounded far out so a diverging trial step
@@ -139,21 +127,20 @@ class StribeckLaw(FrictionLaw):
         return self.mu_k + (self.mu_s - self.mu_k) * np.exp(-speed / self.v_s)
 
 
-@dataclass(frozen=True)
+@parameter_set
 class RationalLaw(FrictionLaw):
     """mu_k + (mu_s - mu_k) / (1 + delta |v_r|); with mu_k = 0 the mu_s / (1 + delta |v_r|) law."""
 
-    mu_s: float
-    delta: float
-    mu_k: float = 0.0
+    mu_s: Positive
+    delta: NonNegative
+    mu_k: NonNegative = 0.0
     kind: ClassVar[str] = "rational"
-    BOUNDS: ClassVar[dict[str, str]] = {"mu_s": "positive", "delta": "nonnegative", "mu_k": "nonnegative"}
 
     def mu_continued(self, speed):
         return self.mu_k + (self.mu_s - self.mu_k) / (1.0 + self.delta * np.asarray(speed, dtype=float))
 
 
-@dataclass(frozen=True)
+@parameter_set(arbitrary_types_allowed=True)
 class TabulatedLaw(FrictionLaw):
     """mu(|v_r|) from a table (speeds from 0, strictly increasing): PCHIP between rows, held beyond the last.
 
@@ -162,9 +149,9 @@ class TabulatedLaw(FrictionLaw):
     unless ``static_mu`` is given.
     """
 
-    speed: np.ndarray = field(repr=False)
-    values: np.ndarray = field(repr=False)
-    static_mu: float | None = None
+    speed: Any = field(repr=False)  # array-like: checked as a table below
+    values: Any = field(repr=False)
+    static_mu: Positive | None = None
     source: str = ""
     kind: ClassVar[str] = "tabulated"
 
@@ -191,8 +178,6 @@ class TabulatedLaw(FrictionLaw):
         object.__setattr__(self, "_interp", interp)
         object.__setattr__(self, "_nodes", speed.tolist())
         object.__setattr__(self, "_coeffs", [tuple(float(c) for c in col) for col in interp.c.T])
-        if self.static_mu is not None:
-            object.__setattr__(self, "static_mu", checked_number("static_mu", self.static_mu, "positive"))
         if self.kinetic_limit > self.static * (1 + 1e-12):
             raise ParameterError(
                 f"{self.kind}: mu(0+) = {self.kinetic_limit!r} exceeds the static limit {self.static!r}"
@@ -273,9 +258,6 @@ def law_from_config(entry: dict, *, key: str = "law") -> FrictionLaw:
                 raise ParameterError("path: required parameter is missing")
             return TabulatedLaw.from_file(values["path"], values.get("static_mu"))
         return LAW_KINDS[kind](**values)
-    except TypeError as exc:  # a required field missing
-        missing = [f.name for f in fields(LAW_KINDS[kind]) if f.name not in values and f.init]
-        raise ParameterError(f"{key}.{missing[0] if missing else kind}: {exc}") from None
     except ParameterError as exc:
         raise ParameterError(f"{key}.{exc}") from None
 

@@ -1,94 +1,122 @@
-"""Parameters of the mass-on-moving-belt scene (paper Section 2-7, Fig. 1).
+"""Parameters of the mass-on-moving-belt scene (paper Section 2-7, Fig. 1), and the one way every parameter
+set of the package is checked.
 
 All lengths are in mm and times in s, as the paper states them. The paper's units are not mutually
 consistent (M in kg, K in N/mm, C in "N.mm/sec", N in N); see :func:`effective_mass` for the two
 readings this project supports.
+
+Checking: a parameter set declares each value's type and bound once, as a field annotated with the number
+types below, and pydantic checks them when the object is built (:func:`parameter_set` for dataclasses,
+``stickslip.fe.params.Params`` for models). A refused value raises ``ParameterError`` whose message starts
+with its key. The config's typed sections are generated from the same fields (``stickslip.schema``), so the
+config check and the object refuse the same values.
 """
 
 from __future__ import annotations
 
+import functools
 import math
-import numbers
-from dataclasses import MISSING, asdict, dataclass, fields, replace
+from dataclasses import asdict, fields, replace
+from typing import Annotated, Literal, get_args
+
+from pydantic import ConfigDict, Field, ValidationError
+from pydantic.dataclasses import dataclass as pydantic_dataclass
 
 #: How the paper's numbers are read. ``as_given``: every number is used as printed in one equation,
 #: as if the units were consistent (this is what reproduces the reported sub-hertz frequencies).
 #: ``si``: M [kg] is converted so that forces are in N and lengths in mm (mass coefficient M*1e-3
 #: N s^2/mm, C read as N s/mm), which puts the natural frequency at ~11 Hz.
-UNIT_READINGS = ("as_given", "si")
+Units = Literal["as_given", "si"]
+UNIT_READINGS = get_args(Units)
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+#: > 0, +inf allowed (no limit)
+PositiveOrInf = Annotated[float, Field(gt=0)]
+#: in (0, 1]
+Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
+#: a whole number >= 1
+Count = Annotated[int, Field(ge=1)]
+
+#: Unknown keys are errors, and YAML's types are meant: no "5" for 5, no bool for a number (an int is a
+#: float); numbers are stored as floats.
+STRICT = ConfigDict(extra="forbid", strict=True)
 
 
 class ParameterError(ValueError):
     """A parameter is missing, non-finite or non-physical. The message names the key."""
 
 
-def checked_number(key: str, value, bound: str | None = None, *, allow_inf: bool = False) -> float:
-    """``value`` as a float if it is a finite number within ``bound`` ("positive", "nonnegative" or None;
-    ``allow_inf``: +inf too), else ParameterError naming ``key``."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ParameterError(f"{key}: expected a number, got {type(value).__name__} {value!r}")
-    if math.isnan(value) or (math.isinf(value) and not (allow_inf and value > 0)):
-        raise ParameterError(f"{key}: must be finite, got {value!r}")
-    if bound == "positive" and not value > 0:
-        raise ParameterError(f"{key}: must be > 0, got {value!r}")
-    if bound == "nonnegative" and not value >= 0:
-        raise ParameterError(f"{key}: must be >= 0, got {value!r}")
-    return float(value)
+def error_message(exc: ValidationError, positional: tuple[str, ...] = ()) -> str:
+    """The first error of ``exc`` as ``"<key>: <what is wrong>, got <value>"`` (``positional``: the field
+    names of positional arguments, which pydantic locates by index)."""
+    err = exc.errors()[0]
+    loc = list(err["loc"])
+    if loc and isinstance(loc[0], int) and loc[0] < len(positional):
+        loc[0] = positional[loc[0]]
+    key = ".".join(str(k) for k in loc)
+    if "error" in err.get("ctx", {}):  # a check of the object's own: its message names the key
+        return str(err["ctx"]["error"])
+    kind = err["type"]
+    if kind in ("extra_forbidden", "unexpected_keyword_argument"):
+        return f"{key}: unknown key"
+    if kind in ("missing", "missing_argument"):
+        return f"{key}: required parameter is missing"
+    if kind == "literal_error":
+        return f"{key}: {err['input']!r} is not one of {err['ctx']['expected']}"
+    return f"{key}: {err['msg'][0].lower()}{err['msg'][1:]}, got {err['input']!r}"
 
 
-#: The parameters that must be > 0 and >= 0 (the rest, but ``units``, any finite number).
-_POSITIVE = ("mass", "stiffness", "normal_force", "mu_s", "plateau_speed")
-_NONNEGATIVE = ("damping", "sigma", "belt_velocity", "belt_deceleration")
+def parameter_set(cls=None, /, *, frozen: bool = True, **config):
+    """Make ``cls`` a pydantic dataclass checked as STRICT (``config`` adds settings), whose bad values raise
+    ParameterError naming the key; ``__post_init__`` holds the checks across fields."""
+    if cls is None:
+        return functools.partial(parameter_set, frozen=frozen, **config)
+    cls = pydantic_dataclass(cls, frozen=frozen, config=ConfigDict(**STRICT, **config))
+    validated_init = cls.__init__
+    positional = tuple(f.name for f in fields(cls) if f.init)
+
+    @functools.wraps(validated_init)
+    def __init__(self, *args, **kwargs):
+        try:
+            validated_init(self, *args, **kwargs)
+        except ValidationError as exc:
+            raise ParameterError(error_message(exc, positional)) from None
+
+    cls.__init__ = __init__
+    return cls
 
 
-@dataclass(frozen=True)
+@parameter_set(use_attribute_docstrings=True)
 class BeltParams:
     """Mass on a moving belt, the paper's 1-DOF stick-slip model."""
 
-    mass: float
+    mass: Positive
     """M, mass [kg] (paper: 1 kg)."""
-    stiffness: float
+    stiffness: Positive
     """K, spring stiffness [N/mm] (paper: 5 N/mm)."""
-    damping: float
+    damping: NonNegative
     """C, viscous damping [N s/mm] (paper prints "N.mm/sec"; 1.5)."""
-    mu_s: float
+    mu_s: Positive
     """Static friction coefficient [1] (paper: 0.5)."""
-    sigma: float
+    sigma: NonNegative
     """Friction slope versus relative velocity [s/mm] (paper text 0.3, captions 0.5)."""
-    normal_force: float
+    normal_force: Positive
     """N, normal load [N] (paper: 10 N)."""
-    x0: float = 0.0
+    x0: Finite = 0.0
     """Initial displacement [mm]."""
-    v0: float = 0.5
+    v0: Finite = 0.5
     """Initial velocity [mm/s]."""
-    belt_velocity: float = 0.5
+    belt_velocity: NonNegative = 0.5
     """Belt velocity V_b at t = 0 [mm/s]."""
-    belt_deceleration: float = 0.0
+    belt_deceleration: NonNegative = 0.0
     """Belt deceleration [mm/s^2]; the belt speed is max(V_b - d t, 0) (Section 6: 0.025)."""
-    units: str = "as_given"
+    units: Units = "as_given"
     """Unit reading, one of UNIT_READINGS."""
-    plateau_speed: float = math.inf
+    plateau_speed: PositiveOrInf = math.inf
     """Relative speed [mm/s] beyond which the friction coefficient stays constant (Fig. 17's text: it levels
     off at 0.6 mm/s); inf = the printed law, falling linearly without bound."""
-
-    def __post_init__(self) -> None:
-        if self.units not in UNIT_READINGS:
-            raise ParameterError(f"units: {self.units!r} is not one of {UNIT_READINGS}")
-        for f in (f for f in fields(self) if f.name != "units"):
-            bound = "positive" if f.name in _POSITIVE else "nonnegative" if f.name in _NONNEGATIVE else None
-            checked_number(f.name, getattr(self, f.name), bound, allow_inf=f.name == "plateau_speed")
-
-    @classmethod
-    def from_mapping(cls, values: dict) -> BeltParams:
-        """Build from a config mapping; unknown keys are an error naming the key."""
-        known = {f.name for f in fields(cls)}
-        unknown = sorted(set(values) - known)
-        if unknown:
-            raise ParameterError(f"{unknown[0]}: unknown parameter (known: {sorted(known)})")
-        missing = [f.name for f in fields(cls) if f.name not in values and f.default is MISSING]
-        if missing:
-            raise ParameterError(f"{missing[0]}: required parameter is missing")
-        return cls(**values)
 
     def with_(self, **changes) -> BeltParams:
         return replace(self, **changes)

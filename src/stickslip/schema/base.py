@@ -7,7 +7,11 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, create_model
+from pydantic.fields import FieldInfo
+
+# the number types and the unit readings are the parameter sets' own (one home for every bound)
+from ..model.params import Finite, Fraction, NonNegative, Positive, Units  # noqa: F401  (re-exported)
 
 #: Jobs a dense map may be split into unless ``dense_map.max_chunks`` says otherwise.
 DEFAULT_MAX_CHUNKS = 2000
@@ -15,15 +19,22 @@ DEFAULT_MAX_CHUNKS = 2000
 #: Where the generated JSON schema lives (for editors, `snakemake --lint` readers and documentation).
 SCHEMA_PATH = Path("workflow/schemas/config.schema.json")
 
-Finite = Annotated[float, Field(allow_inf_nan=False)]
-Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
-NonNegative = Annotated[float, Field(ge=0, allow_inf_nan=False)]
-Fraction = Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)]
 Names = Annotated[list[str], Field(min_length=1)]
 #: A reading of the paper's friction law (``stickslip.model.friction.VARIANTS``; a test keeps them equal).
 Variant = Literal["eq3_printed", "eq4_printed", "consistent"]
-#: How the parameters' units are read (``stickslip.model.params.UNIT_READINGS``; a test keeps them equal).
-Units = Literal["as_given", "si"]
+
+
+def parameter_section(name: str, fields: dict[str, FieldInfo]) -> type[Section]:
+    """The config section of a parameter set (its pydantic ``fields``): the same keys, types and bounds, each
+    optional (a scene gives only what it changes; the set's default fills the rest)."""
+    optional = {
+        key: (
+            (Annotated[f.annotation, *f.metadata] if f.metadata else f.annotation) | None,
+            Field(None, description=f.description),
+        )
+        for key, f in fields.items()
+    }
+    return create_model(name, __base__=Section, __module__=__name__, **optional)
 
 
 def belt_parameter(name: str) -> str:

@@ -4,33 +4,20 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import Field, create_model, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..catalogue import fe_paper_figure_numbers
-from ..fe.params import Angle, BeamParams, ContactParams, DiscParams, Params, SolverParams
-from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs
+from ..fe.params import Angle, BeamParams, ContactParams, DiscParams, SolverParams
+from .base import Finite, Fraction, NonNegative, Positive, Section, check_refs, parameter_section
 
 #: the paper's beam-on-disc figures, one PNG each (rule fe_figures)
 FE_PAPER_FIGURES = tuple(fe_paper_figure_numbers())
 
 
-def parameter_section(name: str, params: type[Params]) -> type[Section]:
-    """The config section of a parameter model of stickslip.fe.params: its keys, types and bounds, each
-    optional (a scene gives only what it changes; the model's default fills the rest)."""
-    fields = {
-        key: (
-            (Annotated[f.annotation, *f.metadata] if f.metadata else f.annotation) | None,
-            Field(None, description=f.description),
-        )
-        for key, f in params.model_fields.items()
-    }
-    return create_model(name, __base__=Section, __module__=__name__, **fields)
-
-
-Beam = parameter_section("Beam", BeamParams)
-Disc = parameter_section("Disc", DiscParams)
-Contact = parameter_section("Contact", ContactParams)
-FeSolver = parameter_section("FeSolver", SolverParams)
+Beam = parameter_section("Beam", BeamParams.model_fields)
+Disc = parameter_section("Disc", DiscParams.model_fields)
+Contact = parameter_section("Contact", ContactParams.model_fields)
+FeSolver = parameter_section("FeSolver", SolverParams.model_fields)
 
 
 #: The bin width [s] of a scene's binned series when its output gives none

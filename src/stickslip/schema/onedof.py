@@ -7,6 +7,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from ..model.params import BeltParams
 from .base import (
     Finite,
     Names,
@@ -20,22 +21,11 @@ from .base import (
     check_refs,
     linked_parameters,
     needs_switch,
+    parameter_section,
 )
 
-
-class BeltParameters(Section):
-    mass: Positive | None = Field(None, description="M [kg]")
-    stiffness: Positive | None = Field(None, description="K [N/mm]")
-    damping: NonNegative | None = Field(None, description="C [N s/mm]")
-    mu_s: Positive | None = Field(None, description="static friction coefficient")
-    sigma: NonNegative | None = Field(None, description="friction slope [s/mm]")
-    normal_force: Positive | None = Field(None, description="N [N]")
-    x0: Finite | None = Field(None, description="initial displacement [mm]")
-    v0: Finite | None = Field(None, description="initial velocity [mm/s]")
-    belt_velocity: NonNegative | None = Field(None, description="V_b [mm/s]")
-    belt_deceleration: NonNegative | None = Field(None, description="[mm/s^2]")
-    units: Units | None = None
-    plateau_speed: Positive | None = Field(None, description="friction plateau speed v_p [mm/s]")
+#: A scene's 1-DOF parameters: BeltParams's keys, types and bounds, each optional.
+BeltParameters = parameter_section("BeltParameters", BeltParams.__pydantic_fields__)
 
 
 class RunLengths(Section):

@@ -10,7 +10,6 @@ from .base import (
     SolverError,
     SolverStats,
     Trajectory,
-    check_settings,
 )
 
 #: Method registry: config ``solver`` name -> (module, class). Later methods register here. The modules are
@@ -64,5 +63,4 @@ __all__ = [
     "METHODS",
     "REGISTRY",
     "make_solver",
-    "check_settings",
 ]

@@ -102,38 +102,6 @@ def classify_phase(v, vb, tolerance: float) -> np.ndarray:
     return phase
 
 
-#: Method settings that must be positive numbers (``max_step`` may be inf: no limit).
-POSITIVE_SETTINGS = ("rtol", "atol", "eta", "eps", "h", "stick_tolerance", "graze_tolerance", "max_step")
-#: Settings that are counts (at least 1).
-COUNT_SETTINGS = ("max_steps", "max_segments", "samples_per_period", "max_zero_length")
-#: scipy.integrate.solve_ivp's method names.
-IVP_METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA")
-
-
-def check_settings(solver) -> None:
-    """Reject non-physical or meaningless method settings with the setting named, so a bad value in the
-    config fails when the pipeline starts, not inside a job (a step or tolerance <= 0 or NaN, a count < 1,
-    theta outside (0, 1], a value not among its ``CHOICES``: by default solve_ivp's methods). Raises
-    ``ParameterError`` (a ``ValueError``): the callers that re-key config errors catch that type."""
-    # lazy: model pulls in scipy; readers of Trajectory need not
-    from ..model.params import ParameterError, checked_number
-
-    for name in POSITIVE_SETTINGS:
-        if getattr(solver, name, None) is not None:
-            checked_number(name, getattr(solver, name), "positive", allow_inf=name == "max_step")
-    for name in COUNT_SETTINGS:
-        value = getattr(solver, name, None)
-        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or value < 1):
-            raise ParameterError(f"{name}: must be a whole number >= 1, got {value!r}")
-    theta = getattr(solver, "theta", None)
-    if theta is not None and not 0 < checked_number("theta", theta) <= 1:
-        raise ParameterError(f"theta: must be in (0, 1], got {theta!r}")
-    for name, choices in {"method": IVP_METHODS, **getattr(solver, "CHOICES", {})}.items():
-        value = getattr(solver, name, None)
-        if value is not None and value not in choices:
-            raise ParameterError(f"{name}: {value!r} is not one of {choices}")
-
-
 def reading_model(model, solver: str):
     """The model a solver of the paper's readings (exact, sign-RK, smoothed, Karnopp, Moreau) integrates.
 
@@ -187,15 +155,16 @@ class Samples:
 class OneDofSolver:
     """The stepping contract of every 1-DOF method, split as scipy's ``OdeSolver`` splits ``step`` from
     ``_step_impl``: this class owns ``solve()`` (model conversion, t_end check, output times, counters and
-    CPU time, a ``SolverError`` becoming ``Trajectory.failed``) and the construction-time check of the
-    settings; a method supplies only
+    CPU time, a ``SolverError`` becoming ``Trajectory.failed``); a method supplies only
 
     * ``_integrate(model, t_end, stats) -> raw``: the integration itself (timed; counters go to ``stats``;
       raises ``SolverError`` when it cannot proceed), and
     * ``_sample(raw, t_eval, belt_velocity) -> Samples``: that solution on the output times (not timed),
 
-    plus ``SETTING_NAMES`` and, where they differ from the defaults, ``label``, ``_integrated``,
-    ``_solve_settings`` and ``CHOICES``. Subclasses are dataclasses with a ``name`` field.
+    plus ``SETTING_NAMES`` and, where they differ from the defaults, ``label``, ``_integrated`` and
+    ``_solve_settings``. A method is a ``model.params.parameter_set(frozen=False)`` dataclass with a ``name``
+    field: each setting's type and bound are its field's annotation, checked when the method is built (a
+    bad value in the config fails when the pipeline starts, naming the setting, not inside a job).
     """
 
     name: str
@@ -203,12 +172,6 @@ class OneDofSolver:
     SETTING_NAMES: tuple[str, ...] = ()
     #: A method that records stick/slip segments stores an empty table when it fails (same dataset layout).
     records_segments = False
-
-    #: Settings that take one of a few values (name -> choices), beyond solve_ivp's ``method``.
-    CHOICES: dict[str, tuple[str, ...]] = {}
-
-    def __post_init__(self):
-        check_settings(self)
 
     # -- hooks ----------------------------------------------------------------------------------------
     @property

@@ -16,11 +16,11 @@ the algorithm here must be made there too.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..model.equations import BeltModel
+from ..model.params import Count, Positive, parameter_set
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK
 from .events import EventDrivenSolver, Segment, StickMotion, sample_segments
 from .linear import LinearSegment
@@ -97,15 +97,15 @@ def stick_segment(params, t0: float, x0: float, t_limit: float, d0: float, smoot
     return Segment(t0, t0 + tau, STICK, motion), SLIP_BACKWARD if up <= down else SLIP_FORWARD
 
 
-@dataclass
+@parameter_set(frozen=False)
 class ExactSwitchSolver(EventDrivenSolver):
     """The exact solver in pure Python, the reference of the compiled ``CompiledExactSolver`` (the method
     ``exact``); ``graze_tolerance`` is relative to the model's velocity scale."""
 
-    samples_per_period: int = 64
-    graze_tolerance: float = 1e-12
-    max_segments: int = 200_000
-    max_zero_length: int = 50
+    samples_per_period: Count = 64
+    graze_tolerance: Positive = 1e-12
+    max_segments: Count = 200_000
+    max_zero_length: Count = 50
     name: str = "exact"
 
     SETTING_NAMES = ("samples_per_period", "graze_tolerance")

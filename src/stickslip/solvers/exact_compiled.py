@@ -19,6 +19,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..model.equations import BeltModel
+from ..model.params import parameter_set
 from . import exact
 from .base import Samples, SolverError, SolverStats
 from .events import Segment, StickMotion
@@ -61,7 +62,7 @@ class _Table:
     k: float
 
 
-@dataclass
+@parameter_set(frozen=False)
 class CompiledExactSolver(ExactSwitchSolver):
     """The exact solver compiled with numba; settings, name and results as ``ExactSwitchSolver``'s."""
 

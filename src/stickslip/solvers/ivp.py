@@ -9,22 +9,26 @@ stick by the method's band. A method supplies only ``_rhs`` (and ``_jac``, ``_st
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 
+from ..model.params import Positive, PositiveOrInf, parameter_set
 from .base import OneDofSolver, Samples, SolverError, SolverStats, classify_phase
 
+#: scipy.integrate.solve_ivp's method names.
+IvpMethod = Literal["RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA"]
 
-@dataclass
+
+@parameter_set(frozen=False)
 class IvpSolver(OneDofSolver):
     """Base of the solve_ivp methods: their common settings (a method redeclares a field to change its
     default); subclasses are dataclasses with a ``name`` and implement ``_rhs``."""
 
-    method: str = "RK45"
-    rtol: float = 1e-6
-    atol: float = 1e-9
-    max_step: float = np.inf
+    method: IvpMethod = "RK45"
+    rtol: Positive = 1e-6
+    atol: Positive = 1e-9
+    max_step: PositiveOrInf = np.inf
 
     # -- hooks ----------------------------------------------------------------------------------------
     def _rhs(self, model) -> Callable:

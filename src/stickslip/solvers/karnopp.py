@@ -9,16 +9,15 @@ For the printed (repelling) variants there is no stick and the plain sign law is
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..model.params import Positive, parameter_set
 from .ivp import IvpSolver
 
 
-@dataclass
+@parameter_set(frozen=False)
 class Karnopp(IvpSolver):
-    eta: float = 1e-3
+    eta: Positive = 1e-3
     """Half-width of the stick band [mm/s]."""
     name: str = "karnopp"
 

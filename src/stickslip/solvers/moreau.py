@@ -15,19 +15,18 @@ is used instead (documented fallback).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..model.params import Count, Fraction, Positive, parameter_set
 from .base import SLIP_BACKWARD, SLIP_FORWARD, STICK, OneDofSolver, Samples, SolverError, SolverStats
 
 
-@dataclass
+@parameter_set(frozen=False)
 class MoreauJean(OneDofSolver):
-    h: float = 1e-3
+    h: Positive = 1e-3
     """Time step [s]."""
-    theta: float = 0.5
-    max_steps: int = 5_000_000
+    theta: Fraction = 0.5
+    max_steps: Count = 5_000_000
     name: str = "moreau"
     fixed_step = True  # its work is t_end / h steps, known before the run: it cannot stall
 

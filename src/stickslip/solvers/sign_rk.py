@@ -6,16 +6,15 @@ side is discontinuous at v_r = 0, so the error control, not the model, decides h
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from ..model.params import Positive, parameter_set
 from .ivp import IvpSolver
 
 
-@dataclass
+@parameter_set(frozen=False)
 class SignRungeKutta(IvpSolver):
-    rtol: float = 1e-3
-    atol: float = 1e-6
-    stick_tolerance: float = 1e-3
+    rtol: Positive = 1e-3
+    atol: Positive = 1e-6
+    stick_tolerance: Positive = 1e-3
     """|v - V_b| [mm/s] below which a sample is labelled stick (the method itself has no stick state)."""
     name: str = "sign_rk"
 

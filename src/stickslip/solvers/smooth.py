@@ -8,13 +8,15 @@ at the small relative velocity that the regularized friction needs to carry the 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Literal, get_args
 
 import numpy as np
 
-from .ivp import IvpSolver
+from ..model.params import Positive, parameter_set
+from .ivp import IvpMethod, IvpSolver
 
-REGULARIZATIONS = ("tanh", "arctan")
+Regularization = Literal["tanh", "arctan"]
+REGULARIZATIONS = get_args(Regularization)
 
 
 def smooth_sign(kind: str, eps: float):
@@ -31,17 +33,16 @@ def smooth_sign(kind: str, eps: float):
 EXPLICIT_METHODS = ("RK45", "DOP853", "RK23")
 
 
-@dataclass
+@parameter_set(frozen=False)
 class SmoothedSign(IvpSolver):
-    regularization: str = "tanh"
-    eps: float = 1e-3
+    regularization: Regularization = "tanh"
+    eps: Positive = 1e-3
     """Regularization velocity [mm/s]."""
-    method: str = "Radau"
-    stick_tolerance: float = 1e-3
+    method: IvpMethod = "Radau"
+    stick_tolerance: Positive = 1e-3
     name: str = "smooth"
 
     SETTING_NAMES = ("regularization", "eps", "method", "rtol", "atol", "stick_tolerance")
-    CHOICES = {"regularization": REGULARIZATIONS}
 
     @property
     def label(self) -> str:

@@ -26,18 +26,19 @@ from __future__ import annotations
 import bisect
 import math
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
-from ..model.params import ParameterError
+from ..model.params import Count, ParameterError, Positive, parameter_set
 from .base import STICK, SolverError
 from .events import EventDrivenSolver, Segment
 from .exact import stick_or_slip, stick_segment
 
 #: solve_ivp methods a slip phase may use.
-SWITCH_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+SwitchMethod = Literal["DOP853", "RK45", "Radau", "LSODA"]
 
 
 @dataclass(frozen=True)
@@ -63,21 +64,20 @@ def as_law_model(model) -> LawModel:
     raise ParameterError(f"model: expected a LawModel or BeltModel, got {type(model).__name__}")
 
 
-@dataclass
+@parameter_set(frozen=False)
 class SwitchSolver(EventDrivenSolver):
     """Switch-model solver; ``rtol``/``atol`` are DOP853's tolerances on (x [mm], v [mm/s])."""
 
-    rtol: float = 1e-12
-    atol: float = 1e-13
-    graze_tolerance: float = 1e-10
+    rtol: Positive = 1e-12
+    atol: Positive = 1e-13
+    graze_tolerance: Positive = 1e-10
     """A minimum of |v_r| below this fraction of the velocity scale is a return to v_r = 0 (a graze)."""
-    method: str = "DOP853"
-    max_segments: int = 200_000
-    max_zero_length: int = 50
+    method: SwitchMethod = "DOP853"
+    max_segments: Count = 200_000
+    max_zero_length: Count = 50
     name: str = "switch"
 
     SETTING_NAMES = ("rtol", "atol", "method", "graze_tolerance")
-    CHOICES = {"method": SWITCH_METHODS}
 
     def _integrated(self, model) -> LawModel:
         return as_law_model(model)

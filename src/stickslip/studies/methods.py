@@ -37,7 +37,7 @@ INTERPRETATION = (
 
 def scene_model(study: MethodsStudy, scene: str, **overrides) -> BeltModel:
     sc = study.scenes[scene]
-    params = BeltParams.from_mapping({**given(study.base_params), **given(sc.params), **overrides})
+    params = BeltParams(**{**given(study.base_params), **given(sc.params), **overrides})
     return BeltModel.build(params, sc.variant)
 
 

@@ -187,7 +187,7 @@ def run_spec(onedof: OnedofRuns, scene: str, reading: str, method: str) -> RunSp
     params |= scene_cfg.params.model_dump(exclude_none=True) if scene_cfg.params else {}
     params |= reading_cfg.model_dump(include=set(READING_PARAMS), exclude_none=True)
     try:
-        belt = BeltParams.from_mapping(params)
+        belt = BeltParams(**params)
     except ParameterError as exc:
         raise ParameterError(f"onedof.scenes.{scene}.params.{exc}") from None
     run, _ = scene_run_lengths(onedof, scene, reading)

@@ -27,7 +27,7 @@ def law(job: LawRuns, name: str) -> FrictionLaw:
 def law_params(job: LawRuns, name: str) -> BeltParams:
     """The scene of one law: the section's base parameters, then the law entry's own."""
     try:
-        return BeltParams.from_mapping({**given(job.base_params), **given(job.laws[name].params)})
+        return BeltParams(**{**given(job.base_params), **given(job.laws[name].params)})
     except ParameterError as exc:
         raise ParameterError(f"validation.laws.{name}.params.{exc}") from None
 
