@@ -138,3 +138,20 @@ def test_abaqus_scene_deck_requests_contact_and_energy_history(scene):
     for stated in (*stated_choices, "MECHANICAL CONSTRAINT"):
         assert stated in head, f"{scene}: the header does not state {stated}"
     assert f"BETA = {mapping['solver']['stiffness_damping']:g}" in head
+
+
+@pytest.mark.parametrize(
+    "bad,key",
+    [
+        ({"dt": 2e-3}, "dt"),  # longer than t_end
+        ({"dt": 0.0}, "dt"),
+        ({"alpha": 0.5}, "alpha"),  # outside ccx's HHT range [-1/3, 0]
+        ({"output_every": 0}, "output_every"),
+        ({"mu": -0.1}, "mu"),
+        ({"penalty_stiffness": float("inf")}, "penalty_stiffness"),
+    ],
+)
+def test_a_bad_deck_argument_is_refused_naming_it_before_any_deck_is_written(bad, key):
+    scene = SCENES[0]
+    with pytest.raises(ValueError, match=rf"^{key}: "):
+        ccx_scene_deck(scene, scene_mapping(FE, scene), NX, NY, **{"t_end": 1e-3, "dt": 1e-6, **bad})

@@ -123,3 +123,30 @@ def test_scalar_right_hand_side_is_bit_identical_to_the_array_form(variant, plat
     assert fast[0] == v or (np.isnan(fast[0]) and np.isnan(v))
     assert np.array_equal(fast[1:], np.atleast_1d(slow), equal_nan=True)
     assert np.signbit(fast[1]) == np.signbit(slow)
+
+
+def _one_wording_cases():
+    from stickslip.analysis.sweep import chunk_count
+    from stickslip.fe.continuum import strip_mesh
+    from stickslip.fe.params import BeamParams
+    from stickslip.model.laws import AffineLaw
+    from stickslip.solvers import SwitchSolver
+
+    return [
+        ("mass", lambda v: PAPER_BASELINE.with_(mass=v)),  # a parameter set (dataclass)
+        ("mu_s", lambda v: AffineLaw(v, 0.3)),  # a friction law, by position
+        ("rtol", lambda v: SwitchSolver(rtol=v)),  # a solver setting
+        ("length", lambda v: BeamParams(length=v)),  # an FE parameter set (model)
+        ("nx", lambda v: strip_mesh(BeamParams(), v, 1)),  # a function's argument
+        ("chunk_size", lambda v: chunk_count([], v)),
+    ]
+
+
+@pytest.mark.parametrize("key,build", _one_wording_cases(), ids=[k for k, _ in _one_wording_cases()])
+def test_every_checked_value_is_refused_in_one_wording_naming_its_key(key, build):
+    """Parameter sets, laws, solver settings, FE parameters and function arguments are all checked by pydantic
+    from their declared types: the same bad value gets the same message, which starts with the key."""
+    with pytest.raises(ParameterError, match=rf"^{key}: input should be greater than (or equal to )?[01], got 0$"):
+        build(0)
+    with pytest.raises(ParameterError, match=rf"^{key}: input should be a valid (number|integer), got True$"):
+        build(True)

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..model.equations import BeltModel
 from ..model.laws import LawModel
-from ..model.params import BeltParams, ParameterError
+from ..model.params import BeltParams, Count, ParameterError, checked_arguments
 from .metrics import PAPER_COUNT_WINDOW, cf_variable, limit_cycle_metrics
 
 if TYPE_CHECKING:  # the workflow builds sweep specs at parse time: xarray only where a dataset is made
@@ -49,9 +49,8 @@ def grid_size(axes: list[SweepAxis]) -> int:
     return int(np.prod([len(a.values) for a in axes]))
 
 
+@checked_arguments(chunk_size=Count)
 def chunk_count(axes: list[SweepAxis], chunk_size: int) -> int:
-    if chunk_size < 1:
-        raise ParameterError(f"chunk_size: must be >= 1, got {chunk_size}")
     return math.ceil(grid_size(axes) / chunk_size)
 
 

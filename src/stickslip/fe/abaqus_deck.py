@@ -25,9 +25,11 @@ import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 
+from ..model.params import Count, checked_arguments
 from .continuum import strip_mesh
 from .params import BeamParams, ContactParams, DiscParams, FrictionTable, SceneParams
 
@@ -133,15 +135,12 @@ def brick_strip(beam: BeamParams, nx: int, ny: int) -> BrickStrip:
     )
 
 
+@checked_arguments(nx=Count, ny=Count, support=Literal[SUPPORTS], n_modes=Count)
 def linear_deck(beam: BeamParams, nx: int, ny: int, support: str, n_modes: int = 10, title: str = "") -> str:
     """The strip as C3D8I bricks: step 1 the static self-weight state (corner displacements; the prop's
     reaction), step 2 the lowest ``n_modes`` natural frequencies with the free-end corners' displacements
     per mode (to tell in-plane bending from other modes). ``support``: ``free`` tip or ``propped`` (u_y = 0
     at the free-end lower corner: the contact held at angle 0)."""
-    if support not in SUPPORTS:
-        raise ValueError(f"support: must be one of {SUPPORTS}, got {support!r}")
-    if not (isinstance(n_modes, int) and n_modes >= 1):
-        raise ValueError(f"n_modes: must be an integer >= 1, got {n_modes!r}")
     s = brick_strip(beam, nx, ny)
     out = [
         "*HEADING",

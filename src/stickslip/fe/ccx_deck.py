@@ -31,9 +31,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from typing import Annotated
 
 import numpy as np
+from pydantic import Field
 
+from ..model.params import Count, NonNegative, ParameterError, Positive, checked_arguments
 from .abaqus_deck import LINEAR_ELEMENT, _elements, _material, _nodes, _nset, _num, brick_strip
 from .params import BeamParams, ContactParams, SceneParams
 
@@ -82,6 +85,17 @@ def block_nodes(beam: BeamParams, contact: ContactParams, direction: str) -> np.
     return np.array([[x, y, z0] for x, y in quad] + [[x, y, z1] for x, y in quad])
 
 
+@checked_arguments(
+    nx=Count,
+    ny=Count,
+    t_end=Positive,
+    dt=Positive,
+    mu=NonNegative,
+    penalty_stiffness=Positive | None,
+    stick_slope=Positive | None,
+    alpha=Annotated[float, Field(ge=-1.0 / 3.0, le=0.0)],  # ccx's HHT range
+    output_every=Count,
+)
 def ccx_scene_deck(
     name: str,
     mapping: Mapping,
@@ -101,15 +115,8 @@ def ccx_scene_deck(
     coefficient ``mu``; ``penalty_stiffness`` [N mm-1 at the contact node] default the scene's (Section 11)
     or ``KINEMATIC_STAND_IN``; ``stick_slope`` [N mm-1] default the penalty stiffness; tip displacements
     and the block's reaction force printed every ``output_every`` increments."""
-    for key, value in (("t_end", t_end), ("dt", dt), ("mu", mu)):
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
-            raise ValueError(f"{key}: must be a finite number >= 0, got {value!r}")
-    if not (t_end > 0 and 0 < dt <= t_end):
-        raise ValueError(f"dt: must lie in (0, t_end = {t_end!r}], got {dt!r}")
-    if not (-1.0 / 3.0 <= alpha <= 0.0):
-        raise ValueError(f"alpha: must lie in [-1/3, 0] (ccx's HHT range), got {alpha!r}")
-    if not (isinstance(output_every, int) and output_every >= 1):
-        raise ValueError(f"output_every: must be an integer >= 1, got {output_every!r}")
+    if not dt <= t_end:
+        raise ParameterError(f"dt: must lie in (0, t_end = {t_end!r}], got {dt!r}")
     p = SceneParams.from_mapping(mapping)
     beam, disc, contact = p.beam, p.disc, p.contact
     held = contact.method == "fixed_normal"
@@ -117,9 +124,6 @@ def ccx_scene_deck(
         penalty_stiffness = contact.penalty_stiffness if contact.method == "penalty" else KINEMATIC_STAND_IN
     if stick_slope is None:
         stick_slope = penalty_stiffness
-    for key, value in (("penalty_stiffness", penalty_stiffness), ("stick_slope", stick_slope)):
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"{key}: must be a finite number > 0, got {value!r}")
 
     s = brick_strip(beam, nx, ny)
     n_strip = s.nodes.shape[0]

@@ -35,6 +35,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..model.params import Count, NonNegative, Positive, checked_arguments
 from . import engine
 from .driver import SEPARATED, STICK, ExplicitResult, critical_step, drive, pack_result, schedule
 from .params import (
@@ -136,10 +137,8 @@ class StripMesh:
         return np.repeat(2 * self.quads, 2, axis=1) + np.tile([0, 1], 4)
 
 
+@checked_arguments(nx=Count, ny=Count)
 def strip_mesh(beam: BeamParams, nx: int, ny: int) -> StripMesh:
-    for k, val in (("nx", nx), ("ny", ny)):
-        if not (isinstance(val, (int, np.integer)) and val >= 1):
-            raise ValueError(f"{k}: must be an integer >= 1, got {val!r}")
     x = np.linspace(0.0, beam.length, nx + 1)
     y = np.linspace(-beam.thickness / 2.0, beam.thickness / 2.0, ny + 1)
     X, Y = np.meshgrid(x, y)  # (ny+1, nx+1): row j, column i
@@ -245,6 +244,7 @@ def _output_point(mesh: StripMesh, name, contact_node: int) -> tuple[np.ndarray,
     raise ValueError(f"output_node: must be a node id or one of {OUTPUT_NODES}, got {name!r}")
 
 
+@checked_arguments(damping_beta=NonNegative, candidate_gap=Positive | None)
 def build_continuum(
     beam: BeamParams,
     disc: DiscParams,
@@ -269,8 +269,6 @@ def build_continuum(
     """
     if contact.method not in CONTINUUM_METHODS:
         raise ValueError(f"method: the continuum strip supports {CONTINUUM_METHODS}, got {contact.method!r}")
-    if not (isinstance(damping_beta, (int, float)) and math.isfinite(damping_beta) and damping_beta >= 0):
-        raise ValueError(f"damping_beta: must be a finite number >= 0, got {damping_beta!r}")
     mesh = strip_mesh(beam, nx, ny)
     K, mass, f, ke, me = assemble_strip(mesh, beam)
     fixed = np.zeros(mesh.n_dof, bool)
@@ -301,8 +299,6 @@ def build_continuum(
             "normal vertical, or tilted towards the clamp at the free-end corner)"
         )
     gmax = beam.thickness if candidate_gap is None else float(candidate_gap)
-    if not gmax > 0:
-        raise ValueError(f"candidate_gap: must be > 0, got {candidate_gap!r}")
     cand = np.nonzero((gaps < gmax) & (np.arange(lx.size) > 0))[0]
     normals = rel[cand] / dist[cand, None]
     sgn = 1.0 if disc.direction == "clockwise" else -1.0
@@ -408,12 +404,11 @@ def static_state(scene: ContinuumScene) -> tuple[np.ndarray, float]:
 
 
 # ------------------------------------------------------------------------------------------ modes
+@checked_arguments(n_modes=Count)
 def natural_frequencies(scene: ContinuumScene, n_modes: int = 10, contact_held: bool = True) -> np.ndarray:
     """Lowest ``n_modes`` natural frequencies [Hz] of the clamped strip (sparse shift-invert Lanczos);
     ``contact_held``: the primary contact node's normal displacement is held (bilateral contact, no friction),
     as in the linearisation about a closed contact."""
-    if not (isinstance(n_modes, (int, np.integer)) and n_modes >= 1):
-        raise ValueError(f"n_modes: must be an integer >= 1, got {n_modes!r}")
     n = scene.mesh.n_dof
     T = sp.identity(n, format="lil")
     keep = ~scene.fixed

@@ -22,11 +22,13 @@ import functools
 import math
 import time
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sps
 
+from ..model.params import checked_arguments
 from . import engine
 from .driver import SEPARATED, SLIP, STICK, ExplicitResult, Run, critical_step, drive, pack_result, schedule
 from .params import DEFAULT_INITIAL_STATE, DEFAULT_SAFETY_FACTOR, FrictionTable, run_settings
@@ -273,6 +275,7 @@ def point_recorder(
     return engine.PointRecorder(out, st, cx, cy, ci, ct[ci], law.disc_speed, bool(record_state), qs, vs, rec)
 
 
+@checked_arguments(backend=Literal["compiled", "python"])
 def integrate(
     system: System,
     law: ContactLaw,
@@ -313,8 +316,6 @@ def integrate(
     result counts the second half's states apart (``extra['second_half_counts']``) and a blow-up reports
     the sampled step at which it was found.
     """
-    if backend not in ("compiled", "python"):
-        raise ValueError(f"backend: must be 'compiled' or 'python', got {backend!r}")
     pr = _prepare(
         system, law, duration, dt, safety_factor, output_interval, initial_state, q0, v0,
         mass_damping, stiffness_damping,

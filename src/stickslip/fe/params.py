@@ -11,8 +11,6 @@ same values naming the same key.
 
 from __future__ import annotations
 
-import math
-import numbers
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Annotated, Any, Literal
@@ -20,7 +18,7 @@ from typing import Annotated, Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-from ..model.params import STRICT, NonNegative, ParameterError, Positive, error_message
+from ..model.params import STRICT, NonNegative, ParameterError, Positive, checked_arguments, error_message
 from .mechanics import disc_surface_speed
 
 INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
@@ -184,6 +182,7 @@ class SolverParams(Params):
 RUN_ARGUMENTS = {"t_end": "duration", "output_dt": "output_interval"}
 
 
+@checked_arguments(dt=Positive | None)
 def run_settings(
     duration,
     safety_factor=DEFAULT_SAFETY_FACTOR,
@@ -197,8 +196,6 @@ def run_settings(
     """An explicit run's settings as the solver section they are (``t_end`` = ``duration``), checked by its
     model before any work, so both integrators and the config refuse the same values naming the same key.
     ``output_interval`` None: every step; a given ``dt`` (> 0) replaces safety_factor * dt_crit."""
-    if dt is not None and (isinstance(dt, bool) or not isinstance(dt, numbers.Real) or not 0 < dt < math.inf):
-        raise ValueError(f"dt: must be a finite number > 0, got {dt!r}")
     given = {"output_dt": output_interval} if output_interval is not None else {}
     try:
         settings = SolverParams(

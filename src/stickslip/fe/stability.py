@@ -12,9 +12,12 @@ mu' < 0 is the negative damping of the falling friction law; mu c_t c_n^T is the
 
 from __future__ import annotations
 
+from typing import Literal
+
 import numpy as np
 import scipy.linalg as sla
 
+from ..model.params import checked_arguments
 from .explicit import ContactLaw, System, integrate, static_state
 from .metrics import dominant_frequency, window_envelope
 
@@ -50,6 +53,7 @@ def sliding_state(system: System, law: ContactLaw) -> tuple[np.ndarray, float]:
     return np.linalg.solve(system.K, system.f + N0 * (cn + mu * ct)), N0
 
 
+@checked_arguments(normal_force=Literal["sliding", "static"])
 def sliding_eigenvalues(
     system: System,
     law: ContactLaw,
@@ -65,8 +69,6 @@ def sliding_eigenvalues(
     force multiplying the slope is the sliding one (``normal_force="sliding"``, friction preload included)
     or, for comparison with the old analysis, the static one (``"static"``). Rayleigh damping
     alpha M + beta K is included as in the explicit runs."""
-    if normal_force not in ("sliding", "static"):
-        raise ValueError(f"normal_force: must be 'sliding' or 'static', got {normal_force!r}")
     N0 = sliding_state(system, law)[1] if normal_force == "sliding" else static_state(system, law)[1]
     V = law.disc_speed
     mu = law.friction(V)

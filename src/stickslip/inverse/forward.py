@@ -22,7 +22,7 @@ from ..analysis.metrics import count_peaks, displacement_peaks, frequency_from_p
 from ..analysis.outcome import REST_FRACTION
 from ..model.equations import BeltModel
 from ..model.friction import AffineFriction, friction_law
-from ..model.params import BeltParams, ParameterError, Positive, parameter_set
+from ..model.params import BeltParams, Fraction, ParameterError, Positive, checked_arguments, parameter_set
 from ..solvers.base import STICK, Trajectory
 from ..solvers.exact import ExactSwitchSolver
 from ..solvers.exact_compiled import CompiledExactSolver
@@ -54,10 +54,9 @@ class StaticKineticSolver(CompiledExactSolver):
         return ExactSwitchSolver._contact_decision(self._static_model(model), t, x)
 
 
+@checked_arguments(mu_k_ratio=Fraction)
 def build_model(params: BeltParams, variant: str, eq4_term: bool = False, mu_k_ratio: float = 1.0):
     """(model, solver) of a parameter set under the family's variant and an optional hypothesis."""
-    if not (0 < mu_k_ratio <= 1):
-        raise ParameterError(f"mu_k_ratio: must lie in (0, 1], got {mu_k_ratio!r}")
     law = friction_law(params, variant)
     if eq4_term:
         if variant != "consistent":

@@ -15,11 +15,12 @@ config check and the object refuse the same values.
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 from dataclasses import asdict, fields, replace
 from typing import Annotated, Literal, get_args
 
-from pydantic import ConfigDict, Field, ValidationError
+from pydantic import ConfigDict, Field, TypeAdapter, ValidationError
 from pydantic.dataclasses import dataclass as pydantic_dataclass
 
 #: How the paper's numbers are read. ``as_given``: every number is used as printed in one equation,
@@ -48,11 +49,11 @@ class ParameterError(ValueError):
     """A parameter is missing, non-finite or non-physical. The message names the key."""
 
 
-def error_message(exc: ValidationError, positional: tuple[str, ...] = ()) -> str:
+def error_message(exc: ValidationError, positional: tuple[str, ...] = (), key: str | None = None) -> str:
     """The first error of ``exc`` as ``"<key>: <what is wrong>, got <value>"`` (``positional``: the field
-    names of positional arguments, which pydantic locates by index)."""
+    names of positional arguments, which pydantic locates by index; ``key``: the name of a lone value)."""
     err = exc.errors()[0]
-    loc = list(err["loc"])
+    loc = [key] if key is not None else list(err["loc"])
     if loc and isinstance(loc[0], int) and loc[0] < len(positional):
         loc[0] = positional[loc[0]]
     key = ".".join(str(k) for k in loc)
@@ -86,6 +87,32 @@ def parameter_set(cls=None, /, *, frozen: bool = True, **config):
 
     cls.__init__ = __init__
     return cls
+
+
+def checked_arguments(**types):
+    """Decorate a function so that each named argument is checked against its type (the number types above,
+    a ``Literal``) by pydantic, strictly, when the function is called, and a refused one raises
+    ParameterError naming it. The values are passed on as given; the checks across arguments stay in the
+    function."""
+    adapters = {name: TypeAdapter(kind) for name, kind in types.items()}
+
+    def decorate(function):
+        signature = inspect.signature(function)
+
+        @functools.wraps(function)
+        def checked(*args, **kwargs):
+            given = signature.bind(*args, **kwargs).arguments
+            for name, adapter in adapters.items():
+                if name in given:
+                    try:
+                        adapter.validate_python(given[name], strict=True)
+                    except ValidationError as exc:
+                        raise ParameterError(error_message(exc, key=name)) from None
+            return function(*args, **kwargs)
+
+        return checked
+
+    return decorate
 
 
 @parameter_set(use_attribute_docstrings=True)

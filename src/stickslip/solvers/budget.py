@@ -9,6 +9,7 @@ import time
 
 import numpy as np
 
+from ..model.params import Count, PositiveOrInf, checked_arguments
 from .base import SolverStats, Trajectory, default_t_eval
 
 
@@ -78,9 +79,8 @@ class BudgetedSolver:
     reproducible from machine to machine.
     """
 
+    @checked_arguments(max_rhs=Count, max_cpu=PositiveOrInf)
     def __init__(self, inner, max_rhs: int, max_cpu: float = float("inf")):
-        if max_rhs < 1:
-            raise ValueError(f"budget.max_rhs: must be >= 1, got {max_rhs!r}")
         self.inner, self.max_rhs, self.max_cpu = inner, int(max_rhs), float(max_cpu)
 
     @property

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.params import ParameterError
+from ..model.params import ParameterError, Positive, checked_arguments
 from ..solvers.base import STICK
 
 #: The quantities compared, with units and long names (netCDF/CSV columns).
@@ -89,6 +89,7 @@ def cycle_quantities(record: EventRecord) -> dict[str, float]:
     return out
 
 
+@checked_arguments(belt_velocity=Positive)
 def coulomb_cycle(
     mass: float, stiffness: float, normal_force: float, belt_velocity: float, mu_s: float, mu_k: float
 ) -> dict:
@@ -109,8 +110,6 @@ def coulomb_cycle(
     """
     if not mu_s > mu_k > 0:
         raise ParameterError(f"mu_k: the classical cycle needs mu_s > mu_k > 0, got mu_s={mu_s}, mu_k={mu_k}")
-    if not belt_velocity > 0:
-        raise ParameterError(f"belt_velocity: must be > 0, got {belt_velocity}")
     w = math.sqrt(stiffness / mass)
     x_k = mu_k * normal_force / stiffness
     delta = (mu_s - mu_k) * normal_force / stiffness
