@@ -146,7 +146,8 @@ def _one_wording_cases():
 def test_every_checked_value_is_refused_in_one_wording_naming_its_key(key, build):
     """Parameter sets, laws, solver settings, FE parameters and function arguments are all checked by pydantic
     from their declared types: the same bad value gets the same message, which starts with the key."""
-    with pytest.raises(ParameterError, match=rf"^{key}: input should be greater than (or equal to )?[01], got 0$"):
+    too_small = rf"^{key}: input should be greater than (or equal to )?[01], got 0$"
+    with pytest.raises(ParameterError, match=too_small):
         build(0)
     with pytest.raises(ParameterError, match=rf"^{key}: input should be a valid (number|integer), got True$"):
         build(True)
