@@ -18,7 +18,16 @@ from typing import Annotated, Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-from ..model.params import STRICT, NonNegative, ParameterError, Positive, checked_arguments, error_message
+from ..model.params import (
+    STRICT,
+    Count,
+    Fraction,
+    NonNegative,
+    ParameterError,
+    Positive,
+    checked_arguments,
+    error_message,
+)
 from .mechanics import disc_surface_speed
 
 INITIAL_STATES = ("static", "drop", "undeformed")  # "undeformed" = "drop" (kept for old configs)
@@ -58,7 +67,7 @@ class BeamParams(Params):
     #: nu [-] (recorded only; Euler-Bernoulli elements do not use it)
     poisson_ratio: Annotated[float, Field(ge=0, lt=0.5, allow_inf_nan=False)] = 0.3
     gravity_m_s2: NonNegative = 9.81  #: g [m s-2], the only normal load
-    n_elements: Annotated[int, Field(ge=1)] = 20  #: number of beam elements [-]
+    n_elements: Count = 20  #: number of beam elements [-]
     #: "lumped" (HRZ diagonal, as explicit codes) or "consistent"
     mass: Literal["lumped", "consistent"] = "lumped"
     #: rotary inertia rho*I of the cross-sections (Rayleigh beam). Needed for contact at the lower face:
@@ -165,7 +174,7 @@ class SolverParams(Params):
     #: simulated time [s] (the 1-DOF runs' name)
     t_end: Positive = Field(1.0, description="simulated time [s]")
     #: dt = safety_factor * 2 / omega_max [-]
-    safety_factor: Annotated[float, Field(gt=0, le=1, allow_inf_nan=False)] = DEFAULT_SAFETY_FACTOR
+    safety_factor: Fraction = DEFAULT_SAFETY_FACTOR
     #: sampling interval of the stored trajectory [s]
     output_dt: Positive = Field(1.0e-5, description="output interval [s]")
     #: "static" (gravity equilibrium in contact) or "drop" (undeformed, g at 0)

@@ -115,35 +115,30 @@ def checked_arguments(**types):
     return decorate
 
 
-@parameter_set(use_attribute_docstrings=True)
+@parameter_set
 class BeltParams:
     """Mass on a moving belt, the paper's 1-DOF stick-slip model."""
 
-    mass: Positive
-    """M, mass [kg] (paper: 1 kg)."""
-    stiffness: Positive
-    """K, spring stiffness [N/mm] (paper: 5 N/mm)."""
-    damping: NonNegative
-    """C, viscous damping [N s/mm] (paper prints "N.mm/sec"; 1.5)."""
-    mu_s: Positive
-    """Static friction coefficient [1] (paper: 0.5)."""
-    sigma: NonNegative
-    """Friction slope versus relative velocity [s/mm] (paper text 0.3, captions 0.5)."""
-    normal_force: Positive
-    """N, normal load [N] (paper: 10 N)."""
-    x0: Finite = 0.0
-    """Initial displacement [mm]."""
-    v0: Finite = 0.5
-    """Initial velocity [mm/s]."""
-    belt_velocity: NonNegative = 0.5
-    """Belt velocity V_b at t = 0 [mm/s]."""
-    belt_deceleration: NonNegative = 0.0
-    """Belt deceleration [mm/s^2]; the belt speed is max(V_b - d t, 0) (Section 6: 0.025)."""
-    units: Units = "as_given"
-    """Unit reading, one of UNIT_READINGS."""
-    plateau_speed: PositiveOrInf = math.inf
-    """Relative speed [mm/s] beyond which the friction coefficient stays constant (Fig. 17's text: it levels
-    off at 0.6 mm/s); inf = the printed law, falling linearly without bound."""
+    mass: Positive = Field(description="M, mass [kg] (paper: 1 kg).")
+    stiffness: Positive = Field(description="K, spring stiffness [N/mm] (paper: 5 N/mm).")
+    damping: NonNegative = Field(description='C, viscous damping [N s/mm] (paper prints "N.mm/sec"; 1.5).')
+    mu_s: Positive = Field(description="Static friction coefficient [1] (paper: 0.5).")
+    sigma: NonNegative = Field(
+        description="Friction slope versus relative velocity [s/mm] (paper text 0.3, captions 0.5)."
+    )
+    normal_force: Positive = Field(description="N, normal load [N] (paper: 10 N).")
+    x0: Finite = Field(0.0, description="Initial displacement [mm].")
+    v0: Finite = Field(0.5, description="Initial velocity [mm/s].")
+    belt_velocity: NonNegative = Field(0.5, description="Belt velocity V_b at t = 0 [mm/s].")
+    belt_deceleration: NonNegative = Field(
+        0.0, description="Belt deceleration [mm/s^2]; the belt speed is max(V_b - d t, 0) (Section 6: 0.025)."
+    )
+    units: Units = Field("as_given", description="Unit reading, one of UNIT_READINGS.")
+    plateau_speed: PositiveOrInf = Field(
+        math.inf,
+        description="Relative speed [mm/s] beyond which the friction coefficient stays constant (Fig. 17's "
+        "text: it levels off at 0.6 mm/s); inf = the printed law, falling linearly without bound.",
+    )
 
     def with_(self, **changes) -> BeltParams:
         return replace(self, **changes)

@@ -8,7 +8,7 @@ at the small relative velocity that the regularized friction needs to carry the 
 
 from __future__ import annotations
 
-from typing import Literal, get_args
+from typing import Literal
 
 import numpy as np
 
@@ -16,7 +16,6 @@ from ..model.params import Positive, parameter_set
 from .ivp import IvpMethod, IvpSolver
 
 Regularization = Literal["tanh", "arctan"]
-REGULARIZATIONS = get_args(Regularization)
 
 
 def smooth_sign(kind: str, eps: float):
